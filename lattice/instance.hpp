@@ -1,0 +1,144 @@
+// The lattice model of ../shared/MODEL.md: a connected shape of unit-square
+// nodes on Z^2, operations on it, and a coupling partition of the operations.
+//
+// An Instance is always valid once built: InstanceBuilder checks every rule
+// (one node per cell, edges between orthogonal neighbours, operations on the
+// right kind of place, a node in at most one operation, every operation in
+// exactly one coupling, a connected shape) and reports the first broken one.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "common/diagnostic.hpp"
+#include "lattice/geometry.hpp"
+
+namespace gridlock {
+
+using NodeId = uint32_t;
+using OpId = uint32_t;
+using CouplingId = uint32_t;
+inline constexpr uint32_t kNone = UINT32_MAX;
+
+// Coordinates and counts are bounded so that every sum the simulator and the
+// solvers form fits in 64 bits with room to spare (positions stay below 2^31,
+// and times are scaled by at most 2^30, see lattice/schedule.hpp).
+inline constexpr int64_t kMaxCoordinate = 1'000'000'000;
+inline constexpr int64_t kMaxNodes = 1 << 25;
+
+enum class OpKind : uint8_t {
+  Expand,    // edge expansion u->v: a node is inserted, v's side moves along dir
+  Grow,      // growth: a node grows from u's face into the cell u + dir
+  Contract,  // contraction "v into u": v's side moves toward u, v narrows away
+};
+const char* op_kind_name(OpKind k);  // "expand", "grow", "contract"
+
+struct Operation {
+  std::string name;
+  OpKind kind = OpKind::Expand;
+  NodeId u = kNone;        // the node that performs it
+  Dir dir = Dir::PosX;     // from u toward the cell c = u + dir
+  NodeId v = kNone;        // the node in c (expand, contract); kNone for grow
+  CouplingId coupling = kNone;
+  bool is_edge_op() const { return kind != OpKind::Grow; }
+};
+
+struct Coupling {
+  std::string name;
+  std::vector<OpId> ops;  // non-empty, in the order written
+};
+
+struct Edge {
+  NodeId a = kNone, b = kNone;  // orthogonal neighbours
+  OpId op = kNone;              // the expansion or contraction on this edge, if any
+};
+
+class Instance {
+ public:
+  // Nodes, in the order given; node i sits in cell cells[i].
+  const std::vector<Vec2>& cells() const { return cells_; }
+  const std::vector<Edge>& edges() const { return edges_; }
+  const std::vector<Operation>& ops() const { return ops_; }
+  const std::vector<Coupling>& couplings() const { return couplings_; }
+  NodeId anchor() const { return anchor_; }
+  bool has_explicit_anchor() const { return explicit_anchor_; }
+
+  size_t num_nodes() const { return cells_.size(); }
+  // The node in cell c, or kNone. O(1) expected.
+  NodeId node_at(Vec2 c) const;
+  // The operation node w takes part in (as u, or as v of an edge operation), or kNone.
+  OpId op_of_node(NodeId w) const { return op_of_node_[w]; }
+  // Neighbour of w in direction d joined by an edge, or kNone; and that edge.
+  NodeId neighbour(NodeId w, Dir d) const { return adj_[4 * w + static_cast<int>(d)]; }
+  uint32_t edge_index(NodeId w, Dir d) const { return adj_edge_[4 * w + static_cast<int>(d)]; }
+  // Lookup by name; kNone if absent.
+  OpId find_op(const std::string& name) const;
+  CouplingId find_coupling(const std::string& name) const;
+
+  // True iff every operation moves along the x axis.
+  bool horizontal_only() const;
+  // "(x,y)", how a node is named in messages and witnesses.
+  std::string node_label(NodeId w) const;
+  // Same shape, same operations, another anchor (any node).
+  Instance with_anchor(NodeId w) const;
+
+ private:
+  friend class InstanceBuilder;
+  std::vector<Vec2> cells_;
+  std::vector<Edge> edges_;
+  std::vector<Operation> ops_;
+  std::vector<Coupling> couplings_;
+  NodeId anchor_ = 0;
+  bool explicit_anchor_ = false;
+  std::unordered_map<uint64_t, NodeId> cell_index_;
+  std::unordered_map<std::string, OpId> op_index_;
+  std::unordered_map<std::string, CouplingId> coupling_index_;
+  std::vector<NodeId> adj_;        // 4 per node
+  std::vector<uint32_t> adj_edge_; // 4 per node
+  std::vector<OpId> op_of_node_;
+};
+
+uint64_t cell_key(Vec2 c);
+
+// True iff s is a valid name for an operation or a coupling: 1 to 64
+// characters from [A-Za-z0-9_.:~+'-], not starting with '-' or '+'.
+bool valid_name(const std::string& s);
+
+// Builds an Instance step by step; each add_* checks what it can at once and
+// returns the problem (message only; the caller adds file and line). finish()
+// checks the rules that need everything (couplings, connectivity).
+//
+// Used by the .grid reader (with line numbers) and by the gadget compiler.
+class InstanceBuilder {
+ public:
+  // Each returns an error message, or nullopt on success.
+  std::optional<std::string> add_node(Vec2 cell);
+  std::optional<std::string> add_edge(Vec2 a, Vec2 b);
+  // kind Expand/Contract: c = u + dir must hold a node joined to u by an edge.
+  // kind Grow: c must not hold a node joined to u by an edge (an unjoined node
+  // there is allowed: the growth then collides at once, MODEL.md).
+  std::optional<std::string> add_op(const std::string& name, OpKind kind, Vec2 u, Dir dir);
+  std::optional<std::string> add_coupling(const std::string& name, const std::vector<std::string>& ops);
+  std::optional<std::string> set_anchor(Vec2 cell);
+
+  // Operations in no coupling become singleton couplings named after the
+  // operation. Fails if a singleton's name is taken by another coupling, or
+  // the shape is empty or not connected (then names a node that cannot be
+  // reached from the first node). On success the builder is left empty.
+  struct FinishError {
+    std::string message;
+    long node_index = -1;  // the unreachable node, for the reader's line number
+  };
+  std::optional<FinishError> finish(Instance& out);
+
+  size_t num_nodes() const { return inst_.cells_.size(); }
+
+ private:
+  Instance inst_;
+  std::vector<std::pair<uint64_t, uint64_t>> edge_keys_;
+};
+
+}  // namespace gridlock

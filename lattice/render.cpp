@@ -1,0 +1,256 @@
+#include "lattice/render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace gridlock {
+
+namespace {
+
+const char* kPalette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",
+                          "#17becf", "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f"};
+
+std::string colour_of(CouplingId q) { return kPalette[q % 10]; }
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+std::string op_label(const Instance& inst, OpId k) {
+  const Operation& op = inst.ops()[k];
+  const Coupling& q = inst.couplings()[op.coupling];
+  return q.ops.size() == 1 && q.name == op.name ? op.name : op.name + " [" + q.name + "]";
+}
+
+}  // namespace
+
+std::string render_svg(const Instance& inst, const RenderOptions& opt) {
+  const double S = opt.cell_px;
+  Regions regions = Regions::build(inst);
+  std::vector<RectQ> rects;
+  bool at_moment = opt.schedule != nullptr;
+  if (at_moment) {
+    rects = configuration_at(inst, *opt.schedule, opt.time);
+  } else {
+    Schedule none;
+    none.start.assign(inst.couplings().size(), Rational(1 << 20));  // nothing has started
+    rects = configuration_at(inst, none, Rational(0));
+  }
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  std::vector<Box> box(rects.size());
+  double minx = std::numeric_limits<double>::max(), miny = minx, maxx = -minx, maxy = -minx;
+  for (size_t r = 0; r < rects.size(); ++r) {
+    box[r] = {rects[r].xlo.approx(), rects[r].xhi.approx(), rects[r].ylo.approx(), rects[r].yhi.approx()};
+    minx = std::min(minx, box[r].x0 - 1), maxx = std::max(maxx, box[r].x1 + 1);
+    miny = std::min(miny, box[r].y0 - 1), maxy = std::max(maxy, box[r].y1 + 1);
+  }
+  double legend_h = 18.0 * static_cast<double>(std::min<size_t>(inst.couplings().size(), 12) + 1) + 8;
+  double title_h = opt.title.empty() && !at_moment ? 0 : 26;
+  double W = (maxx - minx) * S, H = (maxy - miny) * S;
+  // Grid y grows upward; SVG y grows downward.
+  auto X = [&](double x) { return (x - minx) * S; };
+  auto Y = [&](double y) { return title_h + (maxy - y) * S; };
+  std::ostringstream o;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(std::max(W, 320.0)) << "\" height=\""
+    << fmt(H + legend_h + title_h) << "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n";
+  o << "<defs><marker id=\"ah\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"5\" markerHeight=\"5\" "
+       "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker></defs>\n";
+  o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string title = opt.title;
+  if (at_moment && title.empty()) title = "configuration at time " + opt.time.str();
+  if (!title.empty()) o << "<text x=\"8\" y=\"18\" font-size=\"14\">" << xml_escape(title) << "</text>\n";
+  // Light grid of the cells in view.
+  o << "<g stroke=\"#eeeeee\" stroke-width=\"1\">\n";
+  for (double x = std::ceil(minx); x <= maxx; x += 1)
+    o << "<line x1=\"" << fmt(X(x)) << "\" y1=\"" << fmt(Y(maxy)) << "\" x2=\"" << fmt(X(x)) << "\" y2=\"" << fmt(Y(miny)) << "\"/>\n";
+  for (double y = std::ceil(miny); y <= maxy; y += 1)
+    o << "<line x1=\"" << fmt(X(minx)) << "\" y1=\"" << fmt(Y(y)) << "\" x2=\"" << fmt(X(maxx)) << "\" y2=\"" << fmt(Y(y)) << "\"/>\n";
+  o << "</g>\n";
+  auto centre = [&](NodeId w) {
+    return std::pair<double, double>{(box[w].x0 + box[w].x1) / 2, (box[w].y0 + box[w].y1) / 2};
+  };
+  // Edges between node centres.
+  o << "<g stroke=\"#555555\" stroke-width=\"2\">\n";
+  for (const auto& e : inst.edges()) {
+    if (e.op != kNone) continue;
+    auto [ax, ay] = centre(e.a);
+    auto [bx, by] = centre(e.b);
+    o << "<line x1=\"" << fmt(X(ax)) << "\" y1=\"" << fmt(Y(ay)) << "\" x2=\"" << fmt(X(bx)) << "\" y2=\"" << fmt(Y(by)) << "\"/>\n";
+  }
+  o << "</g>\n";
+  // Growth targets (initial picture only): dashed cells.
+  if (!at_moment)
+    for (const auto& op : inst.ops()) {
+      if (op.kind != OpKind::Grow) continue;
+      Vec2 c = inst.cells()[op.u] + unit(op.dir);
+      o << "<rect x=\"" << fmt(X(static_cast<double>(c.x)) + 3) << "\" y=\"" << fmt(Y(static_cast<double>(c.y) + 1) + 3)
+        << "\" width=\"" << fmt(S - 6) << "\" height=\"" << fmt(S - 6) << "\" fill=\"none\" stroke=\""
+        << colour_of(op.coupling) << "\" stroke-dasharray=\"4 3\"/>\n";
+    }
+  // Regions.
+  std::vector<char> hit(rects.size(), 0);
+  if (opt.collision && opt.collision->kind == Collision::Kind::Node) hit[opt.collision->a] = hit[opt.collision->b] = 1;
+  if (opt.collision && opt.collision->kind == Collision::Kind::Cycle)
+    for (NodeId w : opt.collision->cycle) hit[w] = 1;
+  for (size_t r = 0; r < rects.size(); ++r) {
+    double w = box[r].x1 - box[r].x0, h = box[r].y1 - box[r].y0;
+    if (w <= 0 || h <= 0) continue;
+    bool node = regions.shapes[r].kind == RegionKind::Node;
+    double inset = std::min({0.08, w / 4, h / 4});
+    std::string fill = hit[r] ? "#ff9896" : node ? "#dddddd" : "#aec7e8";
+    std::string stroke = hit[r] ? "#d62728" : "#333333";
+    o << "<rect x=\"" << fmt(X(box[r].x0 + inset)) << "\" y=\"" << fmt(Y(box[r].y1 - inset)) << "\" width=\""
+      << fmt((w - 2 * inset) * S) << "\" height=\"" << fmt((h - 2 * inset) * S) << "\" rx=\"3\" fill=\"" << fill
+      << "\" fill-opacity=\"0.85\" stroke=\"" << stroke << "\" stroke-width=\"" << (hit[r] ? 3 : 1.5) << "\"><title>"
+      << xml_escape(region_label(inst, regions, static_cast<uint32_t>(r))) << "</title></rect>\n";
+  }
+  // Operations as arrows, coloured by coupling.
+  for (OpId k = 0; k < inst.ops().size(); ++k) {
+    const Operation& op = inst.ops()[k];
+    std::string col = colour_of(op.coupling);
+    auto [ux, uy] = centre(op.u);
+    Vec2 d = unit(op.dir);
+    double tx, ty;
+    if (op.kind == OpKind::Grow) {
+      tx = ux + static_cast<double>(d.x) * (at_moment ? 0.5 : 1.0);
+      ty = uy + static_cast<double>(d.y) * (at_moment ? 0.5 : 1.0);
+    } else {
+      std::tie(tx, ty) = centre(op.v);
+    }
+    double sx = ux + static_cast<double>(d.x) * 0.22, sy = uy + static_cast<double>(d.y) * 0.22;
+    double ex = tx - static_cast<double>(d.x) * 0.22, ey = ty - static_cast<double>(d.y) * 0.22;
+    if (op.kind == OpKind::Contract) std::swap(sx, ex), std::swap(sy, ey);  // arrow toward u
+    o << "<line x1=\"" << fmt(X(sx)) << "\" y1=\"" << fmt(Y(sy)) << "\" x2=\"" << fmt(X(ex)) << "\" y2=\"" << fmt(Y(ey))
+      << "\" stroke=\"" << col << "\" stroke-width=\"3\" marker-end=\"url(#ah)\""
+      << (op.kind == OpKind::Expand ? " marker-start=\"url(#ah)\"" : "") << "/>\n";
+    double mx = (ux + tx) / 2, my = (uy + ty) / 2;
+    if (op.kind == OpKind::Contract) {
+      o << "<path d=\"M" << fmt(X(mx) - 5) << "," << fmt(Y(my) - 5) << " l10,10 M" << fmt(X(mx) - 5) << ","
+        << fmt(Y(my) + 5) << " l10,-10\" stroke=\"" << col << "\" stroke-width=\"2.5\"/>\n";
+    }
+    double lx = mx + (d.x == 0 ? 0.12 : 0), ly = my + (d.y == 0 ? 0.12 : 0);
+    o << "<text x=\"" << fmt(X(lx) + 2) << "\" y=\"" << fmt(Y(ly) - 2) << "\" fill=\"" << col
+      << "\" font-weight=\"bold\">" << xml_escape(op.name) << "</text>\n";
+  }
+  // Anchor.
+  {
+    auto [ax, ay] = centre(inst.anchor());
+    o << "<circle cx=\"" << fmt(X(ax - 0.25)) << "\" cy=\"" << fmt(Y(ay + 0.25)) << "\" r=\"4\" fill=\"black\"><title>anchor</title></circle>\n";
+  }
+  // Legend: couplings by colour.
+  double ly = title_h + H + 18;
+  o << "<text x=\"8\" y=\"" << fmt(ly) << "\" fill=\"#333\">couplings (colour: operations)"
+    << (at_moment ? "" : "; dot: anchor; dashed: growth target") << "</text>\n";
+  for (CouplingId q = 0; q < inst.couplings().size() && q < 12; ++q) {
+    ly += 18;
+    std::string ops;
+    for (OpId k : inst.couplings()[q].ops) ops += (ops.empty() ? "" : ", ") + inst.ops()[k].name;
+    o << "<rect x=\"8\" y=\"" << fmt(ly - 10) << "\" width=\"12\" height=\"12\" fill=\"" << colour_of(q) << "\"/>"
+      << "<text x=\"26\" y=\"" << fmt(ly) << "\">" << xml_escape(inst.couplings()[q].name + ": " + ops) << "</text>\n";
+  }
+  if (inst.couplings().size() > 12) o << "<text x=\"8\" y=\"" << fmt(ly + 18) << "\">...</text>\n";
+  o << "</svg>\n";
+  return o.str();
+}
+
+std::string render_tikz(const Instance& inst) {
+  std::ostringstream o;
+  o << "% gridlock instance: " << inst.num_nodes() << " nodes, " << inst.ops().size() << " operations\n";
+  o << "% needs \\usetikzlibrary{arrows.meta}\n";
+  o << "\\begin{tikzpicture}[x=0.8cm,y=0.8cm,>={Stealth[length=2mm]}]\n";
+  for (CouplingId q = 0; q < inst.couplings().size() && q < 10; ++q) {
+    unsigned rgb = static_cast<unsigned>(std::stoul(std::string(kPalette[q]).substr(1), nullptr, 16));
+    o << "\\definecolor{q" << q << "}{RGB}{" << (rgb >> 16) << "," << ((rgb >> 8) & 255) << "," << (rgb & 255) << "}\n";
+  }
+  const auto& c = inst.cells();
+  for (const auto& e : inst.edges())
+    if (e.op == kNone)
+      o << "\\draw[gray!70!black,line width=1pt] (" << c[e.a].x << ".5," << c[e.a].y << ".5) -- (" << c[e.b].x << ".5,"
+        << c[e.b].y << ".5);\n";
+  for (NodeId w = 0; w < inst.num_nodes(); ++w)
+    o << "\\draw[fill=gray!20,rounded corners=1pt] (" << c[w].x << ".08," << c[w].y << ".08) rectangle +(0.84,0.84);\n";
+  for (OpId k = 0; k < inst.ops().size(); ++k) {
+    const Operation& op = inst.ops()[k];
+    Vec2 d = unit(op.dir);
+    std::string col = "q" + std::to_string(op.coupling % 10);
+    double ux = static_cast<double>(c[op.u].x) + 0.5, uy = static_cast<double>(c[op.u].y) + 0.5;
+    double tx = ux + static_cast<double>(d.x), ty = uy + static_cast<double>(d.y);
+    const char* arrow = op.kind == OpKind::Expand ? "<->" : op.kind == OpKind::Contract ? "<-" : "->";
+    if (op.kind == OpKind::Grow)
+      o << "\\draw[" << col << ",dashed] (" << fmt(tx - 0.42) << "," << fmt(ty - 0.42) << ") rectangle +(0.84,0.84);\n";
+    o << "\\draw[" << col << ",very thick," << arrow << "] (" << fmt(ux + 0.2 * static_cast<double>(d.x)) << ","
+      << fmt(uy + 0.2 * static_cast<double>(d.y)) << ") -- node[above,font=\\scriptsize]{$" << op.name << "$} ("
+      << fmt(tx - 0.2 * static_cast<double>(d.x)) << "," << fmt(ty - 0.2 * static_cast<double>(d.y)) << ");\n";
+  }
+  o << "\\fill (" << c[inst.anchor()].x << ".25," << c[inst.anchor()].y << ".75) circle (2pt);\n";
+  o << "\\end{tikzpicture}\n";
+  return o.str();
+}
+
+std::string render_ascii(const Instance& inst) {
+  const auto& c = inst.cells();
+  int64_t minx = c[0].x, maxx = c[0].x, miny = c[0].y, maxy = c[0].y;
+  auto grow_box = [&](Vec2 p) {
+    minx = std::min(minx, p.x), maxx = std::max(maxx, p.x), miny = std::min(miny, p.y), maxy = std::max(maxy, p.y);
+  };
+  for (const auto& p : c) grow_box(p);
+  for (const auto& op : inst.ops())
+    if (op.kind == OpKind::Grow) grow_box(c[op.u] + unit(op.dir));
+  if (maxx - minx > 400 || maxy - miny > 400) return "(too large for ASCII: " + std::to_string(maxx - minx + 1) + " x " +
+                                                      std::to_string(maxy - miny + 1) + " cells)\n";
+  size_t W = static_cast<size_t>(2 * (maxx - minx) + 1), H = static_cast<size_t>(2 * (maxy - miny) + 1);
+  std::vector<std::string> canvas(H, std::string(W, ' '));
+  auto at = [&](int64_t x2, int64_t y2) -> char& {  // doubled coordinates
+    return canvas[static_cast<size_t>(2 * maxy - y2)][static_cast<size_t>(x2 - 2 * minx)];
+  };
+  for (NodeId w = 0; w < inst.num_nodes(); ++w) at(2 * c[w].x, 2 * c[w].y) = w == inst.anchor() ? '@' : 'o';
+  for (const auto& e : inst.edges()) {
+    int64_t x2 = c[e.a].x + c[e.b].x, y2 = c[e.a].y + c[e.b].y;
+    char ch = c[e.a].y == c[e.b].y ? '-' : '|';
+    if (e.op != kNone) ch = inst.ops()[e.op].kind == OpKind::Expand ? 'E' : 'C';
+    at(x2, y2) = ch;
+  }
+  for (const auto& op : inst.ops()) {
+    if (op.kind != OpKind::Grow) continue;
+    Vec2 t = c[op.u] + unit(op.dir);
+    char& ch = at(2 * t.x, 2 * t.y);
+    ch = ch != ' ' ? '!' : op.dir == Dir::PosX ? '>' : op.dir == Dir::NegX ? '<' : op.dir == Dir::PosY ? '^' : 'v';
+  }
+  std::ostringstream o;
+  for (auto& row : canvas) {
+    while (!row.empty() && row.back() == ' ') row.pop_back();
+    o << row << '\n';
+  }
+  o << "anchor @ " << inst.node_label(inst.anchor()) << "; operations:\n";
+  for (OpId k = 0; k < inst.ops().size(); ++k) {
+    const Operation& op = inst.ops()[k];
+    o << "  " << op_label(inst, k) << ": " << op_kind_name(op.kind) << ' ' << inst.node_label(op.u) << ' '
+      << dir_name(op.dir) << '\n';
+  }
+  return o.str();
+}
+
+}  // namespace gridlock

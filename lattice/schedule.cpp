@@ -1,0 +1,123 @@
+#include "lattice/schedule.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <numeric>
+#include <sstream>
+
+namespace gridlock {
+
+Schedule schedule_from_order(const std::vector<CouplingId>& order) {
+  Schedule s;
+  s.order = order;
+  s.start.assign(order.size(), Rational(0));
+  for (size_t i = 0; i < order.size(); ++i) s.start[order[i]] = Rational(static_cast<int64_t>(i));
+  return s;
+}
+
+MaybeError parse_order(const Instance& inst, const std::vector<std::string>& names, const std::string& source,
+                       long line, std::vector<CouplingId>& order) {
+  order.clear();
+  std::vector<char> seen(inst.couplings().size(), 0);
+  for (const auto& n : names) {
+    CouplingId q = inst.find_coupling(n);
+    if (q == kNone) return Diagnostic{source, line, "unknown coupling '" + n + "'"};
+    if (seen[q]) return Diagnostic{source, line, "coupling '" + n + "' named twice in the order"};
+    seen[q] = 1;
+    order.push_back(q);
+  }
+  for (CouplingId q = 0; q < seen.size(); ++q)
+    if (!seen[q]) return Diagnostic{source, line, "the order leaves out coupling '" + inst.couplings()[q].name + "'"};
+  return std::nullopt;
+}
+
+namespace {
+
+// Calls fn(line_no, tokens) for each non-comment line; stops at the first error.
+template <class Fn>
+MaybeError for_each_line(const std::string& path, Fn fn) {
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  std::string name = path == "-" ? "<stdin>" : path;
+  if (path != "-") {
+    file.open(path, std::ios::binary);
+    if (!file) return Diagnostic{path, 0, "cannot open file"};
+    in = &file;
+  }
+  std::string text;
+  long no = 0;
+  while (std::getline(*in, text)) {
+    ++no;
+    for (char ch : text)
+      if ((static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\r') || static_cast<unsigned char>(ch) >= 0x7f)
+        return Diagnostic{name, no, "binary input"};
+    std::istringstream ss(text);
+    std::vector<std::string> tok;
+    for (std::string w; ss >> w;) tok.push_back(w);
+    if (tok.empty() || tok[0] == "c" || tok[0][0] == '#') continue;
+    if (auto e = fn(name, no, tok)) return e;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+MaybeError read_order_file(const Instance& inst, const std::string& path, std::vector<CouplingId>& order) {
+  std::vector<std::string> names;
+  long last = 0;
+  std::string shown = path == "-" ? "<stdin>" : path;
+  auto err = for_each_line(path, [&](const std::string&, long no, std::vector<std::string>& tok) -> MaybeError {
+    last = no;
+    if (tok[0] == "s") return std::nullopt;
+    size_t i = tok[0] == "v" ? 1 : 0;
+    for (; i < tok.size(); ++i) names.push_back(tok[i]);
+    return std::nullopt;
+  });
+  if (err) return err;
+  return parse_order(inst, names, shown, last, order);
+}
+
+std::optional<std::string> check_schedule_bounds(const Instance& inst, const Schedule& s) {
+  if (s.start.size() != inst.couplings().size()) return "the schedule does not give every coupling a start time";
+  int64_t lcm = 1;
+  for (const auto& t : s.start) {
+    if (t.num() / t.den() > kMaxStartTime || t.num() / t.den() < -kMaxStartTime)
+      return "start time " + t.str() + " out of range (|t| <= 2^30)";
+    lcm = std::lcm(lcm, t.den());
+    if (lcm > kMaxDenominator) return "the start times' common denominator exceeds 2^20";
+  }
+  return std::nullopt;
+}
+
+MaybeError read_times_file(const Instance& inst, const std::string& path, Schedule& out) {
+  out = Schedule{};
+  out.start.assign(inst.couplings().size(), Rational(0));
+  std::vector<long> line_of(inst.couplings().size(), 0);
+  int64_t lcm = 1;
+  long last = 0;
+  std::string shown = path == "-" ? "<stdin>" : path;
+  auto err = for_each_line(path, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
+    last = no;
+    if (tok.size() != 2) return Diagnostic{name, no, "expected 'COUPLING TIME'"};
+    CouplingId q = inst.find_coupling(tok[0]);
+    if (q == kNone) return Diagnostic{name, no, "unknown coupling '" + tok[0] + "'"};
+    if (line_of[q]) return Diagnostic{name, no, "coupling '" + tok[0] + "' given a time twice (first on line " +
+                                                     std::to_string(line_of[q]) + ")"};
+    auto t = Rational::parse(tok[1]);
+    if (!t) return Diagnostic{name, no, "bad time '" + tok[1] + "' (an integer or a fraction a/b)"};
+    if (t->num() / t->den() > kMaxStartTime || t->num() / t->den() < -kMaxStartTime)
+      return Diagnostic{name, no, "time out of range: '" + tok[1] + "' (|t| <= 2^30)"};
+    lcm = std::lcm(lcm, t->den());
+    if (lcm > kMaxDenominator)
+      return Diagnostic{name, no, "the common denominator of the times exceeds 2^20"};
+    line_of[q] = no;
+    out.start[q] = *t;
+    return std::nullopt;
+  });
+  if (err) return err;
+  for (CouplingId q = 0; q < line_of.size(); ++q)
+    if (!line_of[q]) return Diagnostic{shown, last, "no start time for coupling '" + inst.couplings()[q].name + "'"};
+  return std::nullopt;
+}
+
+}  // namespace gridlock

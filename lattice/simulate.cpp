@@ -1,0 +1,382 @@
+#include "lattice/simulate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace gridlock {
+
+namespace {
+
+// A non-negative fraction of scaled time, den > 0; "none" when den == 0.
+struct Frac {
+  __int128 num = 0, den = 0;
+  bool none() const { return den == 0; }
+};
+bool frac_less(const Frac& a, const Frac& b) { return a.num * b.den < b.num * a.den; }
+
+int64_t floor_div(int64_t a, int64_t b) {
+  int64_t q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return q;
+}
+
+// The earliest tau in [0, span] such that the rectangles A(t) = A + vA t and
+// B(t) = B + vB t overlap with positive area right after tau; none if never.
+// Eight strict inequalities a + b tau > 0: the four overlap conditions and
+// the four widths (a region of width 0 never collides).
+Frac first_overlap(const int64_t* A, const int64_t* vA, const int64_t* B, const int64_t* vB, int64_t span) {
+  const int64_t lin[8][2] = {
+      {A[1] - B[0], vA[1] - vB[0]}, {B[1] - A[0], vB[1] - vA[0]}, {A[3] - B[2], vA[3] - vB[2]},
+      {B[3] - A[2], vB[3] - vA[2]}, {A[1] - A[0], vA[1] - vA[0]}, {B[1] - B[0], vB[1] - vB[0]},
+      {A[3] - A[2], vA[3] - vA[2]}, {B[3] - B[2], vB[3] - vB[2]},
+  };
+  bool has_lo = false, has_hi = false;
+  Frac lo{0, 1}, hi{0, 1};
+  for (const auto& f : lin) {
+    __int128 a = f[0], b = f[1];
+    if (b == 0) {
+      if (a <= 0) return {};
+    } else if (b > 0) {  // tau > -a/b
+      Frac c{-a, b};
+      if (!has_lo || frac_less(lo, c)) lo = c, has_lo = true;
+    } else {  // tau < a/(-b)
+      Frac c{a, -b};
+      if (!has_hi || frac_less(c, hi)) hi = c, has_hi = true;
+    }
+  }
+  Frac zero{0, 1}, end{span, 1};
+  if (has_lo && has_hi && !frac_less(lo, hi)) return {};
+  if (has_lo && !frac_less(lo, end)) return {};
+  if (has_hi && !frac_less(zero, hi)) return {};
+  if (!has_lo || frac_less(lo, zero)) return zero;
+  return lo;
+}
+
+Rational to_rational(__int128 num, __int128 den) {
+  if (den < 0) num = -num, den = -den;
+  __int128 a = num < 0 ? -num : num, b = den;
+  while (b != 0) {
+    __int128 t = a % b;
+    a = b;
+    b = t;
+  }
+  if (a > 1) num /= a, den /= a;
+  constexpr __int128 lim = INT64_MAX;
+  if (num > lim || num < -lim || den > lim) throw std::overflow_error("collision time does not fit 64 bits");
+  return Rational(static_cast<int64_t>(num), static_cast<int64_t>(den));
+}
+
+int axis_of(size_t face) { return face < 2 ? 0 : 1; }
+
+}  // namespace
+
+Simulator::Simulator(const Instance& inst)
+    : inst_(inst), tree_(SpanningTree::build(inst)), regions_(Regions::build(inst)), faces_(FaceNets::build(inst)) {}
+
+SimResult Simulator::run(const Schedule& s) {
+  if (auto problem = check_schedule_bounds(inst_, s)) throw std::invalid_argument(*problem);
+  SimResult result;
+  const size_t n = inst_.num_nodes(), nq = inst_.couplings().size(), nr = regions_.size();
+  int64_t D = 1;
+  for (const auto& t : s.start) D = std::lcm(D, t.den());
+  std::vector<int64_t> T(nq);
+  for (size_t q = 0; q < nq; ++q) T[q] = s.start[q].num() * (D / s.start[q].den());
+
+  // --- Cycle collisions: the earliest over all faces (an event time). ---
+  bool cycle_found = false;
+  int64_t cycle_time = 0;
+  size_t cycle_face = 0;
+  for (size_t f = 0; f < faces_.faces.size(); ++f) {
+    const auto& nets = faces_.faces[f].nets;
+    std::vector<int64_t> ev;
+    for (auto& [q, v] : nets) ev.push_back(T[q]), ev.push_back(T[q] + D);
+    std::sort(ev.begin(), ev.end());
+    ev.erase(std::unique(ev.begin(), ev.end()), ev.end());
+    for (size_t i = 1; i < ev.size(); ++i) {
+      Vec2 mis{0, 0};
+      for (auto& [q, v] : nets) mis += std::clamp<int64_t>(ev[i] - T[q], 0, D) * v;
+      if (!mis.is_zero()) {
+        if (!cycle_found || ev[i - 1] < cycle_time) cycle_found = true, cycle_time = ev[i - 1], cycle_face = f;
+        break;
+      }
+    }
+  }
+
+  // --- Node collisions: sweep the intervals between events. ---
+  std::vector<std::array<int64_t, 4>> rect(nr);
+  for (size_t r = 0; r < nr; ++r)
+    for (int f = 0; f < 4; ++f) rect[r][f] = regions_.shapes[r].base[f] * D;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> grid;
+  grid.reserve(nr * 2);
+  auto key_of = [&](uint32_t r) { return cell_key(Vec2{floor_div(rect[r][0], D), floor_div(rect[r][2], D)}); };
+  std::vector<uint64_t> region_key(nr);
+  for (uint32_t r = 0; r < nr; ++r) grid[region_key[r] = key_of(r)].push_back(r);
+
+  struct Event {
+    int64_t time;
+    CouplingId q;
+    bool start;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * nq);
+  for (CouplingId q = 0; q < nq; ++q) events.push_back({T[q], q, true}), events.push_back({T[q] + D, q, false});
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    return a.time != b.time ? a.time < b.time : a.start < b.start;
+  });
+
+  std::vector<char> running(nq, 0);
+  std::vector<CouplingId> run_list;
+  std::vector<uint32_t> node_stamp(n, 0), region_stamp(nr, 0);
+  std::vector<Vec2> node_vel(n);
+  std::vector<std::array<int64_t, 4>> rvel(nr);
+  uint32_t stamp = 0;
+
+  auto report_cycle = [&]() {
+    Collision c;
+    c.kind = Collision::Kind::Cycle;
+    c.time = to_rational(cycle_time, D);
+    c.cycle = faces_.faces[cycle_face].walk;
+    for (CouplingId q = 0; q < nq; ++q)
+      if (T[q] <= cycle_time && cycle_time < T[q] + D) c.moving.push_back(q);
+    result.collision = c;
+    return result;
+  };
+
+  for (size_t ei = 0; ei < events.size();) {
+    int64_t now = events[ei].time;
+    for (; ei < events.size() && events[ei].time == now; ++ei) {
+      CouplingId q = events[ei].q;
+      if (events[ei].start) {
+        running[q] = 1;
+        run_list.push_back(q);
+      } else {
+        running[q] = 0;
+        run_list.erase(std::find(run_list.begin(), run_list.end(), q));
+      }
+    }
+    if (cycle_found && cycle_time <= now) return report_cycle();
+    if (run_list.empty() || ei == events.size()) continue;
+    const int64_t span = events[ei].time - now;
+    ++result.stats.intervals;
+    ++stamp;
+
+    // Cut the tree at the running operations' tree edges.
+    std::vector<NodeId> cuts;
+    std::vector<OpId> running_ops;
+    for (CouplingId q : run_list)
+      for (OpId k : inst_.couplings()[q].ops) {
+        running_ops.push_back(k);
+        const Operation& op = inst_.ops()[k];
+        if (!op.is_edge_op()) continue;
+        if (tree_.parent[op.v] == op.u && tree_.parent_op[op.v] == k) cuts.push_back(op.v);
+        else if (tree_.parent[op.u] == op.v && tree_.parent_op[op.u] == k) cuts.push_back(op.u);
+      }
+    std::sort(cuts.begin(), cuts.end(), [&](NodeId a, NodeId b) { return tree_.tin[a] < tree_.tin[b]; });
+    const size_t nc = cuts.size();
+    const size_t ROOT = nc;
+    std::vector<int64_t> comp_size(nc + 1);
+    std::vector<size_t> up(nc, ROOT);
+    comp_size[ROOT] = static_cast<int64_t>(n);
+    {
+      std::vector<size_t> st;
+      for (size_t i = 0; i < nc; ++i) {
+        comp_size[i] = tree_.subtree[cuts[i]];
+        while (!st.empty() && tree_.tout[cuts[st.back()]] <= tree_.tin[cuts[i]]) st.pop_back();
+        up[i] = st.empty() ? ROOT : st.back();
+        comp_size[up[i]] -= tree_.subtree[cuts[i]];
+        st.push_back(i);
+      }
+    }
+    size_t L = ROOT;
+    for (size_t i = 0; i < nc; ++i)
+      if (comp_size[i] > comp_size[L]) L = i;
+    Vec2 vel_L{0, 0};
+    if (L != ROOT)
+      for (size_t i = L;; i = up[i]) {
+        vel_L += op_child_vector(inst_, tree_, cuts[i]);
+        if (up[i] == ROOT) break;
+      }
+    // Ranges of Euler positions that move, in increasing order.
+    std::vector<std::pair<uint32_t, uint32_t>> ranges;
+    if (L == ROOT) {
+      for (size_t i = 0; i < nc; ++i)
+        if (up[i] == ROOT) ranges.push_back({tree_.tin[cuts[i]], tree_.tout[cuts[i]]});
+    } else {
+      ranges.push_back({0, tree_.tin[cuts[L]]});
+      for (size_t i = 0; i < nc; ++i)
+        if (up[i] == L) ranges.push_back({tree_.tin[cuts[i]], tree_.tout[cuts[i]]});
+      ranges.push_back({tree_.tout[cuts[L]], static_cast<uint32_t>(n)});
+    }
+    std::vector<uint32_t> moving;
+    auto add_region = [&](uint32_t r) {
+      if (r != kNone && region_stamp[r] != stamp) region_stamp[r] = stamp, moving.push_back(r);
+    };
+    {
+      std::vector<std::pair<uint32_t, Vec2>> st;  // (tout, velocity) of enclosing cuts
+      size_t ptr = 0;
+      for (auto [b, e] : ranges)
+        for (uint32_t p = b; p < e; ++p) {
+          while (!st.empty() && st.back().first <= p) st.pop_back();
+          while (ptr < nc && tree_.tin[cuts[ptr]] <= p) {
+            NodeId c = cuts[ptr++];
+            while (!st.empty() && st.back().first <= tree_.tin[c]) st.pop_back();
+            if (tree_.tout[c] > p) {
+              Vec2 base = st.empty() ? Vec2{0, 0} : st.back().second;
+              st.push_back({tree_.tout[c], base + op_child_vector(inst_, tree_, c)});
+            }
+          }
+          NodeId w = tree_.order[p];
+          node_vel[w] = (st.empty() ? Vec2{0, 0} : st.back().second) - vel_L;
+          node_stamp[w] = stamp;
+          add_region(w);
+          OpId k = inst_.op_of_node(w);
+          if (k != kNone) {
+            add_region(regions_.region_of_op[k]);
+            if (inst_.ops()[k].kind == OpKind::Contract) add_region(inst_.ops()[k].v);
+          }
+        }
+    }
+    for (OpId k : running_ops) {
+      add_region(regions_.region_of_op[k]);
+      if (inst_.ops()[k].kind == OpKind::Contract) add_region(inst_.ops()[k].v);
+    }
+    result.stats.moved_regions += moving.size();
+
+    // Velocities and swept boxes of the moving regions.
+    auto vel_of = [&](NodeId w) { return node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0}; };
+    std::vector<std::array<int64_t, 4>> swept(moving.size());
+    for (size_t i = 0; i < moving.size(); ++i) {
+      uint32_t r = moving[i];
+      const RegionShape& sh = regions_.shapes[r];
+      for (int f = 0; f < 4; ++f) {
+        Vec2 v = vel_of(sh.ref[f]);
+        int64_t vf = axis_of(f) == 0 ? v.x : v.y;
+        if (sh.grow_op != kNone && f == sh.grow_face && running[inst_.ops()[sh.grow_op].coupling]) vf += sh.grow_sign;
+        rvel[r][f] = vf;
+      }
+      for (int f = 0; f < 4; f += 2) {
+        int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
+        int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
+        swept[i][f] = std::min(a0, a1);
+        swept[i][f + 1] = std::max(b0, b1);
+      }
+    }
+
+    // Broad phase, then the exact test; keep the earliest.
+    Frac best{};
+    uint32_t best_a = kNone, best_b = kNone;
+    static const int64_t zero4[4] = {0, 0, 0, 0};
+    auto test = [&](uint32_t a, uint32_t b, bool b_moves) {
+      ++result.stats.candidate_pairs;
+      Frac f = first_overlap(rect[a].data(), rvel[a].data(), rect[b].data(), b_moves ? rvel[b].data() : zero4, span);
+      if (!f.none() && (best.none() || frac_less(f, best) ||
+                        (!frac_less(best, f) && std::minmax(a, b) < std::minmax(best_a, best_b))))
+        best = f, best_a = std::min(a, b), best_b = std::max(a, b);
+    };
+    std::unordered_map<uint64_t, std::vector<uint32_t>> moving_grid;
+    for (size_t i = 0; i < moving.size(); ++i) {
+      uint32_t r = moving[i];
+      const auto& sw = swept[i];
+      if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;  // never of positive area
+      int64_t cx0 = floor_div(sw[0], D), cx1 = floor_div(sw[1] - 1, D);
+      int64_t cy0 = floor_div(sw[2], D), cy1 = floor_div(sw[3] - 1, D);
+      // Static regions: corner cell within one of the swept box.
+      for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
+        for (int64_t cy = cy0 - 1; cy <= cy1; ++cy) {
+          auto it = grid.find(cell_key(Vec2{cx, cy}));
+          if (it == grid.end()) continue;
+          for (uint32_t x : it->second)
+            if (region_stamp[x] != stamp) test(r, x, false);
+        }
+      for (int64_t cx = cx0; cx <= cx1; ++cx)
+        for (int64_t cy = cy0; cy <= cy1; ++cy) moving_grid[cell_key(Vec2{cx, cy})].push_back(static_cast<uint32_t>(i));
+    }
+    std::unordered_set<uint64_t> tested;
+    for (auto& [key, list] : moving_grid)
+      for (size_t x = 0; x < list.size(); ++x)
+        for (size_t y = x + 1; y < list.size(); ++y) {
+          uint32_t i = std::min(list[x], list[y]), j = std::max(list[x], list[y]);
+          if (!tested.insert((static_cast<uint64_t>(i) << 32) | j).second) continue;
+          const auto &si = swept[i], &sj = swept[j];
+          if (si[1] <= sj[0] || sj[1] <= si[0] || si[3] <= sj[2] || sj[3] <= si[2]) continue;
+          test(moving[i], moving[j], true);
+        }
+    if (!best.none()) {
+      Collision c;
+      c.kind = Collision::Kind::Node;
+      c.time = to_rational(static_cast<__int128>(now) * best.den + best.num, best.den * D);
+      c.a = best_a;
+      c.b = best_b;
+      c.moving = run_list;
+      std::sort(c.moving.begin(), c.moving.end());
+      result.collision = c;
+      return result;
+    }
+    // Advance the moving regions to the end of the interval.
+    for (uint32_t r : moving) {
+      for (int f = 0; f < 4; ++f) rect[r][f] += rvel[r][f] * span;
+      uint64_t k = key_of(r);
+      if (k != region_key[r]) {
+        auto& old = grid[region_key[r]];
+        old.erase(std::find(old.begin(), old.end(), r));
+        grid[k].push_back(r);
+        region_key[r] = k;
+      }
+    }
+  }
+  if (cycle_found) return report_cycle();
+  return result;
+}
+
+std::vector<RectQ> configuration_at(const Instance& inst, const Schedule& s, const Rational& t) {
+  SpanningTree tree = SpanningTree::build(inst);
+  Regions regions = Regions::build(inst);
+  auto progress = [&](CouplingId q) {
+    Rational p = t - s.start[q];
+    return p < Rational(0) ? Rational(0) : p > Rational(1) ? Rational(1) : p;
+  };
+  std::vector<Rational> dx(inst.num_nodes()), dy(inst.num_nodes());
+  for (NodeId w : tree.order) {
+    if (w == tree.root) continue;
+    NodeId p = tree.parent[w];
+    dx[w] = dx[p], dy[w] = dy[p];
+    OpId k = tree.parent_op[w];
+    if (k == kNone) continue;
+    Rational pk = progress(inst.ops()[k].coupling);
+    Vec2 v = op_child_vector(inst, tree, w);
+    dx[w] = dx[w] + pk * Rational(v.x);
+    dy[w] = dy[w] + pk * Rational(v.y);
+  }
+  std::vector<RectQ> out(regions.size());
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const RegionShape& sh = regions.shapes[r];
+    Rational c[4];
+    for (int f = 0; f < 4; ++f) {
+      c[f] = Rational(sh.base[f]) + (f < 2 ? dx[sh.ref[f]] : dy[sh.ref[f]]);
+      if (sh.grow_op != kNone && f == sh.grow_face)
+        c[f] = c[f] + Rational(sh.grow_sign) * progress(inst.ops()[sh.grow_op].coupling);
+    }
+    out[r] = RectQ{c[0], c[1], c[2], c[3]};
+  }
+  return out;
+}
+
+std::string describe(const Instance& inst, const Regions& regions, const Collision& c) {
+  std::string s;
+  if (c.kind == Collision::Kind::Node) {
+    s = "node collision at time " + c.time.str() + " between " + region_label(inst, regions, c.a) + " and " +
+        region_label(inst, regions, c.b);
+  } else {
+    s = "cycle collision at time " + c.time.str() + " around the cycle through";
+    size_t shown = std::min<size_t>(c.cycle.size(), 12);
+    for (size_t i = 0; i < shown; ++i) s += " " + inst.node_label(c.cycle[i]);
+    if (shown < c.cycle.size()) s += " ... (" + std::to_string(c.cycle.size()) + " steps)";
+  }
+  return s;
+}
+
+}  // namespace gridlock

@@ -1,0 +1,91 @@
+// The exact simulator: does a schedule collide, and if so, when, where, how.
+//
+// Semantics: ../shared/MODEL.md. All arithmetic is on integers: times and
+// coordinates are scaled by the common denominator D of the start times, so
+// every position at an event time is an integer multiple of 1/D, and within
+// an interval between consecutive events every face moves linearly.
+//
+// Algorithm (docs/simulator.md): the events (starts and ends of couplings)
+// cut time into intervals with a fixed set of running couplings. In each one
+//  - cutting the spanning tree at the running operations' edges leaves rigid
+//    components; the largest stays put (only relative motion matters), and
+//    only the regions of the other components, plus the regions whose width
+//    changes, move;
+//  - a broad phase finds the pairs whose swept boxes overlap: moving regions
+//    query a hash of all regions by grid cell, and moving regions meet each
+//    other in a second hash of their swept boxes;
+//  - the exact test solves eight strict linear inequalities in time.
+// Cycle collisions are found up front from the face walks (FaceNets): the
+// mismatch around a face is piecewise linear in time, so the first moment it
+// is non-zero is an event time.
+// Cost: O(n + e log e + k log k) set-up, then per interval
+// O(c log c + m * s + p) for c running operations, m moving regions, s cells
+// per swept box and p candidate pairs. Worst case O(k n); on random trees and
+// schedules m is small (see docs/performance.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lattice/instance.hpp"
+#include "lattice/motion.hpp"
+#include "lattice/rational.hpp"
+#include "lattice/schedule.hpp"
+
+namespace gridlock {
+
+struct Collision {
+  enum class Kind { Node, Cycle };
+  Kind kind = Kind::Node;
+  Rational time;                    // the first moment (infimum) of the collision
+  uint32_t a = kNone, b = kNone;    // the two regions (node collision), a < b
+  std::vector<NodeId> cycle;        // the face walk (cycle collision)
+  std::vector<CouplingId> moving;   // couplings running right after `time`
+};
+
+struct SimStats {
+  uint64_t intervals = 0;        // intervals with at least one running coupling
+  uint64_t moved_regions = 0;    // sum over intervals of moving regions
+  uint64_t candidate_pairs = 0;  // pairs passed by the broad phase
+};
+
+struct SimResult {
+  std::optional<Collision> collision;  // nullopt: the schedule is collision-free
+  SimStats stats;
+};
+
+class Simulator {
+ public:
+  // O(n + e log e). Keeps a reference to inst, which must outlive it.
+  explicit Simulator(const Instance& inst);
+
+  // Runs schedule s. Requires check_schedule_bounds(inst, s) to pass.
+  SimResult run(const Schedule& s);
+  SimResult run_order(const std::vector<CouplingId>& order) { return run(schedule_from_order(order)); }
+
+  const Instance& instance() const { return inst_; }
+  const Regions& regions() const { return regions_; }
+  const SpanningTree& tree() const { return tree_; }
+  const FaceNets& faces() const { return faces_; }
+
+ private:
+  struct CutInfo;
+  const Instance& inst_;
+  SpanningTree tree_;
+  Regions regions_;
+  FaceNets faces_;
+};
+
+// An exact rectangle, for drawing the configuration at a moment.
+struct RectQ {
+  Rational xlo, xhi, ylo, yhi;
+};
+// Every region's rectangle at time t under schedule s (on the spanning tree
+// from the anchor; meaningful up to the first collision). O(n) rationals.
+std::vector<RectQ> configuration_at(const Instance& inst, const Schedule& s, const Rational& t);
+
+// "node (1,1) and node (0,1) collide at time 3/2" and similar one-liners.
+std::string describe(const Instance& inst, const Regions& regions, const Collision& c);
+
+}  // namespace gridlock

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs what gridlock needs from Debian, if it is missing. Safe to re-run.
+# Uses apt-get directly as root, or through sudo otherwise.
+set -euo pipefail
+
+PACKAGES=(
+  cmake g++ make clang libclang-rt-14-dev   # build; clang for libFuzzer targets
+  libcadical-dev                            # the SAT solver, linked as a library
+  libboost-program-options-dev              # the command line
+  nlohmann-json3-dev                        # --json output, manifests
+  libgtest-dev librapidcheck-dev            # tests, property tests
+  libbenchmark-dev                          # bench/
+  librsvg2-bin                              # rsvg-convert: look at the SVGs as PNG
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "setup: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,25 @@
+// Running the real `gridlock` binary from tests (end-to-end, no mocks).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gridlock::test {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+// Runs GRIDLOCK_BINARY with args (no shell; args passed as they are), with
+// stdin_text on standard input. Captures stdout and stderr.
+CliResult run_gridlock(const std::vector<std::string>& args, const std::string& stdin_text = "");
+
+// A fresh empty directory under the system temp dir, removed at exit.
+std::string temp_dir();
+// Writes text to path (creating it), returns path.
+std::string write_file(const std::string& path, const std::string& text);
+std::string read_file(const std::string& path);
+
+}  // namespace gridlock::test

@@ -1,0 +1,76 @@
+// gridlock: one command line, many subcommands (see tools/command.hpp).
+//
+// Only this file decides how an error ends the process:
+// "gridlock: error: <what>" on stderr and exit code 1.
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "common/diagnostic.hpp"
+#include "tools/command.hpp"
+
+namespace gridlock {
+
+std::map<std::string, CommandInfo>& command_registry() {
+  static std::map<std::string, CommandInfo> registry;
+  return registry;
+}
+
+}  // namespace gridlock
+
+namespace {
+
+void print_usage(std::ostream& os) {
+  os << "usage: gridlock SUBCOMMAND [OPTIONS] [ARGS]\n\n"
+        "Collision detection for modular robots (Gupta, van Kreveld, Michail, Padalkin):\n"
+        "instances, the exact simulator, solvers, the LSAT reduction and its checks.\n\n"
+        "subcommands:\n";
+  for (const auto& [name, info] : gridlock::command_registry()) {
+    os << "  " << name;
+    for (size_t i = name.size(); i < 16; ++i) os << ' ';
+    os << info.summary << '\n';
+  }
+  os << "\n'gridlock SUBCOMMAND --help' documents each one.\n"
+        "Decision commands print 'c' comment lines, one 's' status line and 'v' witness\n"
+        "lines, and exit 10 (yes), 20 (no), 0 (unknown: a limit was hit) or 1 (error);\n"
+        "--json prints one JSON object instead.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::ios::sync_with_stdio(false);
+  if (argc < 2) {
+    print_usage(std::cerr);
+    return 1;
+  }
+  std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    print_usage(std::cout);
+    return 0;
+  }
+  auto& registry = gridlock::command_registry();
+  auto it = registry.find(name);
+  if (it == registry.end()) {
+    std::cerr << "gridlock: error: unknown subcommand '" << name << "' (see 'gridlock --help')\n";
+    return 1;
+  }
+  std::vector<std::string> args(argv + 2, argv + argc);
+  try {
+    return it->second.run(args);
+  } catch (const gridlock::UserError& e) {
+    std::cout.flush();
+    std::cerr << "gridlock: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cout.flush();
+    std::cerr << "gridlock: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    // Not a user error: a bug or a limit of ours. Still no crash, still exit 1.
+    std::cout.flush();
+    std::cerr << "gridlock: error: internal: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,49 @@
+// Output conventions of every decision command (SAT-competition style).
+//
+//   c comment lines (statistics, explanations)
+//   s STATUS          exactly one status line
+//   v witness lines   (a schedule, an assignment)
+//
+// Exit codes: 10 yes, 20 no, 0 unknown (a limit was hit), 1 error.
+// With --json the same content is printed as one JSON object instead:
+//   {"command": ..., "status": ..., "comments": [...], "witness": [...], ...}
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace gridlock {
+
+enum class Verdict { Yes, No, Unknown };
+
+inline int exit_code(Verdict v) { return v == Verdict::Yes ? 10 : v == Verdict::No ? 20 : 0; }
+
+class Answer {
+ public:
+  Answer(std::string command, bool json) : command_(std::move(command)), json_mode_(json) {}
+
+  // A "c" line. In text mode it is printed at once (so long runs show
+  // progress); in JSON mode it is collected into "comments".
+  void comment(const std::string& line);
+  // A "v" line: one witness item (e.g. a coupling name, a literal).
+  void witness(const std::string& item);
+  // Extra structured data for --json (ignored in text mode).
+  nlohmann::json& data() { return data_; }
+  bool json() const { return json_mode_; }
+
+  // Prints "s <status_text>" and the witness (or the JSON object) and returns
+  // the exit code for verdict. status_text defaults to YES / NO / UNKNOWN.
+  int finish(Verdict verdict, const std::string& status_text = "");
+
+ private:
+  std::string command_;
+  bool json_mode_;
+  std::vector<std::string> comments_;
+  std::vector<std::string> witness_;
+  nlohmann::json data_ = nlohmann::json::object();
+};
+
+}  // namespace gridlock
