@@ -74,7 +74,7 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
   auto X = [&](double x) { return (x - minx) * S; };
   auto Y = [&](double y) { return title_h + (maxy - y) * S; };
   std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(std::max(W, 320.0)) << "\" height=\""
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(std::max(W, 440.0)) << "\" height=\""
     << fmt(H + legend_h + title_h) << "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n";
   o << "<defs><marker id=\"ah\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"5\" markerHeight=\"5\" "
        "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker></defs>\n";
@@ -117,7 +117,15 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
     for (NodeId w : opt.collision->cycle) hit[w] = 1;
   for (size_t r = 0; r < rects.size(); ++r) {
     double w = box[r].x1 - box[r].x0, h = box[r].y1 - box[r].y0;
-    if (w <= 0 || h <= 0) continue;
+    if (w <= 0 || h <= 0) {
+      // A region of width 0 is no node yet (or no more); at a collision it is
+      // one of the pair (a growth just starting), so show it as a red bar.
+      if (hit[r])
+        o << "<line x1=\"" << fmt(X(box[r].x0)) << "\" y1=\"" << fmt(Y(box[r].y0)) << "\" x2=\"" << fmt(X(box[r].x1))
+          << "\" y2=\"" << fmt(Y(box[r].y1)) << "\" stroke=\"#d62728\" stroke-width=\"6\"><title>"
+          << xml_escape(region_label(inst, regions, static_cast<uint32_t>(r))) << " (width 0)</title></line>\n";
+      continue;
+    }
     bool node = regions.shapes[r].kind == RegionKind::Node;
     double inset = std::min({0.08, w / 4, h / 4});
     std::string fill = hit[r] ? "#ff9896" : node ? "#dddddd" : "#aec7e8";

@@ -1,0 +1,140 @@
+// The .grid reader and writer: round trips, and one test per class of bad
+// input with the exact message (docs/grid-format.md lists them all).
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "lattice/grid_format.hpp"
+#include "lattice/random_instance.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+std::string error_of(const std::string& text) {
+  Instance inst;
+  std::istringstream in(text);
+  auto err = read_instance(in, "bad.grid", inst);
+  return err ? err->str() : "no error";
+}
+
+std::string written(const Instance& inst) {
+  std::ostringstream out;
+  write_instance(out, inst);
+  return out.str();
+}
+
+const std::string kHead = "p grid 3 2 1 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\n";
+
+TEST(GridFormat, RoundTripRandomInstances) {
+  const int cases = test::scaled(500);
+  for (int i = 0; i < cases; ++i) {
+    RandomInstanceParams p;
+    p.nodes = 1 + static_cast<uint32_t>(i % 30);
+    p.ops = static_cast<uint32_t>(i % 7);
+    p.max_coupling = 1 + static_cast<uint32_t>(i % 3);
+    p.extra_edge_percent = i % 2 ? 30 : 0;
+    Instance inst = random_instance(p, static_cast<uint64_t>(i));
+    std::string once = written(inst);
+    Instance back;
+    std::istringstream in(once);
+    auto err = read_instance(in, "round.grid", back);
+    ASSERT_FALSE(err) << err->str() << "\n" << once;
+    EXPECT_EQ(written(back), once) << "seed " << i;
+    EXPECT_EQ(back.num_nodes(), inst.num_nodes());
+    EXPECT_EQ(back.couplings().size(), inst.couplings().size());
+  }
+}
+
+TEST(GridFormat, AcceptsCommentsBlankLinesCrLfAndImplicitCouplings) {
+  Instance inst;
+  std::istringstream in("c hello\r\n\r\n# also a comment\np grid 2 1 1 0\nn 0 0\n  n 1 0\ne 0 0 1 0\t\n"
+                        "c mid\no a expand 0 0 +x\na 1 0\n");
+  auto err = read_instance(in, "ok.grid", inst);
+  ASSERT_FALSE(err) << err->str();
+  ASSERT_EQ(inst.couplings().size(), 1u);
+  EXPECT_EQ(inst.couplings()[0].name, "a");
+  EXPECT_EQ(inst.node_label(inst.anchor()), "(1,0)");
+}
+
+struct BadCase {
+  const char* what;
+  std::string text;
+  std::string message;
+};
+
+TEST(GridFormat, RejectsEachBadInputClassWithItsMessage) {
+  const std::vector<BadCase> cases = {
+      {"two nodes in one cell", "p grid 2 0 0 0\nn 0 0\nn 0 0\n", "bad.grid:3: two nodes in cell (0,0)"},
+      {"edge between non-adjacent cells", "p grid 2 1 0 0\nn 0 0\nn 2 0\ne 0 0 2 0\n",
+       "bad.grid:4: edge between non-adjacent cells (0,0) and (2,0)"},
+      {"edge to a missing node", "p grid 1 1 0 0\nn 0 0\ne 0 0 1 0\n", "bad.grid:3: edge end (1,0) holds no node"},
+      {"edge given twice", "p grid 2 2 0 0\nn 0 0\nn 1 0\ne 0 0 1 0\ne 1 0 0 0\n",
+       "bad.grid:5: edge between (1,0) and (0,0) given twice"},
+      {"operation on a missing node", kHead + "o a expand 5 5 +x\n",
+       "bad.grid:7: operation 'a' on cell (5,5), which holds no node"},
+      {"expansion on a non-edge", "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no a expand 0 0 +x\n",
+       "bad.grid:5: expand 'a' needs an edge from (0,0) to (1,0), and there is none"},
+      {"contraction on a non-edge", "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no a contract 0 0 -y\n",
+       "bad.grid:5: contract 'a' needs an edge from (0,0) to (0,-1), and there is none"},
+      {"growth into a joined neighbour", kHead + "o g grow 0 0 +x\n",
+       "bad.grid:7: growth 'g' into (1,0), which holds a node joined to (0,0) by an edge (use expand)"},
+      {"bad direction", kHead + "o a expand 0 0 up\n", "bad.grid:7: bad direction 'up' (one of +x, -x, +y, -y)"},
+      {"bad kind", kHead + "o a push 0 0 +x\n",
+       "bad.grid:7: unknown operation kind 'push' (expand, grow or contract)"},
+      {"node in two operations", "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+                                 "o b expand 1 0 +x\n",
+       "bad.grid:8: node (1,0) already takes part in operation 'a'"},
+      {"operation defined twice", "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a grow 0 0 -x\n"
+                                  "o a grow 2 0 +x\n",
+       "bad.grid:8: operation 'a' defined twice"},
+      {"unknown name in a coupling", "p grid 3 2 1 1\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+                                     "q Q a zz\n",
+       "bad.grid:8: unknown operation 'zz' in coupling 'Q'"},
+      {"operation in two couplings", "p grid 3 2 1 2\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+                                     "q Q a\nq R a\n",
+       "bad.grid:9: operation 'a' is already in coupling 'Q'"},
+      {"singleton name taken", "p grid 3 2 2 1\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+                               "o b grow 2 0 +x\nq b a\n",
+       "bad.grid:9: operation 'b' is in no coupling, and its singleton coupling's name is taken"},
+      {"disconnected shape", "p grid 3 1 0 0\nn 0 0\nn 1 0\nn 5 5\ne 0 0 1 0\n",
+       "bad.grid:4: the shape is not connected: node (5,5) cannot be reached from node (0,0)"},
+      {"coordinate out of range", "p grid 1 0 0 0\nn 0 1000000001\n",
+       "bad.grid:2: coordinate out of range: '1000000001' (allowed -1000000000 to 1000000000)"},
+      {"number overflowing 64 bits", "p grid 1 0 0 0\nn 0 99999999999999999999999\n",
+       "bad.grid:2: coordinate out of range: '99999999999999999999999' (allowed -1000000000 to 1000000000)"},
+      {"count out of range", "p grid 999999999999 0 0 0\n",
+       "bad.grid:1: count out of range: '999999999999' (allowed 0 to 67108864)"},
+      {"not an integer", "p grid 1 0 0 0\nn 0 x1\n", "bad.grid:2: expected an integer coordinate, got 'x1'"},
+      {"missing header", "n 0 0\n",
+       "bad.grid:1: missing header 'p grid NODES EDGES OPS COUPLINGS' before the first n line"},
+      {"empty input", "", "bad.grid: empty input: no 'p grid' header"},
+      {"truncated input", "p grid 3 2 0 0\nn 0 0\nn 1 0\n",
+       "bad.grid:3: unexpected end of input: the header promises 3 nodes, the file gives 2 (truncated?)"},
+      {"more than the header", "p grid 1 0 0 0\nn 0 0\nn 1 0\n", "bad.grid:3: more nodes than the header's 1"},
+      {"binary input", std::string("p grid 1 0 0 0\nn 0 \0 0\n", 22), "bad.grid:2: binary input: byte 0x00 at column 5"},
+      {"binary high byte", "p grid 1 0 0 0\nn 0 \xff\n", "bad.grid:2: binary input: byte 0xff at column 5"},
+      {"wrong field count", "p grid 1 0 0 0\nn 0 0 0\n", "bad.grid:2: expected 'n X Y', got 3 fields"},
+      {"unknown line type", "p grid 1 0 0 0\nz 0 0\n", "bad.grid:2: unknown line type 'z'"},
+      {"second header", "p grid 1 0 0 0\np grid 1 0 0 0\n", "bad.grid:2: second header line"},
+      {"bad name", kHead + "o -a expand 0 0 +x\n", "bad.grid:7: bad operation name '-a'"},
+      {"anchor on no node", "p grid 1 0 0 0\nn 0 0\na 3 3\n", "bad.grid:3: anchor (3,3) holds no node"},
+      {"no nodes", "p grid 0 0 0 0\n", "bad.grid:1: the shape has no nodes"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(error_of(c.text), c.message) << c.what;
+}
+
+TEST(GridFormat, OverlongLineIsReportedNotCrashed) {
+  std::string text = "p grid 1 0 0 0\nc " + std::string(2 << 20, 'x') + "\n";
+  EXPECT_EQ(error_of(text), "bad.grid:2: line longer than 1048576 bytes");
+}
+
+TEST(GridFormat, MissingFileIsADiagnostic) {
+  Instance inst;
+  auto err = read_instance_file("/nonexistent/x.grid", inst);
+  ASSERT_TRUE(err);
+  EXPECT_EQ(err->str(), "/nonexistent/x.grid: cannot open file");
+}
+
+}  // namespace
+}  // namespace gridlock

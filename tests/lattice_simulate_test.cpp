@@ -1,0 +1,278 @@
+// The exact simulator: MODEL.md's worked cases, each operation's geometry,
+// anchor independence, and the fast simulator against the all-pairs twin.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "lattice/grid_format.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "support/reference_simulator.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+Instance parse(const std::string& text) {
+  Instance inst;
+  std::istringstream in(text);
+  auto err = read_instance(in, "test.grid", inst);
+  EXPECT_FALSE(err) << err->str();
+  return inst;
+}
+
+Instance load(const std::string& name) {
+  Instance inst;
+  auto err = read_instance_file(std::string(GRIDLOCK_SOURCE_DIR) + "/examples/instances/" + name, inst);
+  EXPECT_FALSE(err) << err->str();
+  return inst;
+}
+
+std::optional<Collision> run_order(const Instance& inst, const std::vector<std::string>& names) {
+  std::vector<CouplingId> order;
+  auto err = parse_order(inst, names, "test", 0, order);
+  EXPECT_FALSE(err);
+  Simulator sim(inst);
+  return sim.run_order(order).collision;
+}
+
+Schedule times(const Instance& inst, const std::vector<std::pair<std::string, Rational>>& t) {
+  Schedule s;
+  s.start.assign(inst.couplings().size(), Rational(0));
+  for (auto& [name, v] : t) s.start[inst.find_coupling(name)] = v;
+  return s;
+}
+
+// --- MODEL.md worked cases ---------------------------------------------
+
+TEST(ModelCases, Case1TwoGrowthsAlwaysMeet) {
+  Instance inst = load("model-case1-two-growths.grid");
+  for (auto order : {std::vector<std::string>{"g1", "g2"}, std::vector<std::string>{"g2", "g1"}}) {
+    auto c = run_order(inst, order);
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->kind, Collision::Kind::Node);
+    EXPECT_EQ(c->time, Rational(1));  // the second growth collides at once
+  }
+  // Continuous: any start times; both new nodes end in (1,0).
+  Simulator sim(inst);
+  for (auto [a, b] : {std::pair{0, 0}, std::pair{0, 5}, std::pair{3, 1}}) {
+    auto c = sim.run(times(inst, {{"g1", Rational(a)}, {"g2", Rational(b, 2)}})).collision;
+    ASSERT_TRUE(c);
+  }
+  // Each alone is fine: a single growth in its own instance.
+  Instance one = parse("p grid 5 4 1 0\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\n"
+                       "o g1 grow 0 0 +x\n");
+  EXPECT_FALSE(run_order(one, {"g1"}));
+}
+
+TEST(ModelCases, Case2OrderGadget) {
+  Instance inst = load("model-case2-order-gadget.grid");
+  EXPECT_FALSE(run_order(inst, {"a", "b"}));
+  auto c = run_order(inst, {"b", "a"});
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->kind, Collision::Kind::Node);
+  EXPECT_EQ(c->time, Rational(0));
+  Simulator sim(inst);
+  std::string pair = region_label(inst, sim.regions(), c->a) + " " + region_label(inst, sim.regions(), c->b);
+  EXPECT_EQ(pair, "node (0,1) node (1,1)");
+  // Continuous, both at once: collision-free. Also b a little after a.
+  EXPECT_FALSE(sim.run(times(inst, {{"a", Rational(0)}, {"b", Rational(0)}})).collision);
+  EXPECT_FALSE(sim.run(times(inst, {{"a", Rational(0)}, {"b", Rational(1, 3)}})).collision);
+  // b before a, overlapping: (1,1) is pushed left faster than (0,1) moves.
+  auto late = sim.run(times(inst, {{"a", Rational(1, 2)}, {"b", Rational(0)}})).collision;
+  ASSERT_TRUE(late);
+  EXPECT_EQ(late->time, Rational(0));
+}
+
+TEST(ModelCases, Case3BlockCycle) {
+  const std::string block = "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\n";
+  Instance alone = parse(block + "o a expand 0 0 +x\n");
+  auto c = run_order(alone, {"a"});
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->kind, Collision::Kind::Cycle);
+  EXPECT_EQ(c->time, Rational(0));
+  Instance coupled = load("model-case3-block.grid");
+  EXPECT_FALSE(run_order(coupled, {"Q"}));
+  // The same two expansions uncoupled: whichever runs first breaks the cycle.
+  Instance apart = parse("p grid 4 4 2 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\n"
+                         "o a expand 0 0 +x\no b expand 0 1 +x\n");
+  EXPECT_TRUE(run_order(apart, {"a", "b"}));
+  // ... but in continuous time, started together, they move as one.
+  Simulator sim(apart);
+  EXPECT_FALSE(sim.run(times(apart, {{"a", Rational(0)}, {"b", Rational(0)}})).collision);
+  auto off = sim.run(times(apart, {{"a", Rational(0)}, {"b", Rational(1, 4)}})).collision;
+  ASSERT_TRUE(off);
+  EXPECT_EQ(off->kind, Collision::Kind::Cycle);
+  EXPECT_EQ(off->time, Rational(0));
+}
+
+// --- geometry of each operation kind, all four directions ------------------
+
+struct Geo {
+  Rational x0, x1, y0, y1;
+};
+
+// A node at (0,0) with the operation toward dir; a neighbour joined by an
+// edge for expand/contract. Anchored at (0,0). Returns the rectangle of
+// region r at progress p.
+Geo at_progress(OpKind kind, Dir d, uint32_t region, Rational p) {
+  InstanceBuilder b;
+  Vec2 o{0, 0}, c = unit(d);
+  b.add_node(o);
+  if (kind != OpKind::Grow) {
+    b.add_node(c);
+    b.add_edge(o, c);
+  }
+  EXPECT_FALSE(b.add_op("k", kind, o, d));
+  Instance inst;
+  EXPECT_FALSE(b.finish(inst));
+  Schedule s;
+  s.start = {Rational(0)};
+  auto r = configuration_at(inst, s, p)[region];
+  return {r.xlo, r.xhi, r.ylo, r.yhi};
+}
+
+TEST(OperationGeometry, AllKindsAllDirectionsAtZeroHalfOne) {
+  const Rational half(1, 2);
+  for (Dir d : kDirs) {
+    SCOPED_TRACE(dir_name(d));
+    Vec2 u = unit(d);
+    for (Rational p : {Rational(0), half, Rational(1)}) {
+      SCOPED_TRACE("progress " + p.str());
+      // Expansion: v moves p along d; the inserted node (region 2) spans the gap of width p.
+      Geo v = at_progress(OpKind::Expand, d, 1, p);
+      EXPECT_EQ(v.x0, Rational(u.x) + p * Rational(u.x));
+      EXPECT_EQ(v.y0, Rational(u.y) + p * Rational(u.y));
+      EXPECT_EQ(v.x1 - v.x0, Rational(1));
+      Geo m = at_progress(OpKind::Expand, d, 2, p);
+      Rational w = (m.x1 - m.x0) * (m.y1 - m.y0);
+      EXPECT_EQ(w, p);  // width p times height 1
+      // The inserted node touches u's face toward d.
+      if (d == Dir::PosX) { EXPECT_EQ(m.x0, Rational(1)); }
+      if (d == Dir::NegX) { EXPECT_EQ(m.x1, Rational(0)); }
+      if (d == Dir::PosY) { EXPECT_EQ(m.y0, Rational(1)); }
+      if (d == Dir::NegY) { EXPECT_EQ(m.y1, Rational(0)); }
+      // Growth: grown node (region 1) from u's face, width p.
+      Geo g = at_progress(OpKind::Grow, d, 1, p);
+      EXPECT_EQ((g.x1 - g.x0) * (g.y1 - g.y0), p);
+      if (d == Dir::PosX) { EXPECT_EQ(g.x0, Rational(1)); }
+      if (d == Dir::NegX) { EXPECT_EQ(g.x1, Rational(0)); }
+      // Contraction: v narrows to width 1-p on u's face.
+      Geo cv = at_progress(OpKind::Contract, d, 1, p);
+      EXPECT_EQ((cv.x1 - cv.x0) * (cv.y1 - cv.y0), Rational(1) - p);
+      if (d == Dir::PosX) { EXPECT_EQ(cv.x0, Rational(1)); }
+      if (d == Dir::NegX) { EXPECT_EQ(cv.x1, Rational(0)); }
+      if (d == Dir::PosY) { EXPECT_EQ(cv.y0, Rational(1)); }
+      if (d == Dir::NegY) { EXPECT_EQ(cv.y1, Rational(0)); }
+      // u never moves (it is the anchor).
+      Geo u0 = at_progress(OpKind::Contract, d, 0, p);
+      EXPECT_EQ(u0.x0, Rational(0));
+      EXPECT_EQ(u0.y0, Rational(0));
+    }
+  }
+}
+
+TEST(OperationGeometry, TouchingIsNoCollision) {
+  // A growth into a cell whose node leaves in lock-step only touches it.
+  Instance inst = parse("p grid 4 3 2 1\nn 0 0\nn 0 1\nn 1 1\nn 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\n"
+                        "o g grow 0 0 +x\no e expand 0 1 +x\nq Q g e\n");
+  // (1,0) hangs from (1,1); e pushes (1,1) and (1,0) right while g grows into (1,0).
+  EXPECT_FALSE(run_order(inst, {"Q"}));
+  // The growth alone, into the occupied cell: collides at once.
+  Instance alone = parse("p grid 4 3 1 0\nn 0 0\nn 0 1\nn 1 1\nn 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\n"
+                         "o g grow 0 0 +x\n");
+  auto c = run_order(alone, {"g"});
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->time, Rational(0));
+}
+
+// --- anchor independence and the twin --------------------------------------
+
+RandomInstanceParams small_params(uint64_t seed) {
+  RandomInstanceParams p;
+  uint64_t s = seed;
+  p.nodes = 2 + static_cast<uint32_t>(draw_below(s, 9));
+  p.ops = 1 + static_cast<uint32_t>(draw_below(s, 5));
+  p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 3));
+  p.extra_edge_percent = draw_below(s, 3) == 0 ? 40 : 0;
+  p.horizontal_only = draw_below(s, 4) == 0;
+  p.spread = static_cast<uint32_t>(draw_below(s, 3));
+  return p;
+}
+
+Schedule random_schedule(const Instance& inst, uint64_t seed, bool discrete) {
+  uint64_t s = seed ^ 0xabcdef;
+  size_t k = inst.couplings().size();
+  if (discrete) {
+    std::vector<CouplingId> order(k);
+    for (CouplingId q = 0; q < k; ++q) order[q] = q;
+    for (size_t i = k; i > 1; --i) std::swap(order[i - 1], order[draw_below(s, i)]);
+    return schedule_from_order(order);
+  }
+  Schedule sc;
+  for (size_t q = 0; q < k; ++q) {
+    // Small denominators so that starts and ends coincide often (the hard cases).
+    int64_t den = 1 + static_cast<int64_t>(draw_below(s, 3));
+    sc.start.push_back(Rational(static_cast<int64_t>(draw_below(s, 3 * static_cast<uint64_t>(den) + 1)), den));
+  }
+  return sc;
+}
+
+TEST(SimulatorTwin, FastAgreesWithAllPairsReference) {
+  const int cases = test::scaled(3000);
+  const uint64_t seed0 = test::base_seed(1);
+  int collisions = 0, cycles = 0;
+  for (int i = 0; i < cases; ++i) {
+    uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
+    Instance inst = random_instance(small_params(seed), seed);
+    Simulator sim(inst);
+    for (bool discrete : {true, false}) {
+      Schedule s = random_schedule(inst, seed, discrete);
+      auto fast = sim.run(s).collision;
+      NodeId root = static_cast<NodeId>(seed % inst.num_nodes());
+      auto ref = test::reference_simulate(inst, s, root);
+      ASSERT_EQ(fast.has_value(), ref.has_value()) << (discrete ? "discrete" : "continuous");
+      if (!fast) continue;
+      ++collisions;
+      EXPECT_EQ(fast->kind == Collision::Kind::Cycle, ref->cycle);
+      EXPECT_EQ(fast->time, ref->time);
+      if (ref->cycle) {
+        ++cycles;
+      } else if (fast->kind == Collision::Kind::Node) {
+        auto pr = std::pair{fast->a, fast->b};
+        EXPECT_NE(std::find(ref->pairs.begin(), ref->pairs.end(), pr), ref->pairs.end())
+            << "fast reports a pair the reference does not";
+      }
+    }
+  }
+  // The comparison is only worth something if both outcomes occur often.
+  EXPECT_GT(collisions, cases / 5);
+  EXPECT_LT(collisions, 2 * cases - cases / 5);
+  EXPECT_GT(cycles, 0);
+}
+
+TEST(SimulatorTwin, VerdictIndependentOfAnchor) {
+  const int cases = test::scaled(600);
+  for (int i = 0; i < cases; ++i) {
+    uint64_t seed = test::base_seed(77) + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Instance inst = random_instance(small_params(seed), seed);
+    Schedule s = random_schedule(inst, seed, i % 2 == 0);
+    Simulator first(inst);
+    auto base = first.run(s).collision;
+    for (NodeId a = 0; a < inst.num_nodes(); ++a) {
+      Instance moved = inst.with_anchor(a);
+      Simulator sim(moved);
+      auto c = sim.run(s).collision;
+      ASSERT_EQ(c.has_value(), base.has_value()) << "anchor " << inst.node_label(a);
+      if (c) {
+        EXPECT_EQ(c->time, base->time);
+        EXPECT_EQ(c->kind, base->kind);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gridlock
