@@ -277,14 +277,17 @@ SimResult Simulator::run(const Schedule& s) {
                         (!frac_less(best, f) && std::minmax(a, b) < std::minmax(best_a, best_b))))
         best = f, best_a = std::min(a, b), best_b = std::max(a, b);
     };
-    std::unordered_map<uint64_t, std::vector<uint32_t>> moving_grid;
+    // Moving against static: each moving region queries the cells of its
+    // swept box (a static region's lower-left corner lies at most one cell
+    // before the box). Cells hold O(1) static regions: the shape has no overlaps.
+    int64_t vmax = 1;
     for (size_t i = 0; i < moving.size(); ++i) {
       uint32_t r = moving[i];
+      for (int f = 0; f < 4; ++f) vmax = std::max(vmax, rvel[r][f] < 0 ? -rvel[r][f] : rvel[r][f]);
       const auto& sw = swept[i];
       if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;  // never of positive area
       int64_t cx0 = floor_div(sw[0], D), cx1 = floor_div(sw[1] - 1, D);
       int64_t cy0 = floor_div(sw[2], D), cy1 = floor_div(sw[3] - 1, D);
-      // Static regions: corner cell within one of the swept box.
       for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
         for (int64_t cy = cy0 - 1; cy <= cy1; ++cy) {
           auto it = grid.find(cell_key(Vec2{cx, cy}));
@@ -292,19 +295,41 @@ SimResult Simulator::run(const Schedule& s) {
           for (uint32_t x : it->second)
             if (region_stamp[x] != stamp) test(r, x, false);
         }
-      for (int64_t cx = cx0; cx <= cx1; ++cx)
-        for (int64_t cy = cy0; cy <= cy1; ++cy) moving_grid[cell_key(Vec2{cx, cy})].push_back(static_cast<uint32_t>(i));
     }
+    // Moving against moving: split the interval into S = max speed sub-steps
+    // (for the broad phase only), so that in each sub-step every region
+    // sweeps at most about two cells and a cell holds O(1) regions; pairs that
+    // share a cell in some sub-step go to the exact test over the whole
+    // interval. Without the split, long sweeps (many coupled operations in a
+    // row) would pile many regions into each cell: quadratic.
+    const int64_t S = vmax;
+    const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
+    auto floor128 = [](__int128 a, __int128 b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); };
     std::unordered_set<uint64_t> tested;
-    for (auto& [key, list] : moving_grid)
-      for (size_t x = 0; x < list.size(); ++x)
-        for (size_t y = x + 1; y < list.size(); ++y) {
-          uint32_t i = std::min(list[x], list[y]), j = std::max(list[x], list[y]);
-          if (!tested.insert((static_cast<uint64_t>(i) << 32) | j).second) continue;
-          const auto &si = swept[i], &sj = swept[j];
-          if (si[1] <= sj[0] || sj[1] <= si[0] || si[3] <= sj[2] || sj[3] <= si[2]) continue;
-          test(moving[i], moving[j], true);
+    std::unordered_map<uint64_t, std::vector<uint32_t>> moving_grid;
+    for (int64_t step = 0; step < S; ++step) {
+      moving_grid.clear();
+      for (size_t i = 0; i < moving.size(); ++i) {
+        uint32_t r = moving[i];
+        __int128 box[4];
+        for (int f = 0; f < 4; ++f) {
+          __int128 p0 = static_cast<__int128>(rect[r][f]) * S + static_cast<__int128>(rvel[r][f]) * span * step;
+          __int128 p1 = p0 + static_cast<__int128>(rvel[r][f]) * span;
+          box[f] = (f % 2 == 0) ? std::min(p0, p1) : std::max(p0, p1);
         }
+        if (box[1] <= box[0] || box[3] <= box[2]) continue;
+        auto cx0 = static_cast<int64_t>(floor128(box[0], unit)), cx1 = static_cast<int64_t>(floor128(box[1] - 1, unit));
+        auto cy0 = static_cast<int64_t>(floor128(box[2], unit)), cy1 = static_cast<int64_t>(floor128(box[3] - 1, unit));
+        for (int64_t cx = cx0; cx <= cx1; ++cx)
+          for (int64_t cy = cy0; cy <= cy1; ++cy) moving_grid[cell_key(Vec2{cx, cy})].push_back(static_cast<uint32_t>(i));
+      }
+      for (auto& [key, list] : moving_grid)
+        for (size_t x = 0; x < list.size(); ++x)
+          for (size_t y = x + 1; y < list.size(); ++y) {
+            uint32_t i = std::min(list[x], list[y]), j = std::max(list[x], list[y]);
+            if (tested.insert((static_cast<uint64_t>(i) << 32) | j).second) test(moving[i], moving[j], true);
+          }
+    }
     if (!best.none()) {
       Collision c;
       c.kind = Collision::Kind::Node;

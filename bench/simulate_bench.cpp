@@ -1,0 +1,96 @@
+// Simulator scaling (docs/performance.md): how time grows with the number of
+// nodes n and of couplings k. Families are collision-free, so every interval
+// is simulated (a collision would end the run early):
+//   comb: a spine of length L along x with a tooth of height H on every spine
+//   node (n = L (H + 1)); k singleton expansions, run in a random order.
+//   - spine: expansions on spine edges (+x): each moves the smaller side,
+//     about a quarter of the shape on average: O(n) per step.
+//   - teeth: expansions inside teeth (+y): each moves part of one tooth:
+//     O(H) per step, whatever n is.
+//   - all at once: every spine expansion coupled into one continuous run.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+
+namespace gridlock {
+namespace {
+
+Instance comb(int64_t L, int64_t H, int64_t k, bool teeth, bool one_coupling, uint64_t seed) {
+  InstanceBuilder b;
+  for (int64_t x = 0; x < L; ++x)
+    for (int64_t y = 0; y <= H; ++y) b.add_node({x, y});
+  for (int64_t x = 0; x < L; ++x) {
+    if (x + 1 < L) b.add_edge({x, 0}, {x + 1, 0});
+    for (int64_t y = 0; y < H; ++y) b.add_edge({x, y}, {x, y + 1});
+  }
+  uint64_t s = seed;
+  std::vector<std::string> names;
+  std::vector<char> used(static_cast<size_t>(L * (H + 1)), 0);
+  int64_t attempts = 0;
+  while (static_cast<int64_t>(names.size()) < k && ++attempts < 50 * k) {
+    int64_t x = static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(L - 1)));
+    int64_t y = teeth ? static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(H))) : 0;
+    Vec2 u{x, y}, v = teeth ? Vec2{x, y + 1} : Vec2{x + 1, y};
+    size_t iu = static_cast<size_t>(u.x * (H + 1) + u.y), iv = static_cast<size_t>(v.x * (H + 1) + v.y);
+    if (used[iu] || used[iv]) continue;
+    used[iu] = used[iv] = 1;
+    std::string name = "e" + std::to_string(names.size());
+    b.add_op(name, OpKind::Expand, u, teeth ? Dir::PosY : Dir::PosX);
+    names.push_back(name);
+  }
+  if (one_coupling) b.add_coupling("all", names);
+  Instance inst;
+  b.finish(inst);
+  return inst;
+}
+
+void run(benchmark::State& state, bool teeth, bool at_once) {
+  const int64_t n = state.range(0), k = state.range(1);
+  const int64_t H = teeth ? 9 : 3, L = n / (H + 1);
+  Instance inst = comb(L, H, k, teeth, at_once, 42);
+  if (static_cast<int64_t>(inst.ops().size()) < k) {
+    state.SkipWithError("k too large for n");
+    return;
+  }
+  Simulator sim(inst);
+  std::vector<CouplingId> order(inst.couplings().size());
+  uint64_t s = 7;
+  for (CouplingId q = 0; q < order.size(); ++q) order[q] = q;
+  for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[draw_below(s, i)]);
+  Schedule sched = schedule_from_order(order);
+  SimStats stats;
+  for (auto _ : state) {
+    SimResult r = sim.run(sched);
+    if (r.collision) state.SkipWithError("unexpected collision");
+    stats = r.stats;
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["nodes"] = static_cast<double>(inst.num_nodes());
+  state.counters["couplings"] = static_cast<double>(inst.couplings().size());
+  state.counters["moved_per_interval"] =
+      static_cast<double>(stats.moved_regions) / static_cast<double>(std::max<uint64_t>(stats.intervals, 1));
+  state.counters["ns_per_moved_region"] = benchmark::Counter(
+      static_cast<double>(stats.moved_regions), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_CombSpine(benchmark::State& s) { run(s, false, false); }
+void BM_CombTeeth(benchmark::State& s) { run(s, true, false); }
+void BM_AllAtOnce(benchmark::State& s) { run(s, false, true); }
+
+// n from 10^3 to 10^6; k from 10^2 to 10^4 (spine runs with n k <= 10^9 only:
+// they move O(n) regions per step by design).
+BENCHMARK(BM_CombSpine)->Args({1000, 100})->Args({10000, 100})->Args({10000, 1000})->Args({100000, 100})
+    ->Args({100000, 1000})->Args({100000, 10000})->Args({1000000, 100})->Args({1000000, 1000})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CombTeeth)->Args({1000, 100})->Args({10000, 100})->Args({10000, 1000})->Args({100000, 100})
+    ->Args({100000, 1000})->Args({100000, 10000})->Args({1000000, 100})->Args({1000000, 1000})->Args({1000000, 10000})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AllAtOnce)->Args({1000, 50})->Args({2000, 100})->Args({4000, 200})->Args({8000, 400})->Args({16000, 800})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace gridlock
+
+BENCHMARK_MAIN();
