@@ -16,7 +16,7 @@ if [ $quick -eq 0 ]; then
   echo "== ASan + UBSan build and tests"
   BUILD_DIR=build-asan BUILD_TYPE=Debug bash scripts/build.sh -DGRIDLOCK_SANITIZE=ON -DGRIDLOCK_BENCH=OFF
   # Sanitized runs are slower: the randomized comparisons take fewer cases.
-  (cd build-asan && GRIDLOCK_TEST_SCALE=0.2 ASAN_OPTIONS=detect_leaks=1 \
+  (cd build-asan && GRIDLOCK_TEST_SCALE=0.3 ASAN_OPTIONS=detect_leaks=1 \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$(nproc)")
   echo "== fuzzing the readers"
   bash scripts/fuzz.sh 30
