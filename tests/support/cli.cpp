@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 extern char** environ;
 
@@ -24,12 +25,28 @@ std::string slurp(const std::string& path) {
 }
 }  // namespace
 
+namespace {
+// Removes every directory temp_dir() made when the test program exits.
+struct TempDirs {
+  std::vector<std::filesystem::path> dirs;
+  ~TempDirs() {
+    std::error_code ec;
+    for (auto& d : dirs) std::filesystem::remove_all(d, ec);
+  }
+};
+TempDirs& temp_dirs() {
+  static TempDirs t;
+  return t;
+}
+}  // namespace
+
 std::string temp_dir() {
   static int counter = 0;
   auto base = std::filesystem::temp_directory_path() /
               ("gridlock-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::filesystem::remove_all(base);
   std::filesystem::create_directories(base);
+  temp_dirs().dirs.push_back(base);
   return base.string();
 }
 
