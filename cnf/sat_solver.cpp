@@ -1,0 +1,75 @@
+// The CaDiCaL adapter: the only file of gridlock that includes cadical.hpp.
+#include "cnf/sat_solver.hpp"
+
+#include <cadical.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <stdexcept>
+
+namespace gridlock {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// CaDiCaL polls its terminator regularly during search; this one ends the
+// search at a wall-clock deadline.
+class Deadline : public CaDiCaL::Terminator {
+ public:
+  explicit Deadline(Clock::time_point at) : at_(at) {}
+  bool terminate() override { return Clock::now() >= at_; }
+
+ private:
+  Clock::time_point at_;
+};
+
+}  // namespace
+
+const char* status_name(SatResult::Status s) {
+  switch (s) {
+    case SatResult::Sat: return "SATISFIABLE";
+    case SatResult::Unsat: return "UNSATISFIABLE";
+    case SatResult::Unknown: return "UNKNOWN";
+  }
+  return "UNKNOWN";
+}
+
+std::string sat_solver_name() { return std::string("CaDiCaL ") + CaDiCaL::Solver::version(); }
+
+SatResult solve_sat(const Formula& f, const SatLimits& limits) {
+  if (std::string bad = validate(f); !bad.empty()) throw std::invalid_argument("solve_sat: " + bad);
+  const auto start = Clock::now();
+  SatResult res;
+  CaDiCaL::Solver solver;
+  // CaDiCaL writes some messages ("c found falsified original clause") to
+  // standard output even by default; a library must not touch our output.
+  solver.set("quiet", 1);
+  // Make every declared variable known to the solver, so that val() is
+  // defined for variables that occur in no clause too.
+  if (f.num_vars > 0) solver.reserve(f.num_vars);
+  for (const auto& clause : f.clauses) {
+    for (int lit : clause) solver.add(lit);
+    solver.add(0);
+  }
+  if (limits.conflicts >= 0)
+    solver.limit("conflicts", static_cast<int>(std::min<int64_t>(limits.conflicts, INT_MAX)));
+  Deadline deadline(start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                std::max(limits.seconds, 0.0))));
+  if (limits.seconds > 0) solver.connect_terminator(&deadline);
+  const int code = solver.solve();
+  if (limits.seconds > 0) solver.disconnect_terminator();
+  res.status = code == 10 ? SatResult::Sat : code == 20 ? SatResult::Unsat : SatResult::Unknown;
+  if (res.status == SatResult::Sat) {
+    res.model.assign(static_cast<size_t>(f.num_vars) + 1, false);
+    for (int v = 1; v <= f.num_vars; ++v) res.model[static_cast<size_t>(v)] = solver.val(v) > 0;
+    long bad = first_falsified_clause(f, res.model);
+    if (bad >= 0)
+      throw std::logic_error(sat_solver_name() + " returned a model that falsifies clause " + std::to_string(bad + 1));
+  }
+  res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return res;
+}
+
+}  // namespace gridlock
