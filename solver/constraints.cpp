@@ -1,0 +1,272 @@
+#include "solver/constraints.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "solver/op_tree.hpp"
+#include "solver/row_order.hpp"
+
+namespace gridlock {
+
+namespace {
+
+// A linear form: base + sum of coef * [coupling done]; terms may repeat a
+// coupling until normalised.
+struct LinForm {
+  int64_t base = 0;
+  std::vector<std::pair<CouplingId, int64_t>> terms;
+  void normalise() {
+    std::sort(terms.begin(), terms.end());
+    size_t out = 0;
+    for (size_t i = 0; i < terms.size();) {
+      size_t j = i;
+      int64_t sum = 0;
+      while (j < terms.size() && terms[j].first == terms[i].first) sum += terms[j++].second;
+      if (sum != 0) terms[out++] = {terms[i].first, sum};
+      i = j;
+    }
+    terms.resize(out);
+  }
+  int64_t max_value() const {
+    int64_t m = base;
+    for (auto& t : terms) m += std::max<int64_t>(t.second, 0);
+    return m;
+  }
+};
+
+LinForm operator-(const LinForm& a, const LinForm& b) {
+  LinForm r;
+  r.base = a.base - b.base;
+  r.terms = a.terms;
+  for (auto& t : b.terms) r.terms.push_back({t.first, -t.second});
+  r.normalise();
+  return r;
+}
+
+// Turns normalised forms into a constraint; false if the pair can never
+// collide (some form is never positive).
+bool make_constraint(std::vector<LinForm> forms, uint32_t ra, uint32_t rb, CollisionConstraint& out) {
+  std::vector<LinForm> kept;
+  for (auto& f : forms) {
+    if (f.max_value() <= 0) return false;       // never positive: the pair never overlaps
+    if (f.terms.empty()) continue;              // constant and positive: no information
+    kept.push_back(std::move(f));
+  }
+  if (kept.empty()) {
+    // Every form constant and positive: the two would overlap from the start,
+    // which a valid instance excludes (nodes in distinct cells, new regions of
+    // width 0). Reaching this is a bug in the builder, not bad input.
+    throw std::logic_error("collision constraint with a permanent overlap");
+  }
+  out = CollisionConstraint{};
+  out.region_a = ra;
+  out.region_b = rb;
+  out.num_forms = static_cast<uint32_t>(kept.size());
+  for (auto& f : kept) {
+    out.base.push_back(f.base);
+    for (auto& t : f.terms) out.rel.push_back(t.first);
+  }
+  std::sort(out.rel.begin(), out.rel.end());
+  out.rel.erase(std::unique(out.rel.begin(), out.rel.end()), out.rel.end());
+  out.coef.assign(out.rel.size() * out.num_forms, 0);
+  for (uint32_t i = 0; i < out.num_forms; ++i)
+    for (auto& t : kept[i].terms) {
+      size_t j = static_cast<size_t>(std::lower_bound(out.rel.begin(), out.rel.end(), t.first) - out.rel.begin());
+      out.coef[j * out.num_forms + i] = t.second;
+    }
+  return true;
+}
+
+}  // namespace
+
+size_t ConstraintSystem::total_forms() const {
+  size_t s = 0;
+  for (auto& c : constraints) s += c.num_forms;
+  return s;
+}
+
+void ConstraintSystem::index() {
+  of_coupling.assign(num_couplings, {});
+  for (uint32_t ci = 0; ci < constraints.size(); ++ci)
+    for (uint32_t j = 0; j < constraints[ci].rel.size(); ++j) of_coupling[constraints[ci].rel[j]].push_back({ci, j});
+}
+
+bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
+  // Each form gives tau > -s/c (c > 0) or tau < s/(-c) (c < 0), or needs
+  // s > 0 (c == 0). Fractions num/den with den > 0, compared exactly.
+  __int128 lo_n = 0, lo_d = 1;  // lower end, starts at 0
+  __int128 hi_n = 1, hi_d = 1;  // upper end, starts at 1
+  for (uint32_t i = 0; i < nf; ++i) {
+    if (c[i] == 0) {
+      if (s[i] <= 0) return false;
+    } else if (c[i] > 0) {
+      __int128 n = -static_cast<__int128>(s[i]), d = c[i];
+      if (n * lo_d > lo_n * d) lo_n = n, lo_d = d;
+    } else {
+      __int128 n = s[i], d = -static_cast<__int128>(c[i]);
+      if (n * hi_d < hi_n * d) hi_n = n, hi_d = d;
+    }
+  }
+  return lo_n * hi_d < hi_n * lo_d;
+}
+
+ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree) {
+  ConstraintSystem sys;
+  sys.kind = ConstraintKind::Gaps;
+  sys.num_couplings = inst.couplings().size();
+  const Regions regions = Regions::build(inst);
+  const OpTree ot(inst, tree);
+  const auto& cells = inst.cells();
+  const auto& ops = inst.ops();
+  std::vector<NodeId> order = nodes_by_row(inst);
+  for (const RowRun& run : row_runs(inst, order)) {
+    for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
+      NodeId a = order[i], b = order[i + 1];
+      ++sys.candidate_pairs;
+      // Overlap form right(a) - left(b); a growth counts as part of its node.
+      LinForm f;
+      f.base = cells[a].x + 1 - cells[b].x;
+      NodeId ra = regions.shapes[a].ref[1], lb = regions.shapes[b].ref[0];
+      ot.for_each_op_on_path(ra, lb, [&](OpId k, int sign) {
+        // The path gives left(b)'s node minus right(a)'s node; the overlap is its negative.
+        int64_t dx = ot.child_vector(k).x;
+        if (dx != 0) f.terms.push_back({ops[k].coupling, -sign * dx});
+      });
+      OpId ka = inst.op_of_node(a), kb = inst.op_of_node(b);
+      if (ka != kNone && ops[ka].kind == OpKind::Grow && ops[ka].u == a && ops[ka].dir == Dir::PosX)
+        f.terms.push_back({ops[ka].coupling, 1});
+      if (kb != kNone && ops[kb].kind == OpKind::Grow && ops[kb].u == b && ops[kb].dir == Dir::NegX)
+        f.terms.push_back({ops[kb].coupling, 1});
+      f.normalise();
+      CollisionConstraint c;
+      if (make_constraint({f}, a, b, c)) sys.constraints.push_back(std::move(c));
+    }
+  }
+  sys.index();
+  return sys;
+}
+
+namespace {
+
+int axis_of_face(int f) { return f < 2 ? 0 : 1; }
+
+}  // namespace
+
+ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree) {
+  ConstraintSystem sys;
+  sys.kind = ConstraintKind::Pairs;
+  sys.num_couplings = inst.couplings().size();
+  const Regions regions = Regions::build(inst);
+  const OpTree ot(inst, tree);
+  const auto& cells = inst.cells();
+  const auto& ops = inst.ops();
+  const size_t n = inst.num_nodes(), nr = regions.size();
+
+  // Each region stays inside its base cell shifted by the displacement of
+  // its main node (the node itself; u for the region an operation creates
+  // and for a contracting v, whose near face follows u).
+  std::vector<Vec2> cell(nr);
+  std::vector<NodeId> main(nr);
+  for (uint32_t r = 0; r < nr; ++r) {
+    const RegionShape& sh = regions.shapes[r];
+    if (sh.kind == RegionKind::Node) {
+      cell[r] = cells[sh.id];
+      OpId k = inst.op_of_node(sh.id);
+      main[r] = (k != kNone && ops[k].kind == OpKind::Contract && ops[k].v == sh.id) ? ops[k].u : sh.id;
+    } else {
+      const Operation& op = ops[sh.id];
+      cell[r] = cells[op.u] + unit(op.dir);
+      main[r] = op.u;
+    }
+  }
+  // Operations per axis on each node's root path: bounds for the scan box.
+  std::vector<int64_t> hdepth(n, 0), vdepth(n, 0);
+  int64_t hmax = 0, vmax = 0;
+  for (NodeId w : tree.order) {
+    if (w == tree.root) continue;
+    NodeId p = tree.parent[w];
+    hdepth[w] = hdepth[p], vdepth[w] = vdepth[p];
+    OpId k = tree.parent_op[w];
+    if (k != kNone) (is_horizontal(ops[k].dir) ? hdepth[w] : vdepth[w]) += 1;
+    hmax = std::max(hmax, hdepth[w]), vmax = std::max(vmax, vdepth[w]);
+  }
+  std::unordered_map<uint64_t, std::vector<uint32_t>> by_cell;
+  by_cell.reserve(nr * 2);
+  for (uint32_t r = 0; r < nr; ++r) by_cell[cell_key(cell[r])].push_back(r);
+
+  // The face of region r as a linear form, relative to pivot node P.
+  auto face_form = [&](uint32_t r, int f, NodeId P, LinForm& out) {
+    const RegionShape& sh = regions.shapes[r];
+    out.base = sh.base[f];
+    out.terms.clear();
+    int ax = axis_of_face(f);
+    ot.for_each_op_on_path(P, sh.ref[f], [&](OpId k, int sign) {
+      Vec2 v = ot.child_vector(k);
+      int64_t d = ax == 0 ? v.x : v.y;
+      if (d != 0) out.terms.push_back({ops[k].coupling, sign * d});
+    });
+    if (sh.grow_op != kNone && f == sh.grow_face) out.terms.push_back({ops[sh.grow_op].coupling, sh.grow_sign});
+    out.normalise();
+  };
+
+  auto consider = [&](uint32_t a, uint32_t b) {
+    ++sys.candidate_pairs;
+    Vec2 d = cell[a] - cell[b];
+    int64_t H = 0, V = 0;
+    ot.for_each_op_on_path(main[a], main[b], [&](OpId k, int) { (is_horizontal(ops[k].dir) ? H : V) += 1; });
+    if ((d.x < 0 ? -d.x : d.x) > H || (d.y < 0 ? -d.y : d.y) > V) return;
+    NodeId P = main[a];
+    LinForm fa[4], fb[4];
+    for (int f = 0; f < 4; ++f) face_form(a, f, P, fa[f]), face_form(b, f, P, fb[f]);
+    std::vector<LinForm> forms = {fa[1] - fb[0], fb[1] - fa[0], fa[3] - fb[2], fb[3] - fa[2],
+                                  fa[1] - fa[0], fb[1] - fb[0], fa[3] - fa[2], fb[3] - fb[2]};
+    CollisionConstraint c;
+    if (make_constraint(std::move(forms), a, b, c)) sys.constraints.push_back(std::move(c));
+  };
+
+  for (uint32_t a = 0; a < nr; ++a) {
+    int64_t hx = hdepth[main[a]] + hmax, vy = vdepth[main[a]] + vmax;
+    // Scan the box of cells around a, unless it is larger than the region list.
+    auto box = static_cast<__int128>(2 * hx + 1) * (2 * vy + 1);
+    if (box > static_cast<__int128>(4 * nr + 16)) {
+      for (uint32_t b = a + 1; b < nr; ++b) consider(a, b);
+      continue;
+    }
+    for (int64_t x = cell[a].x - hx; x <= cell[a].x + hx; ++x)
+      for (int64_t y = cell[a].y - vy; y <= cell[a].y + vy; ++y) {
+        auto it = by_cell.find(cell_key(Vec2{x, y}));
+        if (it == by_cell.end()) continue;
+        for (uint32_t b : it->second)
+          if (b > a) consider(a, b);
+      }
+  }
+  sys.index();
+  return sys;
+}
+
+std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c) {
+  if (c.region_a < inst.num_nodes() && c.region_b < inst.num_nodes() && c.num_forms == 1 &&
+      inst.cells()[c.region_a].y == inst.cells()[c.region_b].y)
+    return "gap between " + inst.node_label(c.region_a) + " and " + inst.node_label(c.region_b);
+  return region_label(inst, regions, c.region_a) + " and " + region_label(inst, regions, c.region_b);
+}
+
+ReplayResult replay_order(const ConstraintSystem& sys, const std::vector<CouplingId>& order) {
+  std::vector<std::vector<int64_t>> cur(sys.constraints.size());
+  for (size_t i = 0; i < cur.size(); ++i) cur[i] = sys.constraints[i].base;
+  for (size_t step = 0; step < order.size(); ++step) {
+    CouplingId q = order[step];
+    for (auto [ci, j] : sys.of_coupling[q]) {
+      const CollisionConstraint& c = sys.constraints[ci];
+      if (step_collides(cur[ci].data(), c.coef_of(j), c.num_forms)) return {step, ci};
+    }
+    for (auto [ci, j] : sys.of_coupling[q]) {
+      const CollisionConstraint& c = sys.constraints[ci];
+      for (uint32_t i = 0; i < c.num_forms; ++i) cur[ci][i] += c.coef_of(j)[i];
+    }
+  }
+  return {order.size(), kNone};
+}
+
+}  // namespace gridlock

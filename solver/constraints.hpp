@@ -1,0 +1,95 @@
+// Collision constraints: the discrete model as arithmetic on couplings.
+//
+// In the discrete model only the set S of couplings done decides where
+// everything is (MODEL.md). Every face of every region is its base coordinate
+// plus a sum over couplings q of [q in S] * (integer), so for two regions A, B
+// each quantity below is such a linear form in the indicator vector of S:
+//   A.xhi - B.xlo,  B.xhi - A.xlo,  A.yhi - B.ylo,  B.yhi - A.ylo   (overlap)
+//   A.xhi - A.xlo,  B.xhi - B.xlo,  A.yhi - A.ylo,  B.yhi - B.ylo   (widths)
+// A and B overlap with positive area iff all eight are > 0. While coupling Q
+// runs from S with progress p in [0, 1], each form is s_i + p * c_i (s_i its
+// value at S, c_i the coefficient of Q), so Q's step makes A and B collide
+// iff all s_i + p c_i > 0 on some open sub-interval of (0, 1): exactly the
+// simulator's test, restricted to one pair (see step_collides).
+//
+// A CollisionConstraint is one such pair with its forms: forms that are
+// always positive are dropped; pairs that can never collide are not built.
+// Two builders:
+//  - gap constraints (horizontal-only instances): nodes stay in their rows,
+//    and a collision is a gap between consecutive nodes of a row going
+//    negative (MODEL.md, "Consequences"). One form per gap: the overlap
+//    right(a) - left(b), growths counted as part of their node. O(n) pairs.
+//  - pair constraints (any instance): every pair of regions that could ever
+//    overlap (a necessary distance test against the operations on the tree
+//    path between them), with up to eight forms.
+// Both are exact when no coupling breaks a cycle (checked first by the
+// solver; such a coupling makes every schedule collide).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lattice/instance.hpp"
+#include "lattice/motion.hpp"
+
+namespace gridlock {
+
+struct CollisionConstraint {
+  uint32_t region_a = kNone, region_b = kNone;  // Regions numbering (for messages)
+  uint32_t num_forms = 0;                       // 1..8
+  std::vector<int64_t> base;                    // per form: value with no coupling done
+  std::vector<CouplingId> rel;                  // couplings with a non-zero coefficient, increasing
+  std::vector<int64_t> coef;                    // rel.size() * num_forms: coef[j * num_forms + i]
+  const int64_t* coef_of(size_t j) const { return coef.data() + j * num_forms; }
+};
+
+enum class ConstraintKind { Gaps, Pairs };
+
+struct ConstraintSystem {
+  ConstraintKind kind = ConstraintKind::Pairs;
+  size_t num_couplings = 0;
+  std::vector<CollisionConstraint> constraints;
+  // Per coupling: (constraint index, index j of the coupling in its rel).
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> of_coupling;
+  uint64_t candidate_pairs = 0;  // pairs examined by the builder (statistics)
+
+  size_t total_forms() const;
+  // Fills of_coupling from constraints. O(total size).
+  void index();
+};
+
+// The exact step test. s: the forms' values at the state, c: the running
+// coupling's coefficients, nf forms. True iff all s_i + p c_i > 0 for every p
+// in some open interval inside (0, 1). O(nf), 128-bit products.
+bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf);
+
+// Gap constraints of a horizontal-only instance. Requires
+// inst.horizontal_only() and no coupling breaking a cycle (else the result
+// does not describe the instance). O(n + sum over gaps of the operations on
+// the tree path between the gap's two nodes); O(n) time for the rows.
+ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree);
+
+// Pair constraints of any instance. Requires no coupling breaking a cycle.
+// A pair (A, B) is kept iff it passes the distance test (each region stays in
+// its base cell shifted by one node's displacement, and that displacement
+// differs between the two by at most H horizontal and V vertical unit steps,
+// H and V the operations of each axis on the tree path) and some form
+// changes. Time O(sum over regions of min(#regions, scanned cells)) plus the
+// path walks of the candidates: quadratic in the worst case (long rows of
+// operations), near linear when operations are sparse.
+ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree);
+
+// "gap between (1,0) and (3,0)" / "node (1,1) and node inserted by a".
+std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c);
+
+// Replays an order on the constraint system. Returns the index in `order` of
+// the first step that collides (and the constraint), or order.size() if none.
+// O(sum over the steps of their constraints' sizes).
+struct ReplayResult {
+  size_t failed_step = 0;
+  uint32_t constraint = kNone;
+};
+ReplayResult replay_order(const ConstraintSystem& sys, const std::vector<CouplingId>& order);
+
+}  // namespace gridlock

@@ -1,0 +1,150 @@
+#include "solver/gaps.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "lattice/motion.hpp"
+#include "solver/op_tree.hpp"
+#include "solver/row_order.hpp"
+
+namespace gridlock {
+
+namespace {
+
+// The node whose displacement a node's left (right) face follows: itself,
+// except for a contracting v, whose face toward u follows u (MODEL.md).
+NodeId face_ref(const Instance& inst, NodeId w, bool right_face) {
+  OpId k = inst.op_of_node(w);
+  if (k == kNone) return w;
+  const Operation& op = inst.ops()[k];
+  if (op.kind != OpKind::Contract || op.v != w) return w;
+  // dir points from u to v: with +x, u is on v's left.
+  bool u_on_left = op.dir == Dir::PosX;
+  return (u_on_left != right_face) ? op.u : w;
+}
+
+// +1 if w grows into the side given (its node then extends by one cell).
+int64_t grows_toward(const Instance& inst, NodeId w, Dir d) {
+  OpId k = inst.op_of_node(w);
+  if (k == kNone) return 0;
+  const Operation& op = inst.ops()[k];
+  return (op.kind == OpKind::Grow && op.u == w && op.dir == d) ? 1 : 0;
+}
+
+}  // namespace
+
+GapVerdict check_gaps(const Instance& inst) {
+  if (!inst.horizontal_only()) throw std::invalid_argument("check_gaps needs a horizontal-only instance");
+  GapVerdict v;
+  const size_t n = inst.num_nodes();
+  const auto& cells = inst.cells();
+  const auto& ops = inst.ops();
+  const SpanningTree tree = SpanningTree::build(inst);
+
+  // Final displacement of every node (x only: nothing moves vertically).
+  std::vector<int64_t> D(n, 0);
+  for (NodeId w : tree.order) {
+    if (w == tree.root) continue;
+    D[w] = D[tree.parent[w]] + op_child_vector(inst, tree, w).x;
+  }
+
+  // Cycles: each non-tree edge closes one fundamental cycle; with everything
+  // running at once its mismatch grows linearly, so only the end matters.
+  const auto& edges = inst.edges();
+  for (uint32_t e = 0; e < edges.size(); ++e) {
+    if (tree.tree_edge[e]) continue;
+    ++v.cycles_checked;
+    const Edge& ed = edges[e];
+    int64_t expected = 0;  // displacement of b relative to a that the edge itself makes
+    if (ed.op != kNone) {
+      const Operation& op = ops[ed.op];
+      int64_t s = unit(op.dir).x * (op.kind == OpKind::Contract ? -1 : 1);  // v relative to u
+      expected = ed.a == op.u ? s : -s;
+    }
+    int64_t mis = (D[ed.b] - D[ed.a]) - expected;
+    if (mis == 0) continue;
+    ++v.open_cycles;
+    if (v.reason != GapVerdict::Reason::None) continue;
+    v.collision_free = false;
+    v.reason = GapVerdict::Reason::Cycle;
+    v.mismatch = mis;
+    // The tree path from a to b, then the edge back to a.
+    std::vector<uint32_t> depth(n, 0);
+    for (NodeId w : tree.order)
+      if (w != tree.root) depth[w] = depth[tree.parent[w]] + 1;
+    std::vector<NodeId> up_a, up_b;
+    NodeId x = ed.a, y = ed.b;
+    while (x != y) {
+      if (depth[x] >= depth[y]) up_a.push_back(x), x = tree.parent[x];
+      else up_b.push_back(y), y = tree.parent[y];
+    }
+    v.cycle = up_a;
+    v.cycle.push_back(x);
+    v.cycle.insert(v.cycle.end(), up_b.rbegin(), up_b.rend());
+  }
+
+  // Gaps: consecutive nodes of each row, from the radix order.
+  const std::vector<NodeId> order = nodes_by_row(inst);
+  bool first_gap = v.reason == GapVerdict::Reason::None;
+  for (const RowRun& run : row_runs(inst, order))
+    for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
+      NodeId a = order[i], b = order[i + 1];
+      ++v.gaps_checked;
+      int64_t right_a = cells[a].x + 1 + D[face_ref(inst, a, true)] + grows_toward(inst, a, Dir::PosX);
+      int64_t left_b = cells[b].x + D[face_ref(inst, b, false)] - grows_toward(inst, b, Dir::NegX);
+      int64_t final_size = left_b - right_a;
+      if (final_size >= 0) continue;
+      ++v.negative_gaps;
+      if (!first_gap) continue;
+      first_gap = false;
+      v.collision_free = false;
+      v.reason = GapVerdict::Reason::Gap;
+      v.row = cells[a].y;
+      v.left = a, v.right = b;
+      v.initial_size = cells[b].x - cells[a].x - 1;
+      v.final_size = final_size;
+    }
+
+  if (v.reason == GapVerdict::Reason::Gap) {
+    // The operations that change the reported gap: O(n), once.
+    const OpTree ot(inst, tree);
+    // Each operation appears once on the path, and a growth is never on it.
+    ot.for_each_op_on_path(face_ref(inst, v.left, true), face_ref(inst, v.right, false), [&](OpId k, int sign) {
+      int64_t dx = sign * ot.child_vector(k).x;
+      if (dx != 0) v.changes.push_back({k, dx});
+    });
+    for (NodeId w : {v.left, v.right})
+      if (grows_toward(inst, w, w == v.left ? Dir::PosX : Dir::NegX)) v.changes.push_back({inst.op_of_node(w), -1});
+  }
+  return v;
+}
+
+std::string describe_gap_verdict(const Instance& inst, const GapVerdict& v) {
+  switch (v.reason) {
+    case GapVerdict::Reason::None:
+      return "every gap stays >= 0 and every cycle closes when all couplings start at time 0";
+    case GapVerdict::Reason::Cycle: {
+      std::string s = "cycle through";
+      size_t shown = std::min<size_t>(v.cycle.size(), 12);
+      for (size_t i = 0; i < shown; ++i) s += " " + inst.node_label(v.cycle[i]);
+      if (shown < v.cycle.size()) s += " ... (" + std::to_string(v.cycle.size()) + " nodes)";
+      return s + " does not close at the end: net horizontal displacement " + std::to_string(v.mismatch);
+    }
+    case GapVerdict::Reason::Gap: {
+      std::string s = "gap in row " + std::to_string(v.row) + " between " + inst.node_label(v.left) + " and " +
+                      inst.node_label(v.right) + ": initial size " + std::to_string(v.initial_size) +
+                      ", final size " + std::to_string(v.final_size);
+      std::string widen, narrow;
+      for (const GapChange& c : v.changes) {
+        std::string item = " " + inst.ops()[c.op].name + " (" + (c.delta > 0 ? "+" : "") + std::to_string(c.delta) + ")";
+        (c.delta > 0 ? widen : narrow) += item;
+      }
+      s += "; widened by" + (widen.empty() ? std::string(" none") : widen);
+      s += "; narrowed by" + (narrow.empty() ? std::string(" none") : narrow);
+      return s;
+    }
+  }
+  return "";
+}
+
+}  // namespace gridlock

@@ -1,0 +1,30 @@
+// Nodes grouped by row and ordered by x, in linear time.
+//
+// Both gap checkers (the continuous one in solver/gaps.hpp and the discrete
+// gap constraints in solver/constraints.hpp) need, for every row, its nodes
+// from left to right. A comparison sort would cost O(n log n); the issue asks
+// for linear time, so this is an LSD radix sort on the key (y, x) shifted to
+// be non-negative: coordinates are bounded by kMaxCoordinate < 2^30, so the
+// key fits 62 bits and four passes of 16 bits sort it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lattice/instance.hpp"
+
+namespace gridlock {
+
+// Returns every node id, ordered by (y, x) of its cell.
+// Requires: cells within +-kMaxCoordinate (guaranteed by InstanceBuilder).
+// Complexity: O(n) time (4 counting passes of 2^16 buckets) and O(n) memory.
+std::vector<NodeId> nodes_by_row(const Instance& inst);
+
+// A run [begin, end) of nodes_by_row's result that shares one y.
+struct RowRun {
+  uint32_t begin = 0, end = 0;
+};
+// The maximal runs of equal y in `order` (which nodes_by_row produced). O(n).
+std::vector<RowRun> row_runs(const Instance& inst, const std::vector<NodeId>& order);
+
+}  // namespace gridlock
