@@ -119,7 +119,7 @@ CollideResult find_collision(const Instance& inst, TimeModel model, CollideMetho
   res.region_a = pc->a, res.region_b = pc->b;
   if (model == TimeModel::Discrete) {
     std::vector<CouplingId> first = pc->witness.done;
-    first.push_back(pc->witness.running);
+    if (pc->witness.running != kNone) first.push_back(pc->witness.running);
     return finish_with(schedule_from_order(order_starting_with(inst, first)));
   }
   // Continuous: start q at 1 - p_q so that at time 1 the progress is p; the

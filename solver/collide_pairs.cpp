@@ -34,9 +34,8 @@ int cmp_frac(i128 n1, i128 d1, i128 n2, i128 d2) {
       if (r1 == 0 && r2 == 0) return 0;
       return (r1 == 0 ? -1 : 1) * flip;
     }
-    // r1/d1 vs r2/d2  <=>  d2/r2 vs d1/r1
-    i128 a = d1, b = d2;
-    n1 = b, d1 = r2, n2 = a, d2 = r1;
+    // r1/d1 < r2/d2  <=>  d1/r1 > d2/r2: compare the reciprocals, flipped.
+    n1 = d1, d1 = r1, n2 = d2, d2 = r2;
     flip = -flip;
   }
   throw std::logic_error("cmp_frac did not terminate");
@@ -492,6 +491,11 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
       seen.push_back(w);
       choices.push_back({-1, g});
     }
+  }
+  if (choices.empty()) {  // nothing moves the pair: overlap now or never (never, in a valid instance)
+    for (int i = 0; i < 8; ++i)
+      if (S.c[i] <= 0) return false;
+    return true;
   }
   for (const Choice& ch : choices) {
     std::vector<Vec2> rest;

@@ -122,7 +122,42 @@ std::optional<std::vector<Q>> strict_point(const std::vector<Aff>& g, size_t nq)
   return p;
 }
 
+// The eight constraints of a pair as affine functions of p (nq couplings).
+std::vector<Aff> pair_forms(const RegionForm& A, const RegionForm& B, const PathNets& nets, size_t nq) {
+  auto face = [&](const RegionForm& R, int f, bool is_b) {
+    Aff a{Q(R.base[f]), std::vector<Q>(nq)};
+    if (R.own != kNone) a.a[R.own] = a.a[R.own] + Q(R.own_coef[f]);
+    if (is_b)
+      for (const auto& [q, w] : nets) a.a[q] = a.a[q] + Q(f < 2 ? w.x : w.y);
+    return a;
+  };
+  Aff a[4], b[4];
+  for (int f = 0; f < 4; ++f) a[f] = face(A, f, false), b[f] = face(B, f, true);
+  return {a[1] - b[0], b[1] - a[0], a[3] - b[2], b[3] - a[2], a[1] - a[0], a[3] - a[2], b[1] - b[0], b[3] - b[2]};
+}
+
 }  // namespace
+
+bool brute_pair_continuous(const RegionForm& A, const RegionForm& B, const PathNets& nets, size_t nq) {
+  return strict_point(pair_forms(A, B, nets, nq), nq).has_value();
+}
+
+bool brute_pair_discrete(const RegionForm& A, const RegionForm& B, const PathNets& nets, size_t nq) {
+  std::vector<Aff> g = pair_forms(A, B, nets, nq);
+  for (uint32_t S = 0; S < (1u << nq); ++S)
+    for (size_t q = 0; q < nq; ++q) {
+      std::vector<Aff> h;
+      for (const Aff& f : g) {
+        Aff r{f.c, std::vector<Q>(1)};
+        for (size_t j = 0; j < nq; ++j)
+          if (j == q) r.a[0] = f.a[j];
+          else if ((S >> j) & 1) r.c = r.c + f.a[j];
+        h.push_back(r);
+      }
+      if (strict_point(h, 1)) return true;
+    }
+  return false;
+}
 
 BruteAnswer brute_discrete(const Instance& inst) {
   const size_t nq = inst.couplings().size();

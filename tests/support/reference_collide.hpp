@@ -18,6 +18,7 @@
 #include "lattice/instance.hpp"
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
+#include "solver/collide_pairs.hpp"
 
 namespace gridlock::test {
 
@@ -31,5 +32,12 @@ struct BruteAnswer {
 BruteAnswer brute_discrete(const Instance& inst);
 // Requires at most 5 couplings.
 BruteAnswer brute_continuous(const Instance& inst);
+
+// One pair of region forms (solver/collide_pairs.hpp) with the path's nets,
+// couplings numbered below nq: continuous by vertex enumeration over the
+// cube; discrete by every done set S and running coupling q, each a vertex
+// enumeration in the one variable s.
+bool brute_pair_continuous(const RegionForm& A, const RegionForm& B, const PathNets& nets, size_t nq);
+bool brute_pair_discrete(const RegionForm& A, const RegionForm& B, const PathNets& nets, size_t nq);
 
 }  // namespace gridlock::test
