@@ -1,0 +1,117 @@
+// Colliding Schedule on hand-made cases: MODEL.md's worked cases, growth
+// into an occupied cell, touching is no collision, contraction widths,
+// cycles; every applicable method, both models.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "lattice/grid_format.hpp"
+#include "solver/collide.hpp"
+#include "support/reference_collide.hpp"
+
+namespace gridlock {
+namespace {
+
+Instance parse(const std::string& text) {
+  Instance inst;
+  std::istringstream in(text);
+  auto err = read_instance(in, "test.grid", inst);
+  EXPECT_FALSE(err) << err->str();
+  return inst;
+}
+
+Instance load(const std::string& name) {
+  Instance inst;
+  auto err = read_instance_file(std::string(GRIDLOCK_SOURCE_DIR) + "/examples/instances/" + name, inst);
+  EXPECT_FALSE(err) << err->str();
+  return inst;
+}
+
+void expect_answer(const Instance& inst, TimeModel model, bool expect) {
+  bool singletons = true;
+  for (const auto& c : inst.couplings()) singletons = singletons && c.ops.size() == 1;
+  std::vector<CollideMethod> ms{CollideMethod::Auto, CollideMethod::Pairwise};
+  if (singletons) ms.push_back(CollideMethod::Tree), ms.push_back(CollideMethod::TreePairwise);
+  for (CollideMethod m : ms) {
+    CollideResult r = find_collision(inst, model, m);
+    EXPECT_EQ(r.collides, expect) << r.algorithm;
+    if (r.collides) {
+      EXPECT_TRUE(r.simulated.has_value());
+    }
+  }
+  if (inst.couplings().size() <= 5) {
+    bool b = model == TimeModel::Discrete ? test::brute_discrete(inst).collides : test::brute_continuous(inst).collides;
+    EXPECT_EQ(b, expect) << "brute force";
+  }
+}
+
+TEST(CollideCases, ModelCase1TwoGrowths) {
+  Instance inst = load("model-case1-two-growths.grid");
+  expect_answer(inst, TimeModel::Discrete, true);
+  expect_answer(inst, TimeModel::Continuous, true);
+}
+
+TEST(CollideCases, ModelCase2OrderGadget) {
+  Instance inst = load("model-case2-order-gadget.grid");
+  expect_answer(inst, TimeModel::Discrete, true);  // b then a
+  expect_answer(inst, TimeModel::Continuous, true);
+  CollideResult r = find_collision(inst, TimeModel::Discrete);
+  EXPECT_EQ(inst.couplings()[r.witness.order[0]].name, "b");
+}
+
+TEST(CollideCases, ModelCase3Block) {
+  Instance coupled = load("model-case3-block.grid");  // a and b coupled: no collision
+  expect_answer(coupled, TimeModel::Discrete, false);
+  expect_answer(coupled, TimeModel::Continuous, false);
+  EXPECT_EQ(find_collision(coupled, TimeModel::Continuous).algorithm, "single-coupling");
+  Instance single = parse(
+      "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\no a expand 0 0 +x\n");
+  CollideResult r = find_collision(single, TimeModel::Discrete);
+  EXPECT_TRUE(r.collides);
+  EXPECT_EQ(r.algorithm, "cycle");
+  EXPECT_EQ(r.simulated->kind, Collision::Kind::Cycle);
+  expect_answer(single, TimeModel::Continuous, true);
+}
+
+// (0,0) grows into (1,0), where an unjoined node sits.
+TEST(CollideCases, GrowthIntoOccupiedCell) {
+  Instance inst = parse(
+      "p grid 4 3 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\no g grow 0 0 +x\n");
+  expect_answer(inst, TimeModel::Discrete, true);
+  expect_answer(inst, TimeModel::Continuous, true);
+}
+
+// An expansion pushes (2,0) and (2,1) right along (1,1): they only slide
+// past each other's faces (touching), never overlap.
+TEST(CollideCases, SlidingAlongIsNoCollision) {
+  Instance inst = parse(
+      "p grid 5 4 1 0\nn 0 0\nn 1 0\nn 2 0\nn 1 1\nn 2 1\ne 0 0 1 0\ne 1 0 2 0\ne 1 0 1 1\ne 2 0 2 1\n"
+      "o a expand 1 0 +x\n");
+  expect_answer(inst, TimeModel::Discrete, false);
+  expect_answer(inst, TimeModel::Continuous, false);
+}
+
+// Contracting (1,0) into (0,0) pulls (2,0), (2,1) left: (2,1) runs into
+// (1,1), which hangs off (0,0) through (0,1).
+TEST(CollideCases, ContractionPullsIntoNeighbour) {
+  Instance inst = parse(
+      "p grid 6 5 1 0\nn 0 0\nn 1 0\nn 2 0\nn 2 1\nn 0 1\nn 1 1\ne 0 0 1 0\ne 1 0 2 0\ne 2 0 2 1\ne 0 0 0 1\n"
+      "e 0 1 1 1\no c contract 0 0 +x\n");
+  expect_answer(inst, TimeModel::Discrete, true);
+  expect_answer(inst, TimeModel::Continuous, true);
+}
+
+// (1,0) contracts into (2,0), emptying its cell from the left, while (0,0)
+// (unjoined to (1,0)) grows into that cell: whatever the timing, the grown
+// node's area meets the contracting node's before the cell is empty.
+TEST(CollideCases, GrowthIntoContractingCell) {
+  Instance inst = parse(
+      "p grid 6 5 2 0\nn 0 0\nn 1 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\n"
+      "e 1 0 2 0\no g grow 0 0 +x\no c contract 2 0 -x\n");
+  // g grows into (1,0) while (1,0) still occupies it (growth into an occupied cell).
+  expect_answer(inst, TimeModel::Discrete, true);
+  expect_answer(inst, TimeModel::Continuous, true);
+}
+
+}  // namespace
+}  // namespace gridlock
