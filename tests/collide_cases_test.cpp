@@ -102,8 +102,9 @@ TEST(CollideCases, ContractionPullsIntoNeighbour) {
 }
 
 // (1,0) contracts into (2,0), emptying its cell from the left, while (0,0)
-// (unjoined to (1,0)) grows into that cell: whatever the timing, the grown
-// node's area meets the contracting node's before the cell is empty.
+// (unjoined to (1,0)) grows into that cell. Contraction first empties the
+// cell (a width-0 region never collides); growth first (or both at once)
+// meets the contracting node: Colliding is YES in both models.
 TEST(CollideCases, GrowthIntoContractingCell) {
   Instance inst = parse(
       "p grid 6 5 2 0\nn 0 0\nn 1 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\n"

@@ -1,0 +1,126 @@
+// Colliding Schedule scaling (docs/performance.md, docs/collide.md).
+//
+// Families where the answer is NO, so every algorithm runs to the end (a
+// YES stops at the first colliding pair):
+//   comb: a spine of length L along x with a tooth of height H on every
+//   spine node; expansions only (they push teeth apart: teeth slide along
+//   each other, touching, never overlapping). path: H = 0, a straight row.
+//   random: seeded random trees with 3 operations (YES or NO, as drawn).
+// Couplings: expansions grouped into couplings of `c` operations each.
+//   axis: spine expansions only (+x; every net is horizontal)
+//   mixed: spine (+x) and tooth (+y) expansions (nets of many directions)
+//
+// Default runs are short; larger sizes:  --benchmark_filter=Tree/ etc. with
+// the Args below (see docs/performance.md for the commands used).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "solver/collide.hpp"
+#include "solver/collide_tree.hpp"
+
+namespace gridlock {
+namespace {
+
+Instance comb(int64_t L, int64_t H, int64_t k, bool mixed, int64_t c, uint64_t seed) {
+  InstanceBuilder b;
+  for (int64_t x = 0; x < L; ++x)
+    for (int64_t y = 0; y <= H; ++y) b.add_node({x, y});
+  for (int64_t x = 0; x < L; ++x) {
+    if (x + 1 < L) b.add_edge({x, 0}, {x + 1, 0});
+    for (int64_t y = 0; y < H; ++y) b.add_edge({x, y}, {x, y + 1});
+  }
+  uint64_t s = seed;
+  std::vector<std::string> names;
+  std::vector<char> used(static_cast<size_t>(L * (H + 1)), 0);
+  int64_t attempts = 0;
+  while (static_cast<int64_t>(names.size()) < k && ++attempts < 50 * k) {
+    bool tooth = mixed && H > 0 && draw_below(s, 2) == 0;
+    int64_t x = static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(L - 1)));
+    int64_t y = tooth ? static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(H))) : 0;
+    Vec2 u{x, y}, v = tooth ? Vec2{x, y + 1} : Vec2{x + 1, y};
+    size_t iu = static_cast<size_t>(u.x * (H + 1) + u.y), iv = static_cast<size_t>(v.x * (H + 1) + v.y);
+    if (used[iu] || used[iv]) continue;
+    used[iu] = used[iv] = 1;
+    std::string name = "e" + std::to_string(names.size());
+    b.add_op(name, OpKind::Expand, u, tooth ? Dir::PosY : Dir::PosX);
+    names.push_back(name);
+  }
+  if (c > 1)
+    for (size_t i = 0; i + 1 < names.size(); i += static_cast<size_t>(c)) {
+      std::vector<std::string> g(names.begin() + static_cast<long>(i),
+                                 names.begin() + static_cast<long>(std::min(names.size(), i + static_cast<size_t>(c))));
+      if (g.size() > 1) b.add_coupling("Q" + std::to_string(i), g);
+    }
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
+  return inst;
+}
+
+Instance family(const std::string& name, int64_t n) {
+  if (name == "path") return comb(n, 0, n / 4, false, 1, 42);
+  if (name == "comb") return comb(n / 4, 3, n / 8, false, 1, 42);
+  RandomInstanceParams p;
+  p.nodes = static_cast<uint32_t>(n);
+  p.ops = 3;
+  return random_instance(p, 42);
+}
+
+void tree_bench(benchmark::State& state, const std::string& fam, bool pairwise) {
+  Instance inst = family(fam, state.range(0));
+  Simulator sim(inst);
+  bool yes = false;
+  for (auto _ : state) {
+    auto r = pairwise ? tree_collision_pairwise(inst, sim.tree(), sim.regions())
+                      : tree_collision(inst, sim.tree(), sim.regions());
+    yes = r.has_value();
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = yes;
+}
+
+void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
+  const int64_t n = state.range(0), c = state.range(1);
+  Instance inst = mixed ? comb(n / 4, 3, n / 4, true, c, 7) : comb(n, 0, n / 4, false, c, 7);
+  bool yes = false;
+  CollideResult r;
+  for (auto _ : state) {
+    r = find_collision(inst, model, CollideMethod::Pairwise);
+    yes = r.collides;
+  }
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = yes;
+  state.counters["full_tests"] = static_cast<double>(r.stats.full_tests);
+}
+
+void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
+void BM_TreeCentroidComb(benchmark::State& s) { tree_bench(s, "comb", false); }
+void BM_TreeCentroidRandom(benchmark::State& s) { tree_bench(s, "random", false); }
+void BM_TreePairwisePath(benchmark::State& s) { tree_bench(s, "path", true); }
+void BM_TreePairwiseComb(benchmark::State& s) { tree_bench(s, "comb", true); }
+void BM_TreePairwiseRandom(benchmark::State& s) { tree_bench(s, "random", true); }
+void BM_ZonotopeAxis(benchmark::State& s) { coupled_bench(s, false, TimeModel::Continuous); }
+void BM_ZonotopeMixed(benchmark::State& s) { coupled_bench(s, true, TimeModel::Continuous); }
+void BM_SubsetSumAxis(benchmark::State& s) { coupled_bench(s, false, TimeModel::Discrete); }
+void BM_SubsetSumMixed(benchmark::State& s) { coupled_bench(s, true, TimeModel::Discrete); }
+
+#define TREE_SIZES ->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond)
+#define PAIR_SIZES ->RangeMultiplier(2)->Range(1000, 8000)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_TreeCentroidPath) TREE_SIZES;
+BENCHMARK(BM_TreeCentroidComb) TREE_SIZES;
+BENCHMARK(BM_TreeCentroidRandom) TREE_SIZES;
+BENCHMARK(BM_TreePairwisePath) PAIR_SIZES;
+BENCHMARK(BM_TreePairwiseComb) PAIR_SIZES;
+BENCHMARK(BM_TreePairwiseRandom) PAIR_SIZES;
+BENCHMARK(BM_ZonotopeAxis)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ZonotopeMixed)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SubsetSumAxis)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SubsetSumMixed)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace gridlock
+
+BENCHMARK_MAIN();
