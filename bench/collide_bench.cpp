@@ -14,6 +14,7 @@
 // the Args below (see docs/performance.md for the commands used).
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <string>
 
 #include "lattice/random_instance.hpp"
@@ -120,7 +121,36 @@ BENCHMARK(BM_ZonotopeMixed)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmar
 BENCHMARK(BM_SubsetSumAxis)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumMixed)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
 
+// GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
+// (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
+void register_large() {
+  for (int64_t n : {300000, 1000000}) {
+    benchmark::RegisterBenchmark("BM_TreeCentroidPath", BM_TreeCentroidPath)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_TreeCentroidComb", BM_TreeCentroidComb)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_TreeCentroidRandom", BM_TreeCentroidRandom)->Arg(n)->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {16000, 32000}) {
+    benchmark::RegisterBenchmark("BM_TreePairwisePath", BM_TreePairwisePath)->Arg(n)->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {2000, 4000, 8000, 16000}) {
+    benchmark::RegisterBenchmark("BM_ZonotopeAxis", BM_ZonotopeAxis)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_ZonotopeMixed", BM_ZonotopeMixed)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {800, 1600, 3200, 6400}) {
+    benchmark::RegisterBenchmark("BM_SubsetSumAxis", BM_SubsetSumAxis)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SubsetSumMixed", BM_SubsetSumMixed)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+}
+
 }  // namespace
 }  // namespace gridlock
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  const char* large = std::getenv("GRIDLOCK_BENCH_LARGE");
+  if (large && std::string(large) == "1") gridlock::register_large();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
