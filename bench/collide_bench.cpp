@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "bench_families.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
 #include "solver/collide.hpp"
@@ -25,44 +26,9 @@
 namespace gridlock {
 namespace {
 
-Instance comb(int64_t L, int64_t H, int64_t k, bool mixed, int64_t c, uint64_t seed) {
-  InstanceBuilder b;
-  for (int64_t x = 0; x < L; ++x)
-    for (int64_t y = 0; y <= H; ++y) b.add_node({x, y});
-  for (int64_t x = 0; x < L; ++x) {
-    if (x + 1 < L) b.add_edge({x, 0}, {x + 1, 0});
-    for (int64_t y = 0; y < H; ++y) b.add_edge({x, y}, {x, y + 1});
-  }
-  uint64_t s = seed;
-  std::vector<std::string> names;
-  std::vector<char> used(static_cast<size_t>(L * (H + 1)), 0);
-  int64_t attempts = 0;
-  while (static_cast<int64_t>(names.size()) < k && ++attempts < 50 * k) {
-    bool tooth = mixed && H > 0 && draw_below(s, 2) == 0;
-    int64_t x = static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(L - 1)));
-    int64_t y = tooth ? static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(H))) : 0;
-    Vec2 u{x, y}, v = tooth ? Vec2{x, y + 1} : Vec2{x + 1, y};
-    size_t iu = static_cast<size_t>(u.x * (H + 1) + u.y), iv = static_cast<size_t>(v.x * (H + 1) + v.y);
-    if (used[iu] || used[iv]) continue;
-    used[iu] = used[iv] = 1;
-    std::string name = "e" + std::to_string(names.size());
-    b.add_op(name, OpKind::Expand, u, tooth ? Dir::PosY : Dir::PosX);
-    names.push_back(name);
-  }
-  if (c > 1)
-    for (size_t i = 0; i + 1 < names.size(); i += static_cast<size_t>(c)) {
-      std::vector<std::string> g(names.begin() + static_cast<long>(i),
-                                 names.begin() + static_cast<long>(std::min(names.size(), i + static_cast<size_t>(c))));
-      if (g.size() > 1) b.add_coupling("Q" + std::to_string(i), g);
-    }
-  Instance inst;
-  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
-  return inst;
-}
-
 Instance family(const std::string& name, int64_t n) {
-  if (name == "path") return comb(n, 0, n / 4, false, 1, 42);
-  if (name == "comb") return comb(n / 4, 3, n / 8, false, 1, 42);
+  if (name == "path") return bench::comb(n, 0, n / 4, bench::CombOps::Spine, 1, 42);
+  if (name == "comb") return bench::comb(n / 4, 3, n / 8, bench::CombOps::Spine, 1, 42);
   RandomInstanceParams p;
   p.nodes = static_cast<uint32_t>(n);
   p.ops = 3;
@@ -85,7 +51,8 @@ void tree_bench(benchmark::State& state, const std::string& fam, bool pairwise) 
 
 void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
   const int64_t n = state.range(0), c = state.range(1);
-  Instance inst = mixed ? comb(n / 4, 3, n / 4, true, c, 7) : comb(n, 0, n / 4, false, c, 7);
+  Instance inst = mixed ? bench::comb(n / 4, 3, n / 4, bench::CombOps::Mixed, c, 7)
+                       : bench::comb(n, 0, n / 4, bench::CombOps::Spine, c, 7);
   bool yes = false;
   CollideResult r;
   for (auto _ : state) {

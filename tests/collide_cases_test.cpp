@@ -3,32 +3,18 @@
 // cycles; every applicable method, both models.
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 #include <algorithm>
 
-#include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "solver/collide.hpp"
+#include "support/instance_io.hpp"
 #include "support/reference_collide.hpp"
 
 namespace gridlock {
 namespace {
 
-Instance parse(const std::string& text) {
-  Instance inst;
-  std::istringstream in(text);
-  auto err = read_instance(in, "test.grid", inst);
-  EXPECT_FALSE(err) << err->str();
-  return inst;
-}
-
-Instance load(const std::string& name) {
-  Instance inst;
-  auto err = read_instance_file(std::string(GRIDLOCK_SOURCE_DIR) + "/examples/instances/" + name, inst);
-  EXPECT_FALSE(err) << err->str();
-  return inst;
-}
+Instance parse(const std::string& text) { return test::parse_instance(text); }
+Instance load(const std::string& name) { return test::load_example(name); }
 
 void expect_answer(const Instance& inst, TimeModel model, bool expect) {
   bool singletons = true;
@@ -139,43 +125,16 @@ TEST(CollideCycles, FaceWalksDecideLikeAllFundamentalCycles) {
     p.max_coupling = 1 + static_cast<uint32_t>(seed % 4);
     p.extra_edge_percent = 20 + static_cast<uint32_t>(seed % 60);
     Instance inst = random_instance(p, seed);
-    const size_t n = inst.num_nodes(), nq = inst.couplings().size();
-    // Depth-first tree; D[w][q] = net of coupling q on the path root -> w.
-    std::vector<std::vector<Vec2>> D(n, std::vector<Vec2>(nq));
-    std::vector<char> seen(n, 0), tree_edge(inst.edges().size(), 0);
-    std::vector<NodeId> stack{0};
-    seen[0] = 1;
-    while (!stack.empty()) {
-      NodeId w = stack.back();
-      stack.pop_back();
-      for (Dir d : kDirs) {
-        NodeId x = inst.neighbour(w, d);
-        if (x == kNone || seen[x]) continue;
-        seen[x] = 1;
-        uint32_t e = inst.edge_index(w, d);
-        tree_edge[e] = 1;
-        D[x] = D[w];
-        OpId k = inst.edges()[e].op;
-        if (k != kNone) {
-          Vec2 v = unit(d);
-          if (inst.ops()[k].kind == OpKind::Contract) v = Vec2{-v.x, -v.y};
-          D[x][inst.ops()[k].coupling] += v;
-        }
-        stack.push_back(x);
-      }
-    }
+    const size_t nq = inst.couplings().size();
+    test::CouplingDisplacements cd = test::coupling_displacements(inst);
     std::vector<char> breaks(nq, 0);
     for (uint32_t e = 0; e < inst.edges().size(); ++e) {
-      if (tree_edge[e]) continue;
+      if (cd.tree_edge[e]) continue;
       const Edge& ed = inst.edges()[e];
-      Dir d = *dir_between(inst.cells()[ed.a], inst.cells()[ed.b]);
+      Vec2 back = test::edge_vector(inst, e, ed.b);  // the edge walked b -> a
       for (CouplingId q = 0; q < nq; ++q) {
-        Vec2 around = D[ed.b][q] - D[ed.a][q];  // tree path a -> b, then the edge back b -> a
-        if (ed.op != kNone && inst.ops()[ed.op].coupling == q) {
-          Vec2 v = unit(d);
-          if (inst.ops()[ed.op].kind == OpKind::Contract) v = Vec2{-v.x, -v.y};
-          around -= v;
-        }
+        Vec2 around = cd.disp[ed.b][q] - cd.disp[ed.a][q];  // tree path a -> b
+        if (ed.op != kNone && inst.ops()[ed.op].coupling == q) around += back;
         if (!around.is_zero()) breaks[q] = 1;
       }
     }

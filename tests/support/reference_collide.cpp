@@ -159,6 +159,41 @@ bool brute_pair_discrete(const RegionForm& A, const RegionForm& B, const PathNet
   return false;
 }
 
+Vec2 edge_vector(const Instance& inst, uint32_t e, NodeId from) {
+  const Edge& ed = inst.edges()[e];
+  if (ed.op == kNone) return {0, 0};
+  NodeId to = ed.a == from ? ed.b : ed.a;
+  Vec2 v = unit(*dir_between(inst.cells()[from], inst.cells()[to]));
+  // The far side moves away from `from` (expansion) or toward it (contraction).
+  return inst.ops()[ed.op].kind == OpKind::Contract ? Vec2{-v.x, -v.y} : v;
+}
+
+CouplingDisplacements coupling_displacements(const Instance& inst) {
+  const size_t n = inst.num_nodes(), nq = inst.couplings().size();
+  CouplingDisplacements cd;
+  cd.disp.assign(n, std::vector<Vec2>(nq));
+  cd.tree_edge.assign(inst.edges().size(), 0);
+  std::vector<char> seen(n, 0);
+  std::vector<NodeId> stack{0};
+  seen[0] = 1;
+  while (!stack.empty()) {
+    NodeId w = stack.back();
+    stack.pop_back();
+    for (Dir d : kDirs) {
+      NodeId x = inst.neighbour(w, d);
+      if (x == kNone || seen[x]) continue;
+      seen[x] = 1;
+      uint32_t e = inst.edge_index(w, d);
+      cd.tree_edge[e] = 1;
+      cd.disp[x] = cd.disp[w];
+      OpId k = inst.edges()[e].op;
+      if (k != kNone) cd.disp[x][inst.ops()[k].coupling] += edge_vector(inst, e, w);
+      stack.push_back(x);
+    }
+  }
+  return cd;
+}
+
 BruteAnswer brute_discrete(const Instance& inst) {
   const size_t nq = inst.couplings().size();
   if (nq > 8) throw std::invalid_argument("brute_discrete: too many couplings");
@@ -183,32 +218,12 @@ BruteAnswer brute_continuous(const Instance& inst) {
   BruteAnswer ans = brute_discrete(inst);
   if (ans.collides || nq == 0) return ans;
   // (b) No order collides, so in particular no coupling breaks a cycle and
-  // positions on any spanning tree are exact. Depth-first tree from node 0.
+  // positions on any spanning tree are exact.
   const size_t n = inst.num_nodes();
+  CouplingDisplacements cd = coupling_displacements(inst);
   std::vector<Aff> DX(n, Aff{Q(0), std::vector<Q>(nq)}), DY = DX;
-  std::vector<char> seen(n, 0);
-  std::vector<NodeId> stack{0};
-  seen[0] = 1;
-  while (!stack.empty()) {
-    NodeId w = stack.back();
-    stack.pop_back();
-    for (Dir d : kDirs) {
-      NodeId x = inst.neighbour(w, d);
-      if (x == kNone || seen[x]) continue;
-      seen[x] = 1;
-      DX[x] = DX[w], DY[x] = DY[w];
-      OpId k = inst.edges()[inst.edge_index(w, d)].op;
-      if (k != kNone) {
-        // x's side moves away from w (expansion) or toward w (contraction).
-        int s = inst.ops()[k].kind == OpKind::Contract ? -1 : 1;
-        Vec2 v = unit(d);
-        CouplingId q = inst.ops()[k].coupling;
-        DX[x].a[q] = DX[x].a[q] + Q(s * v.x);
-        DY[x].a[q] = DY[x].a[q] + Q(s * v.y);
-      }
-      stack.push_back(x);
-    }
-  }
+  for (NodeId w = 0; w < n; ++w)
+    for (size_t q = 0; q < nq; ++q) DX[w].a[q] = Q(cd.disp[w][q].x), DY[w].a[q] = Q(cd.disp[w][q].y);
   // Region rectangles as four affine functions, in the solver's numbering.
   struct RectF {
     Aff f[4];  // xlo, xhi, ylo, yhi

@@ -33,6 +33,18 @@ BruteAnswer brute_discrete(const Instance& inst);
 // Requires at most 5 couplings.
 BruteAnswer brute_continuous(const Instance& inst);
 
+// Depth-first spanning tree from node 0 over the instance's own edges:
+// disp[w][q] = net vector of coupling q on the tree path 0 -> w (at full
+// progress); tree_edge[e] = 1 for the edges used.
+struct CouplingDisplacements {
+  std::vector<std::vector<Vec2>> disp;
+  std::vector<char> tree_edge;
+};
+CouplingDisplacements coupling_displacements(const Instance& inst);
+// The vector by which the far side of edge e moves relative to node `from`
+// at full progress (zero without an operation).
+Vec2 edge_vector(const Instance& inst, uint32_t e, NodeId from);
+
 // One pair of region forms (solver/collide_pairs.hpp) with the path's nets,
 // couplings numbered below nq: continuous by vertex enumeration over the
 // cube; discrete by every done set S and running coupling q, each a vertex
