@@ -9,6 +9,7 @@
 #include "solver/collide.hpp"
 #include "support/instance_io.hpp"
 #include "support/reference_collide.hpp"
+#include "support/test_scale.hpp"
 
 namespace gridlock {
 namespace {
@@ -117,8 +118,8 @@ namespace {
 // by coupling, on random shapes with many cycles.
 TEST(CollideCycles, FaceWalksDecideLikeAllFundamentalCycles) {
   int breaking = 0;
-  for (int i = 0; i < 2000; ++i) {
-    uint64_t seed = 60000 + static_cast<uint64_t>(i);
+  for (int i = 0; i < test::scaled(2000); ++i) {
+    uint64_t seed = test::base_seed(60000) + static_cast<uint64_t>(i);
     RandomInstanceParams p;
     p.nodes = 4 + static_cast<uint32_t>(seed % 30);
     p.ops = 1 + static_cast<uint32_t>(seed % 8);

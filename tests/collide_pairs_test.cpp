@@ -33,7 +33,7 @@ RegionForm random_form(uint64_t& s, size_t nq) {
 
 TEST(CollidePairs, AgainstVertexEnumeration) {
   int yes_c = 0, yes_d = 0, only_c = 0;
-  const int cases = test::scaled(20000);
+  const int cases = test::scaled(10000);
   for (int i = 0; i < cases; ++i) {
     uint64_t seed = test::base_seed(4242) + static_cast<uint64_t>(i);
     uint64_t s = seed * 104729 + 7;
