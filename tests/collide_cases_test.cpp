@@ -35,10 +35,14 @@ void expect_answer(const Instance& inst, TimeModel model, bool expect) {
   }
 }
 
+void expect_both_models(const Instance& inst, bool expect) {
+  expect_answer(inst, TimeModel::Discrete, expect);
+  expect_answer(inst, TimeModel::Continuous, expect);
+}
+
 TEST(CollideCases, ModelCase1TwoGrowths) {
   Instance inst = load("model-case1-two-growths.grid");
-  expect_answer(inst, TimeModel::Discrete, true);
-  expect_answer(inst, TimeModel::Continuous, true);
+  expect_both_models(inst, true);
 }
 
 TEST(CollideCases, ModelCase2OrderGadget) {
@@ -51,8 +55,7 @@ TEST(CollideCases, ModelCase2OrderGadget) {
 
 TEST(CollideCases, ModelCase3Block) {
   Instance coupled = load("model-case3-block.grid");  // a and b coupled: no collision
-  expect_answer(coupled, TimeModel::Discrete, false);
-  expect_answer(coupled, TimeModel::Continuous, false);
+  expect_both_models(coupled, false);
   EXPECT_EQ(find_collision(coupled, TimeModel::Continuous).algorithm, "single-coupling");
   Instance single = parse(
       "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\no a expand 0 0 +x\n");
@@ -67,8 +70,7 @@ TEST(CollideCases, ModelCase3Block) {
 TEST(CollideCases, GrowthIntoOccupiedCell) {
   Instance inst = parse(
       "p grid 4 3 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\no g grow 0 0 +x\n");
-  expect_answer(inst, TimeModel::Discrete, true);
-  expect_answer(inst, TimeModel::Continuous, true);
+  expect_both_models(inst, true);
 }
 
 // An expansion pushes (2,0) and (2,1) right along (1,1): they only slide
@@ -77,8 +79,7 @@ TEST(CollideCases, SlidingAlongIsNoCollision) {
   Instance inst = parse(
       "p grid 5 4 1 0\nn 0 0\nn 1 0\nn 2 0\nn 1 1\nn 2 1\ne 0 0 1 0\ne 1 0 2 0\ne 1 0 1 1\ne 2 0 2 1\n"
       "o a expand 1 0 +x\n");
-  expect_answer(inst, TimeModel::Discrete, false);
-  expect_answer(inst, TimeModel::Continuous, false);
+  expect_both_models(inst, false);
 }
 
 // Contracting (1,0) into (0,0) pulls (2,0), (2,1) left: (2,1) runs into
@@ -87,8 +88,7 @@ TEST(CollideCases, ContractionPullsIntoNeighbour) {
   Instance inst = parse(
       "p grid 6 5 1 0\nn 0 0\nn 1 0\nn 2 0\nn 2 1\nn 0 1\nn 1 1\ne 0 0 1 0\ne 1 0 2 0\ne 2 0 2 1\ne 0 0 0 1\n"
       "e 0 1 1 1\no c contract 0 0 +x\n");
-  expect_answer(inst, TimeModel::Discrete, true);
-  expect_answer(inst, TimeModel::Continuous, true);
+  expect_both_models(inst, true);
 }
 
 // (1,0) contracts into (2,0), emptying its cell from the left, while (0,0)
@@ -100,8 +100,7 @@ TEST(CollideCases, GrowthIntoContractingCell) {
       "p grid 6 5 2 0\nn 0 0\nn 1 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\n"
       "e 1 0 2 0\no g grow 0 0 +x\no c contract 2 0 -x\n");
   // g grows into (1,0) while (1,0) still occupies it (growth into an occupied cell).
-  expect_answer(inst, TimeModel::Discrete, true);
-  expect_answer(inst, TimeModel::Continuous, true);
+  expect_both_models(inst, true);
 }
 
 }  // namespace
