@@ -12,45 +12,17 @@
 
 #include <string>
 
+#include "bench_families.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
 
 namespace gridlock {
 namespace {
 
-Instance comb(int64_t L, int64_t H, int64_t k, bool teeth, bool one_coupling, uint64_t seed) {
-  InstanceBuilder b;
-  for (int64_t x = 0; x < L; ++x)
-    for (int64_t y = 0; y <= H; ++y) b.add_node({x, y});
-  for (int64_t x = 0; x < L; ++x) {
-    if (x + 1 < L) b.add_edge({x, 0}, {x + 1, 0});
-    for (int64_t y = 0; y < H; ++y) b.add_edge({x, y}, {x, y + 1});
-  }
-  uint64_t s = seed;
-  std::vector<std::string> names;
-  std::vector<char> used(static_cast<size_t>(L * (H + 1)), 0);
-  int64_t attempts = 0;
-  while (static_cast<int64_t>(names.size()) < k && ++attempts < 50 * k) {
-    int64_t x = static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(L - 1)));
-    int64_t y = teeth ? static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(H))) : 0;
-    Vec2 u{x, y}, v = teeth ? Vec2{x, y + 1} : Vec2{x + 1, y};
-    size_t iu = static_cast<size_t>(u.x * (H + 1) + u.y), iv = static_cast<size_t>(v.x * (H + 1) + v.y);
-    if (used[iu] || used[iv]) continue;
-    used[iu] = used[iv] = 1;
-    std::string name = "e" + std::to_string(names.size());
-    b.add_op(name, OpKind::Expand, u, teeth ? Dir::PosY : Dir::PosX);
-    names.push_back(name);
-  }
-  if (one_coupling) b.add_coupling("all", names);
-  Instance inst;
-  b.finish(inst);
-  return inst;
-}
-
 void run(benchmark::State& state, bool teeth, bool at_once) {
   const int64_t n = state.range(0), k = state.range(1);
   const int64_t H = teeth ? 9 : 3, L = n / (H + 1);
-  Instance inst = comb(L, H, k, teeth, at_once, 42);
+  Instance inst = bench::comb(L, H, k, teeth ? bench::CombOps::Teeth : bench::CombOps::Spine, at_once ? 0 : 1, 42);
   if (static_cast<int64_t>(inst.ops().size()) < k) {
     state.SkipWithError("k too large for n");
     return;

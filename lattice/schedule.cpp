@@ -98,6 +98,11 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
   std::string shown = path == "-" ? "<stdin>" : path;
   auto err = for_each_line(path, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
     last = no;
+    // The status line and "v NAME TIME" lines of `gridlock collide` (a
+    // coupling may itself be named "s" or "v": only these exact shapes).
+    if (tok[0] == "s" && tok.size() == 2 && (tok[1] == "YES" || tok[1] == "NO" || tok[1] == "UNKNOWN"))
+      return std::nullopt;
+    if (tok[0] == "v" && tok.size() == 3) tok.erase(tok.begin());
     if (tok.size() != 2) return Diagnostic{name, no, "expected 'COUPLING TIME'"};
     CouplingId q = inst.find_coupling(tok[0]);
     if (q == kNone) return Diagnostic{name, no, "unknown coupling '" + tok[0] + "'"};

@@ -7,26 +7,15 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
+#include "support/instance_io.hpp"
 #include "support/reference_simulator.hpp"
 #include "support/test_scale.hpp"
 
 namespace gridlock {
 namespace {
 
-Instance parse(const std::string& text) {
-  Instance inst;
-  std::istringstream in(text);
-  auto err = read_instance(in, "test.grid", inst);
-  EXPECT_FALSE(err) << err->str();
-  return inst;
-}
-
-Instance load(const std::string& name) {
-  Instance inst;
-  auto err = read_instance_file(std::string(GRIDLOCK_SOURCE_DIR) + "/examples/instances/" + name, inst);
-  EXPECT_FALSE(err) << err->str();
-  return inst;
-}
+Instance parse(const std::string& text) { return test::parse_instance(text); }
+Instance load(const std::string& name) { return test::load_example(name); }
 
 std::optional<Collision> run_order(const Instance& inst, const std::vector<std::string>& names) {
   std::vector<CouplingId> order;

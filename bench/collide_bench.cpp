@@ -1,0 +1,123 @@
+// Colliding Schedule scaling (docs/performance.md, docs/collide.md).
+//
+// Families where the answer is NO, so every algorithm runs to the end (a
+// YES stops at the first colliding pair):
+//   comb: a spine of length L along x with a tooth of height H on every
+//   spine node; expansions only (they push teeth apart: teeth slide along
+//   each other, touching, never overlapping). path: H = 0, a straight row.
+//   random: seeded random trees with 3 operations (YES or NO, as drawn).
+// Couplings: expansions grouped into couplings of `c` operations each.
+//   axis: spine expansions only (+x; every net is horizontal)
+//   mixed: spine (+x) and tooth (+y) expansions (nets of many directions)
+//
+// Default runs are short; larger sizes:  --benchmark_filter=Tree/ etc. with
+// the Args below (see docs/performance.md for the commands used).
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "bench_families.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "solver/collide.hpp"
+#include "solver/collide_tree.hpp"
+
+namespace gridlock {
+namespace {
+
+Instance family(const std::string& name, int64_t n) {
+  if (name == "path") return bench::comb(n, 0, n / 4, bench::CombOps::Spine, 1, 42);
+  if (name == "comb") return bench::comb(n / 4, 3, n / 8, bench::CombOps::Spine, 1, 42);
+  RandomInstanceParams p;
+  p.nodes = static_cast<uint32_t>(n);
+  p.ops = 3;
+  return random_instance(p, 42);
+}
+
+void tree_bench(benchmark::State& state, const std::string& fam, bool pairwise) {
+  Instance inst = family(fam, state.range(0));
+  Simulator sim(inst);
+  bool yes = false;
+  for (auto _ : state) {
+    auto r = pairwise ? tree_collision_pairwise(inst, sim.tree(), sim.regions())
+                      : tree_collision(inst, sim.tree(), sim.regions());
+    yes = r.has_value();
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = yes;
+}
+
+void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
+  const int64_t n = state.range(0), c = state.range(1);
+  Instance inst = mixed ? bench::comb(n / 4, 3, n / 4, bench::CombOps::Mixed, c, 7)
+                       : bench::comb(n, 0, n / 4, bench::CombOps::Spine, c, 7);
+  bool yes = false;
+  CollideResult r;
+  for (auto _ : state) {
+    r = find_collision(inst, model, CollideMethod::Pairwise);
+    yes = r.collides;
+  }
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = yes;
+  state.counters["full_tests"] = static_cast<double>(r.stats.full_tests);
+}
+
+void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
+void BM_TreeCentroidComb(benchmark::State& s) { tree_bench(s, "comb", false); }
+void BM_TreeCentroidRandom(benchmark::State& s) { tree_bench(s, "random", false); }
+void BM_TreePairwisePath(benchmark::State& s) { tree_bench(s, "path", true); }
+void BM_TreePairwiseComb(benchmark::State& s) { tree_bench(s, "comb", true); }
+void BM_TreePairwiseRandom(benchmark::State& s) { tree_bench(s, "random", true); }
+void BM_ZonotopeAxis(benchmark::State& s) { coupled_bench(s, false, TimeModel::Continuous); }
+void BM_ZonotopeMixed(benchmark::State& s) { coupled_bench(s, true, TimeModel::Continuous); }
+void BM_SubsetSumAxis(benchmark::State& s) { coupled_bench(s, false, TimeModel::Discrete); }
+void BM_SubsetSumMixed(benchmark::State& s) { coupled_bench(s, true, TimeModel::Discrete); }
+
+#define TREE_SIZES ->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond)
+#define PAIR_SIZES ->RangeMultiplier(2)->Range(1000, 8000)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_TreeCentroidPath) TREE_SIZES;
+BENCHMARK(BM_TreeCentroidComb) TREE_SIZES;
+BENCHMARK(BM_TreeCentroidRandom) TREE_SIZES;
+BENCHMARK(BM_TreePairwisePath) PAIR_SIZES;
+BENCHMARK(BM_TreePairwiseComb) PAIR_SIZES;
+BENCHMARK(BM_TreePairwiseRandom) PAIR_SIZES;
+BENCHMARK(BM_ZonotopeAxis)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ZonotopeMixed)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SubsetSumAxis)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SubsetSumMixed)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
+
+// GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
+// (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
+void register_large() {
+  for (int64_t n : {300000, 1000000}) {
+    benchmark::RegisterBenchmark("BM_TreeCentroidPath", BM_TreeCentroidPath)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_TreeCentroidComb", BM_TreeCentroidComb)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_TreeCentroidRandom", BM_TreeCentroidRandom)->Arg(n)->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {16000, 32000}) {
+    benchmark::RegisterBenchmark("BM_TreePairwisePath", BM_TreePairwisePath)->Arg(n)->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {2000, 4000, 8000, 16000}) {
+    benchmark::RegisterBenchmark("BM_ZonotopeAxis", BM_ZonotopeAxis)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_ZonotopeMixed", BM_ZonotopeMixed)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {800, 1600, 3200, 6400}) {
+    benchmark::RegisterBenchmark("BM_SubsetSumAxis", BM_SubsetSumAxis)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SubsetSumMixed", BM_SubsetSumMixed)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace
+}  // namespace gridlock
+
+int main(int argc, char** argv) {
+  const char* large = std::getenv("GRIDLOCK_BENCH_LARGE");
+  if (large && std::string(large) == "1") gridlock::register_large();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,137 @@
+#include "solver/collide.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "solver/collide_tree.hpp"
+
+namespace gridlock {
+
+namespace {
+
+// An order: `first` (in the given order, without repeats), then every other
+// coupling by id.
+std::vector<CouplingId> order_starting_with(const Instance& inst, const std::vector<CouplingId>& first) {
+  std::vector<char> used(inst.couplings().size(), 0);
+  std::vector<CouplingId> order;
+  for (CouplingId q : first)
+    if (!used[q]) used[q] = 1, order.push_back(q);
+  for (CouplingId q = 0; q < used.size(); ++q)
+    if (!used[q]) order.push_back(q);
+  return order;
+}
+
+bool all_singletons(const Instance& inst) {
+  for (const Coupling& c : inst.couplings())
+    if (c.ops.size() != 1) return false;
+  return true;
+}
+
+}  // namespace
+
+CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method) {
+  CollideResult res;
+  Simulator sim(inst);
+  const size_t nq = inst.couplings().size();
+
+  auto finish_with = [&](Schedule s) {
+    res.collides = true;
+    res.witness = std::move(s);
+    SimResult run = sim.run(res.witness);
+    if (!run.collision)
+      throw std::logic_error("collide (" + res.algorithm + "): the witness schedule does not collide in the simulator");
+    res.simulated = run.collision;
+    return res;
+  };
+
+  if (nq == 0) {
+    res.algorithm = "no-operations";
+    res.complexity = "O(1)";
+    return res;
+  }
+
+  // 1. Cycle collisions: a coupling with a non-zero net around a face walk.
+  const FaceNets& faces = sim.faces();
+  if (!faces.faces.empty()) {
+    const auto& f = faces.faces.front();
+    res.algorithm = "cycle";
+    res.complexity = "O(n + e log e)";
+    res.cycle = f.walk;
+    return finish_with(schedule_from_order(order_starting_with(inst, {f.nets.front().first})));
+  }
+
+  // 2. One coupling: one schedule in both models.
+  if (method == CollideMethod::Auto && nq == 1) {
+    res.algorithm = "single-coupling";
+    res.complexity = "one simulation";
+    Schedule s = schedule_from_order({0});
+    SimResult run = sim.run(s);
+    if (!run.collision) return res;
+    if (run.collision->kind == Collision::Kind::Node) res.region_a = run.collision->a, res.region_b = run.collision->b;
+    return finish_with(s);
+  }
+
+  // 3. No couplings: the centroid algorithm (or its all-pairs twin).
+  bool tree_ok = all_singletons(inst);
+  if ((method == CollideMethod::Tree || method == CollideMethod::TreePairwise) && !tree_ok)
+    throw std::invalid_argument("collide: the tree algorithm needs an instance without couplings");
+  if (method == CollideMethod::Tree || method == CollideMethod::TreePairwise ||
+      (method == CollideMethod::Auto && tree_ok)) {
+    std::optional<TreeCollision> tc;
+    if (method == CollideMethod::TreePairwise) {
+      res.algorithm = "tree-pairwise";
+      res.complexity = "O(n^2)";
+      tc = tree_collision_pairwise(inst, sim.tree(), sim.regions());
+    } else {
+      res.algorithm = "tree-centroid";
+      res.complexity = "O(n log^2 n)";
+      TreeStats ts;
+      tc = tree_collision(inst, sim.tree(), sim.regions(), &ts);
+      res.stats.levels = ts.levels;
+      res.stats.rectangles = ts.rectangles;
+    }
+    if (!tc) return res;
+    res.region_a = tc->a, res.region_b = tc->b;
+    if (method == CollideMethod::TreePairwise) {
+      // The twin only names the pair; the witness comes from the centroid run.
+      auto again = tree_collision(inst, sim.tree(), sim.regions());
+      if (!again) throw std::logic_error("collide: the tree twins disagree");
+      tc = again;
+    }
+    std::vector<CouplingId> first;
+    for (OpId k : tc->done) first.push_back(inst.ops()[k].coupling);
+    return finish_with(schedule_from_order(order_starting_with(inst, first)));
+  }
+
+  // 4./5. Couplings: all pairs, exact per-pair tests.
+  PairwiseStats ps;
+  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps);
+  res.stats.pairs = ps.pairs;
+  res.stats.full_tests = ps.full_tests;
+  if (model == TimeModel::Continuous) {
+    res.algorithm = "pairwise-zonotope";
+    res.complexity = "O(n^2 d^2) for d distinct coupling directions per path";
+  } else {
+    res.algorithm = "pairwise-subset-sum";
+    res.complexity = "O(n^2 c L^3) for c distinct vectors and L operations per path";
+  }
+  if (!pc) return res;
+  res.region_a = pc->a, res.region_b = pc->b;
+  if (model == TimeModel::Discrete) {
+    std::vector<CouplingId> first = pc->witness.done;
+    if (pc->witness.running != kNone) first.push_back(pc->witness.running);
+    return finish_with(schedule_from_order(order_starting_with(inst, first)));
+  }
+  // Continuous: start q at 1 - p_q so that at time 1 the progress is p; the
+  // couplings that do not move the pair start after time 1.
+  Schedule s;
+  s.start.assign(nq, Rational(0));
+  std::vector<char> set(nq, 0);
+  for (const auto& [q, p] : pc->witness.progress) s.start[q] = Rational(1) - p, set[q] = 1;
+  int64_t later = 2;
+  for (CouplingId q = 0; q < nq; ++q)
+    if (!set[q]) s.start[q] = Rational(later++);
+  return finish_with(s);
+}
+
+}  // namespace gridlock

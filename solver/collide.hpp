@@ -1,0 +1,65 @@
+// Colliding Schedule (paper, "Algorithms for Colliding Schedule"; semantics:
+// ../shared/MODEL.md): is there a schedule that causes a collision?
+//
+// find_collision picks the algorithm that fits the instance (docs/collide.md):
+//   1. a coupling with a non-zero net vector around some face walk: running
+//      it alone breaks that cycle (both models)                     O(n + e log e)
+//   2. a single coupling: both models have one schedule; simulate it
+//   3. no couplings (all singletons): centroid decomposition and a red-blue
+//      rectangle sweep over full-width squares (both models)        O(n log^2 n)
+//   4. couplings, continuous: every pair of regions against the zonotope of
+//      the coupling vectors on its path, own widths by Fourier-Motzkin
+//   5. couplings, discrete: every pair by subset sums over the path's vectors
+// Every YES comes with a schedule that the exact Simulator has run and seen
+// collide; if the simulator disagrees, find_collision throws
+// std::logic_error (a bug, never a silent wrong answer).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lattice/instance.hpp"
+#include "lattice/schedule.hpp"
+#include "lattice/simulate.hpp"
+#include "solver/collide_pairs.hpp"
+
+namespace gridlock {
+
+enum class CollideMethod {
+  Auto,          // the fastest that applies
+  Tree,          // no couplings only: centroid decomposition (3)
+  TreePairwise,  // no couplings only: the same model, all pairs (O(n^2))
+  Pairwise,      // any instance: the per-pair exact tests (4, 5)
+};
+
+struct CollideStats {
+  uint64_t pairs = 0;       // region pairs considered (pairwise methods)
+  uint64_t full_tests = 0;  // pairs that passed the quick distance filter
+  uint64_t levels = 0;      // centroid recursion depth (tree method)
+  uint64_t rectangles = 0;  // rectangles swept (tree method)
+};
+
+struct CollideResult {
+  bool collides = false;
+  // The colliding schedule (empty when !collides): for the discrete model an
+  // order (witness.order set); for the continuous model start times (an
+  // order's times 0, 1, 2, ... when the algorithm produced an order).
+  Schedule witness;
+  // What the algorithm predicted: two regions (node collision) or a face
+  // walk (cycle collision).
+  uint32_t region_a = kNone, region_b = kNone;
+  std::vector<NodeId> cycle;
+  // The simulator's first collision on the witness (it may be another pair:
+  // any collision answers the question).
+  std::optional<Collision> simulated;
+  std::string algorithm;   // "cycle", "single-coupling", "no-operations", "tree-centroid",
+                           // "tree-pairwise", "pairwise-zonotope", "pairwise-subset-sum"
+  std::string complexity;  // e.g. "O(n log^2 n)"
+  CollideStats stats;
+};
+
+CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method = CollideMethod::Auto);
+
+}  // namespace gridlock

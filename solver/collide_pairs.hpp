@@ -1,0 +1,101 @@
+// Colliding Schedule, one pair of regions at a time (docs/collide.md).
+//
+// Every region (node, inserted node, grown node; Regions in lattice/motion.hpp)
+// is written as a rectangle whose four faces are
+//     base[f] + D_ref(p)[axis f] + own_coef[f] * p_own
+// where D_ref(p) is the displacement of one node (its "ref") as a function of
+// the progress vector p (one entry per coupling), and p_own is the progress of
+// the coupling of the region's own operation (the one that changes its width).
+// This holds exactly when no coupling breaks a cycle (then displacements do
+// not depend on the path: D_v - D_u = p_q * vec over the operation edge uv).
+//
+// For a pair (A, B) the overlap is eight strict linear inequalities in p
+// (four for the open overlap, four for the positive widths), which only see
+// p through Delta = D_refB - D_refA (a sum over the couplings on the tree
+// path, one net vector per coupling) and through the own progresses.
+//  - Continuous time: every p in [0,1]^k is the configuration at some moment,
+//    so A and B can collide iff the inequalities are feasible over the cube.
+//    Delta ranges over a zonotope; we eliminate it through the support
+//    function on the normals of zonotope + rectangle and the at most two own
+//    progresses by Fourier-Motzkin. Exact integer arithmetic.
+//  - Discrete time: p = 1_S + s e_q (the set S done, q running). For each
+//    choice of the running coupling (one per distinct vector) and the states
+//    of the own couplings, a subset-sum table over the other vectors gives
+//    every reachable Delta, and a one-variable test in s settles each.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "lattice/instance.hpp"
+#include "lattice/motion.hpp"
+#include "lattice/rational.hpp"
+
+namespace gridlock {
+
+struct RegionForm {
+  NodeId ref = kNone;
+  CouplingId own = kNone;          // coupling whose progress changes a width, or kNone
+  int64_t base[4] = {0, 0, 0, 0};  // xlo, xhi, ylo, yhi at p = 0 (ref undisplaced)
+  int own_coef[4] = {0, 0, 0, 0};
+};
+
+// One form per region (same ids as Regions). Requires that no coupling breaks
+// a cycle. O(n).
+std::vector<RegionForm> region_forms(const Instance& inst, const Regions& regions);
+
+// The couplings with a non-zero net vector on the tree path ref(A) -> ref(B):
+// Delta(p) = sum p_q * net.
+using PathNets = std::vector<std::pair<CouplingId, Vec2>>;
+
+// A witness for a pair: progress per coupling in `couplings` (continuous:
+// values in [0,1], all multiples of 2^-20), or a discrete prefix (done set,
+// then `running` runs and the pair collides while it does).
+struct PairWitness {
+  std::vector<std::pair<CouplingId, Rational>> progress;  // continuous
+  std::vector<CouplingId> done;                           // discrete
+  CouplingId running = kNone;                             // discrete
+};
+
+// Quick necessary condition (O(1) given the sums of |net.x| and |net.y| over
+// the path): false means the pair can never overlap.
+bool pair_may_meet(const RegionForm& A, const RegionForm& B, int64_t reach_x, int64_t reach_y);
+
+// Continuous model: can A and B overlap for some p in [0,1]^k? With `want`,
+// also returns progress values that make them overlap.
+bool continuous_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets,
+                              PairWitness* want = nullptr);
+
+// Discrete model: can A and B overlap in some state 1_S + s e_q?
+bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets,
+                            PairWitness* want = nullptr);
+
+// True iff the eight inequalities hold at p (progress of every coupling that
+// appears in A, B or nets; the others are irrelevant). For checking witnesses.
+bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& nets,
+                      const std::vector<Rational>& p);
+
+enum class TimeModel { Continuous, Discrete };
+
+struct PairwiseStats {
+  uint64_t pairs = 0;       // region pairs considered
+  uint64_t full_tests = 0;  // pairs that passed the quick filter
+};
+
+struct PairCollision {
+  uint32_t a = kNone, b = kNone;  // regions
+  PairWitness witness;
+};
+
+// The O(n^2)-pairs method for any instance in which no coupling breaks a
+// cycle: a traversal of the spanning tree from every node keeps the net
+// vector of every coupling on the path (the paper's T(v, w), here a plain
+// array with a list of non-zero entries), and every pair of regions is tested
+// as above. Returns the first colliding pair found (with its witness).
+std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree,
+                                                const Regions& regions, TimeModel model,
+                                                PairwiseStats* stats = nullptr);
+
+}  // namespace gridlock

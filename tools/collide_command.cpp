@@ -1,0 +1,102 @@
+// gridlock collide: Colliding Schedule (is there a schedule that collides?).
+#include "lattice/simulate.hpp"
+#include "solver/collide.hpp"
+#include "tools/cli_common.hpp"
+#include "tools/command.hpp"
+#include "tools/output.hpp"
+
+namespace gridlock {
+namespace {
+
+int run_collide(const std::vector<std::string>& args) {
+  namespace po = boost::program_options;
+  po::options_description opts("options");
+  opts.add_options()
+    ("help,h", "show this help")
+    ("model", po::value<std::string>()->default_value("continuous"), "time model: continuous or discrete")
+    ("method", po::value<std::string>()->default_value("auto"),
+     "auto, tree (no couplings: centroid decomposition), tree-pairwise (no couplings: all pairs), "
+     "pairwise (any instance: exact per-pair tests)")
+    ("json", "print one JSON object instead of c/s/v lines");
+  po::options_description hidden;
+  hidden.add_options()("instance", po::value<std::string>()->required(), "instance");
+  po::positional_options_description pos;
+  pos.add("instance", 1);
+  po::variables_map vm;
+  if (!cli::parse_args(args, opts, pos, vm, "collide INSTANCE.grid [--model continuous|discrete] [--json]",
+                       "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
+                       "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
+                       "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
+                       "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
+                       "s NO (exit 20): no schedule collides.",
+                       &hidden))
+    return 0;
+  const std::string model_name = vm["model"].as<std::string>();
+  TimeModel model;
+  if (model_name == "continuous") model = TimeModel::Continuous;
+  else if (model_name == "discrete") model = TimeModel::Discrete;
+  else throw UserError("--model must be 'continuous' or 'discrete', not '" + model_name + "'");
+  const std::string method_name = vm["method"].as<std::string>();
+  CollideMethod method;
+  if (method_name == "auto") method = CollideMethod::Auto;
+  else if (method_name == "tree") method = CollideMethod::Tree;
+  else if (method_name == "tree-pairwise") method = CollideMethod::TreePairwise;
+  else if (method_name == "pairwise") method = CollideMethod::Pairwise;
+  else throw UserError("--method must be auto, tree, tree-pairwise or pairwise, not '" + method_name + "'");
+
+  const std::string path = vm["instance"].as<std::string>();
+  Instance inst = cli::load_instance(path);
+  Answer ans("collide", vm.count("json") > 0);
+  ans.comment("gridlock collide " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
+              std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
+              " couplings; " + model_name + " model");
+  CollideResult res;
+  try {
+    res = find_collision(inst, model, method);
+  } catch (const std::invalid_argument& e) {
+    throw UserError(e.what());
+  }
+  ans.comment("algorithm: " + res.algorithm + " (" + res.complexity + ")");
+  if (res.stats.pairs) ans.comment("pairs: " + std::to_string(res.stats.pairs) + " considered, " +
+                                   std::to_string(res.stats.full_tests) + " tested in full");
+  if (res.stats.levels) ans.comment("centroid levels: " + std::to_string(res.stats.levels) + ", rectangles swept: " +
+                                    std::to_string(res.stats.rectangles));
+  ans.data()["model"] = model_name;
+  ans.data()["algorithm"] = res.algorithm;
+  if (!res.collides) return ans.finish(Verdict::No);
+
+  Regions regions = Regions::build(inst);
+  if (!res.cycle.empty()) {
+    std::string walk;
+    for (size_t i = 0; i < res.cycle.size() && i < 12; ++i) walk += " " + inst.node_label(res.cycle[i]);
+    if (res.cycle.size() > 12) walk += " ...";
+    ans.comment("predicted: cycle collision around" + walk);
+  } else if (res.region_a != kNone) {
+    ans.comment("predicted: " + region_label(inst, regions, res.region_a) + " and " +
+                region_label(inst, regions, res.region_b) + " can collide");
+  }
+  const Collision& c = *res.simulated;
+  ans.comment("checked by the simulator: " + describe(inst, regions, c));
+  nlohmann::json j;
+  j["kind"] = c.kind == Collision::Kind::Node ? "node" : "cycle";
+  j["time"] = c.time.str();
+  if (c.kind == Collision::Kind::Node) j["regions"] = {region_label(inst, regions, c.a), region_label(inst, regions, c.b)};
+  ans.data()["collision"] = j;
+  if (model == TimeModel::Discrete) {
+    for (CouplingId q : res.witness.order) ans.witness(inst.couplings()[q].name);
+  } else {
+    ans.witness_one_per_line();
+    nlohmann::json times = nlohmann::json::object();
+    for (CouplingId q = 0; q < inst.couplings().size(); ++q) {
+      ans.witness(inst.couplings()[q].name + " " + res.witness.start[q].str());
+      times[inst.couplings()[q].name] = res.witness.start[q].str();
+    }
+    ans.data()["times"] = times;
+  }
+  return ans.finish(Verdict::Yes);
+}
+
+Command reg{"collide", "Colliding Schedule: find a schedule that collides, or show that none does", run_collide};
+
+}  // namespace
+}  // namespace gridlock
