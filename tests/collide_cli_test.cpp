@@ -34,6 +34,16 @@ TEST(CollideCommand, ContinuousWitnessReadBackByCheck) {
   EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
 }
 
+TEST(CollideCommand, DrawsTheCollision) {
+  std::string dir = test::temp_dir();
+  auto r = run_gridlock({"collide", kExamples + "model-case2-order-gadget.grid", "--model", "discrete", "--svg",
+                         dir + "/c.svg"});
+  ASSERT_EQ(r.exit_code, 10) << r.err;
+  std::string svg = test::read_file(dir + "/c.svg");
+  EXPECT_NE(svg.find("collision from time 0 (drawn at 1/2)"), std::string::npos);
+  EXPECT_NE(svg.find("#ff9896"), std::string::npos) << "colliding nodes are marked";
+}
+
 TEST(CollideCommand, NoAndJson) {
   auto r = run_gridlock({"collide", kExamples + "model-case3-block.grid", "--json"});
   ASSERT_EQ(r.exit_code, 20) << r.err;

@@ -73,23 +73,15 @@ int run_check(const std::vector<std::string>& args) {
     std::string moving;
     for (CouplingId q : c.moving) moving += " " + inst.couplings()[q].name;
     ans.comment("moving then:" + moving);
-    nlohmann::json j;
-    j["kind"] = c.kind == Collision::Kind::Node ? "node" : "cycle";
-    j["time"] = c.time.str();
-    if (c.kind == Collision::Kind::Node) {
-      j["regions"] = {region_label(inst, sim.regions(), c.a), region_label(inst, sim.regions(), c.b)};
-    } else {
-      for (NodeId w : c.cycle) j["cycle"].push_back(inst.node_label(w));
-    }
-    for (CouplingId q : c.moving) j["moving"].push_back(inst.couplings()[q].name);
-    ans.data()["collision"] = j;
-    draw_time = c.time;
+    ans.data()["collision"] = collision_json(inst, sim.regions(), c);
   }
-  if (vm.count("svg")) {
+  if (vm.count("svg") && res.collision) {
+    write_collision_svg(vm["svg"].as<std::string>(), inst, sched, *res.collision);
+    ans.comment("wrote " + vm["svg"].as<std::string>() + " (configuration during the collision)");
+  } else if (vm.count("svg")) {
     RenderOptions ro;
     ro.schedule = &sched;
     ro.time = draw_time;
-    if (res.collision) ro.collision = &*res.collision;
     cli::write_text_file(vm["svg"].as<std::string>(), render_svg(inst, ro));
     ans.comment("wrote " + vm["svg"].as<std::string>() + " (configuration at time " + draw_time.str() + ")");
   }

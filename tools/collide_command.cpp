@@ -17,13 +17,14 @@ int run_collide(const std::vector<std::string>& args) {
     ("method", po::value<std::string>()->default_value("auto"),
      "auto, tree (no couplings: centroid decomposition), tree-pairwise (no couplings: all pairs), "
      "pairwise (any instance: exact per-pair tests)")
+    ("svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")
     ("json", "print one JSON object instead of c/s/v lines");
   po::options_description hidden;
   hidden.add_options()("instance", po::value<std::string>()->required(), "instance");
   po::positional_options_description pos;
   pos.add("instance", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "collide INSTANCE.grid [--model continuous|discrete] [--json]",
+  if (!cli::parse_args(args, opts, pos, vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
                        "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
                        "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
                        "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
@@ -77,11 +78,11 @@ int run_collide(const std::vector<std::string>& args) {
   }
   const Collision& c = *res.simulated;
   ans.comment("checked by the simulator: " + describe(inst, regions, c));
-  nlohmann::json j;
-  j["kind"] = c.kind == Collision::Kind::Node ? "node" : "cycle";
-  j["time"] = c.time.str();
-  if (c.kind == Collision::Kind::Node) j["regions"] = {region_label(inst, regions, c.a), region_label(inst, regions, c.b)};
-  ans.data()["collision"] = j;
+  ans.data()["collision"] = collision_json(inst, regions, c);
+  if (vm.count("svg")) {
+    write_collision_svg(vm["svg"].as<std::string>(), inst, res.witness, c);
+    ans.comment("wrote " + vm["svg"].as<std::string>() + " (configuration during the collision)");
+  }
   if (model == TimeModel::Discrete) {
     for (CouplingId q : res.witness.order) ans.witness(inst.couplings()[q].name);
   } else {

@@ -2,6 +2,10 @@
 
 #include <iostream>
 
+#include "lattice/render.hpp"
+#include "lattice/simulate.hpp"
+#include "tools/cli_common.hpp"
+
 namespace gridlock {
 
 void Answer::comment(const std::string& line) {
@@ -42,6 +46,34 @@ int Answer::finish(Verdict verdict, const std::string& status_text) {
     std::cout.flush();
   }
   return exit_code(verdict);
+}
+
+nlohmann::json collision_json(const Instance& inst, const Regions& regions, const Collision& c) {
+  nlohmann::json j;
+  j["kind"] = c.kind == Collision::Kind::Node ? "node" : "cycle";
+  j["time"] = c.time.str();
+  if (c.kind == Collision::Kind::Node) {
+    j["regions"] = {region_label(inst, regions, c.a), region_label(inst, regions, c.b)};
+  } else {
+    for (NodeId w : c.cycle) j["cycle"].push_back(inst.node_label(w));
+  }
+  for (CouplingId q : c.moving) j["moving"].push_back(inst.couplings()[q].name);
+  return j;
+}
+
+void write_collision_svg(const std::string& path, const Instance& inst, const Schedule& s, const Collision& c) {
+  // The collision begins at c.time (touching); draw it half way to the next
+  // start or end of a coupling, where the overlap shows, motion still linear.
+  Rational next = c.time + Rational(1);
+  for (const Rational& t : s.start)
+    for (const Rational& e : {t, t + Rational(1)})
+      if (c.time < e && e < next) next = e;
+  RenderOptions ro;
+  ro.schedule = &s;
+  ro.time = c.time + (next - c.time) * Rational(1, 2);
+  ro.collision = &c;
+  ro.title = "collision from time " + c.time.str() + " (drawn at " + ro.time.str() + ")";
+  cli::write_text_file(path, render_svg(inst, ro));
 }
 
 }  // namespace gridlock

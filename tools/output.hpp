@@ -17,6 +17,11 @@
 
 namespace gridlock {
 
+struct Collision;
+struct Regions;
+class Instance;
+struct Schedule;
+
 enum class Verdict { Yes, No, Unknown };
 
 inline int exit_code(Verdict v) { return v == Verdict::Yes ? 10 : v == Verdict::No ? 20 : 0; }
@@ -49,5 +54,13 @@ class Answer {
   std::vector<std::string> witness_;
   nlohmann::json data_ = nlohmann::json::object();
 };
+
+// The JSON record of a collision ("kind", "time", "regions" or "cycle",
+// "moving"), shared by check and collide.
+nlohmann::json collision_json(const Instance& inst, const Regions& regions, const Collision& c);
+
+// Draws the configuration of schedule s at the collision's moment, the
+// colliding nodes marked, to an SVG file (throws UserError if unwritable).
+void write_collision_svg(const std::string& path, const Instance& inst, const Schedule& s, const Collision& c);
 
 }  // namespace gridlock
