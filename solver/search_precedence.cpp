@@ -86,24 +86,47 @@ class PrecedenceSearch {
     if (before(a, b)) return true;
     ++st_.propagations;
     // Everything up to a (and a) comes before everything from b (and b).
-    std::vector<uint64_t> up(pred(a), pred(a) + words_), down(succ(b), succ(b) + words_);
+    std::vector<uint64_t>& up = scratch_up_;
+    std::vector<uint64_t>& down = scratch_down_;
+    up.assign(pred(a), pred(a) + words_);
+    down.assign(succ(b), succ(b) + words_);
     up[a >> 6] |= uint64_t{1} << (a & 63);
     down[b >> 6] |= uint64_t{1} << (b & 63);
+    nz_up_.clear();
+    nz_down_.clear();
     for (size_t w = 0; w < words_; ++w) {
       up[w] &= undone_[w];
       down[w] &= undone_[w];
+      if (up[w]) nz_up_.push_back(static_cast<uint32_t>(w));
+      if (down[w]) nz_down_.push_back(static_cast<uint32_t>(w));
     }
-    for (size_t w = 0; w < words_; ++w)
+    // A row that already holds b (resp. a) already holds all of down (up),
+    // by transitivity: skip it.
+    for (uint32_t w : nz_up_)
       for (uint64_t bits = up[w]; bits; bits &= bits - 1) {
-        uint64_t* s = succ(static_cast<CouplingId>(w * 64 + __builtin_ctzll(bits)));
-        for (size_t x = 0; x < words_; ++x) s[x] |= down[x];
+        auto x = static_cast<CouplingId>(w * 64 + __builtin_ctzll(bits));
+        if (!before(x, b)) or_row(succ_, x, down, nz_down_);
       }
-    for (size_t w = 0; w < words_; ++w)
+    for (uint32_t w : nz_down_)
       for (uint64_t bits = down[w]; bits; bits &= bits - 1) {
-        uint64_t* p = pred(static_cast<CouplingId>(w * 64 + __builtin_ctzll(bits)));
-        for (size_t x = 0; x < words_; ++x) p[x] |= up[x];
+        auto y = static_cast<CouplingId>(w * 64 + __builtin_ctzll(bits));
+        if (!((pred_[y * words_ + (a >> 6)] >> (a & 63)) & 1)) or_row(pred_, y, up, nz_up_);
       }
     return true;
+  }
+
+  // row q of matrix m |= bits (only the words listed in nz are non-zero),
+  // remembering every changed word on the trail.
+  void or_row(std::vector<uint64_t>& m, CouplingId q, const std::vector<uint64_t>& bits,
+              const std::vector<uint32_t>& nz) {
+    uint64_t* row = m.data() + q * words_;
+    const uint64_t tag = &m == &succ_ ? 0 : uint64_t{1} << 63;
+    for (uint32_t x : nz) {
+      uint64_t nv = row[x] | bits[x];
+      if (nv == row[x]) continue;
+      if (open_decisions_ > 0) trail_.push_back({tag | (q * words_ + x), row[x]});
+      row[x] = nv;
+    }
   }
 
   void perform(CouplingId q) {
@@ -182,18 +205,19 @@ class PrecedenceSearch {
   }
 
   struct Snapshot {
-    std::vector<uint64_t> succ, pred;
-    size_t path;
+    size_t trail, path;
   };
-  void save(Snapshot& s) {
-    s.succ = succ_;
-    s.pred = pred_;
+  void save(Snapshot& s) const {
+    s.trail = trail_.size();
     s.path = path_.size();
   }
   void restore(const Snapshot& s) {
     while (path_.size() > s.path) unperform();
-    succ_ = s.succ;
-    pred_ = s.pred;
+    while (trail_.size() > s.trail) {
+      auto [key, old] = trail_.back();
+      trail_.pop_back();
+      ((key >> 63) ? pred_ : succ_)[key & ~(uint64_t{1} << 63)] = old;
+    }
   }
 
   // A branching: the orderings to try, one per branch.
@@ -201,10 +225,28 @@ class PrecedenceSearch {
     std::vector<std::pair<CouplingId, CouplingId>> edges;  // each: first before second
   };
 
+  // How much performing w now would tighten the live gaps it narrows:
+  // a gap left with no slack weighs most (like a clause left with one
+  // literal). Guides the choice of branch only, never its outcome.
+  uint64_t harm(CouplingId w) const {
+    uint64_t h = 0;
+    for (auto [c, j] : sys_.of_coupling[w]) {
+      int64_t coef = sys_.constraints[c].coef_of(j)[0];
+      if (coef <= 0 || !live(c)) continue;
+      int64_t slack = -(val_[c] + coef);
+      h += slack <= 0 ? 16 : slack == 1 ? 4 : 1;
+    }
+    return h;
+  }
+
   bool choose_branch(Branch& br) {
     // Requirements: a narrower t of a live gap that needs more widening
-    // than the wideners known to precede it give. Fewest options first.
+    // than the wideners known to precede it give. Fewest options first,
+    // then the most tightly constrained options; the least harmful first.
     size_t best = SIZE_MAX;
+    uint64_t best_score = 0;
+    std::vector<CouplingId> opts;
+    std::vector<std::pair<uint64_t, CouplingId>> scored;
     for (size_t c = 0; c < terms_.size(); ++c) {
       if (!live(c)) continue;
       for (const Term& t : terms_[c]) {
@@ -212,17 +254,28 @@ class PrecedenceSearch {
         int64_t n = need(c, t.q, t.coef);
         if (n <= 0) continue;
         int64_t have = 0;
-        std::vector<CouplingId> opts;
+        opts.clear();
         for (const Term& w : terms_[c]) {
           if (w.coef >= 0 || !undone(w.q) || before(t.q, w.q)) continue;
           if (before(w.q, t.q)) have -= w.coef;
           else opts.push_back(w.q);
         }
-        if (have >= n || opts.size() >= best) continue;
+        if (have >= n || opts.size() > best) continue;
+        uint64_t prod = 1, sum = 0;
+        scored.clear();
+        for (CouplingId w : opts) {
+          uint64_t h = harm(w);
+          scored.push_back({h, w});
+          prod *= h + 1;
+          sum += h;
+        }
+        uint64_t score = prod * 64 + sum;
+        if (opts.size() == best && score <= best_score) continue;
         best = opts.size();
+        best_score = score;
+        std::stable_sort(scored.begin(), scored.end());
         br.edges.clear();
-        for (CouplingId w : opts) br.edges.push_back({w, t.q});
-        if (best <= 2) return true;
+        for (auto [h, w] : scored) br.edges.push_back({w, t.q});
       }
     }
     if (!br.edges.empty()) return true;
@@ -245,12 +298,16 @@ class PrecedenceSearch {
         return false;
       }
       if (path_.size() == k_) return true;
-      CouplingId move = kNone;
-      for (CouplingId q = 0; q < k_ && move == kNone; ++q)
-        if (undone(q) && !has_undone_pred(q) && runnable(q) && unsafe_widener(q) == kNone) move = q;
-      if (move == kNone) break;
-      ++st_.safe_moves;
-      perform(move);
+      // Every safe coupling, in one sweep (each is re-checked at the state
+      // the previous ones left).
+      bool moved = false;
+      for (CouplingId q = 0; q < k_; ++q)
+        if (undone(q) && !has_undone_pred(q) && runnable(q) && unsafe_widener(q) == kNone) {
+          ++st_.safe_moves;
+          perform(q);
+          moved = true;
+        }
+      if (!moved) break;
     }
     Branch br;
     if (!choose_branch(br)) {
@@ -261,10 +318,12 @@ class PrecedenceSearch {
     ++st_.decisions;
     Snapshot snap;
     save(snap);
+    ++open_decisions_;
     for (auto [a, b] : br.edges) {
       if (add_before(a, b) && node()) return true;
       restore(snap);
     }
+    --open_decisions_;
     ++st_.refuted;
     return false;
   }
@@ -277,6 +336,10 @@ class PrecedenceSearch {
   std::vector<std::vector<Term>> terms_;
   std::vector<uint64_t> undone_, succ_, pred_;
   std::vector<CouplingId> path_;
+  std::vector<std::pair<uint64_t, uint64_t>> trail_;
+  std::vector<uint64_t> scratch_up_, scratch_down_;
+  std::vector<uint32_t> nz_up_, nz_down_;
+  size_t open_decisions_ = 0;  // no trail is needed below the first decision  // (matrix tag | word index, old value)
 };
 
 }  // namespace
