@@ -98,6 +98,11 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
   std::string shown = path == "-" ? "<stdin>" : path;
   auto err = for_each_line(path, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
     last = no;
+    // The output of `gridlock gaps` reads back: its "s" line is skipped and
+    // the "v" in front of each "v NAME TIME" line dropped.
+    if (tok[0] == "s") return std::nullopt;
+    if (tok[0] == "v") tok.erase(tok.begin());
+    if (tok.empty()) return std::nullopt;
     if (tok.size() != 2) return Diagnostic{name, no, "expected 'COUPLING TIME'"};
     CouplingId q = inst.find_coupling(tok[0]);
     if (q == kNone) return Diagnostic{name, no, "unknown coupling '" + tok[0] + "'"};

@@ -36,7 +36,8 @@ MaybeError parse_order(const Instance& inst, const std::vector<std::string>& nam
 // "v" is dropped, so the output of `gridlock solve` can be read back.
 MaybeError read_order_file(const Instance& inst, const std::string& path, std::vector<CouplingId>& order);
 // Reads start times: one line "NAME TIME" per coupling, TIME an integer or
-// a fraction a/b; comments as above. Checks the bounds above.
+// a fraction a/b; comments as above, and "v NAME TIME" lines (the output of
+// `gridlock gaps`) work too. Checks the bounds above.
 MaybeError read_times_file(const Instance& inst, const std::string& path, Schedule& out);
 // Checks the bounds of kMaxStartTime / kMaxDenominator for a schedule built
 // in code; returns a message or nullopt.

@@ -32,7 +32,7 @@ int Answer::finish(Verdict verdict, const std::string& status_text) {
     // solvers do, so that a long schedule stays readable.
     std::string line = "v";
     for (const auto& w : witness_) {
-      if (line.size() + 1 + w.size() > 78 && line.size() > 1) {
+      if ((one_per_line_ || line.size() + 1 + w.size() > 78) && line.size() > 1) {
         std::cout << line << '\n';
         line = "v";
       }

@@ -30,6 +30,9 @@ class Answer {
   void comment(const std::string& line);
   // A "v" line: one witness item (e.g. a coupling name, a literal).
   void witness(const std::string& item);
+  // Print each witness item on its own "v" line instead of packing them
+  // (for items with spaces, like "NAME TIME").
+  void one_witness_per_line() { one_per_line_ = true; }
   // Extra structured data for --json (ignored in text mode).
   nlohmann::json& data() { return data_; }
   bool json() const { return json_mode_; }
@@ -41,6 +44,7 @@ class Answer {
  private:
   std::string command_;
   bool json_mode_;
+  bool one_per_line_ = false;
   std::vector<std::string> comments_;
   std::vector<std::string> witness_;
   nlohmann::json data_ = nlohmann::json::object();
