@@ -17,13 +17,6 @@
 namespace gridlock {
 namespace {
 
-Formula make(int n, std::vector<std::vector<int>> clauses) {
-  Formula f;
-  f.num_vars = n;
-  f.clauses = std::move(clauses);
-  return f;
-}
-
 std::string first_message(const Formula& f, LsatForm form) {
   LsatReport r = check_lsat(f, form, 5);
   return r.ok ? "OK" : r.violations.front().message;
@@ -32,45 +25,45 @@ std::string first_message(const Formula& f, LsatForm form) {
 TEST(Lsat, PaperStyleFormulaIsLsat) {
   // examples/formulas/lsat-sat.cnf: clauses 1 and 2 share literal 3; the
   // others meet only through negations, which do not count.
-  Formula f = make(6, {{1, 2, 3}, {3, 4, 5}, {-1, -4, 6}, {-2, -5, -6}});
+  Formula f = test::make_formula(6, {{1, 2, 3}, {3, 4, 5}, {-1, -4, 6}, {-2, -5, -6}});
   EXPECT_TRUE(is_lsat(f, LsatForm::Exact3));
   EXPECT_TRUE(is_lsat(f, LsatForm::AtMost3));
 }
 
 TEST(Lsat, LiteralsNotVariables) {
   // Every variable in all three clauses, but no literal twice: no intersection.
-  Formula f = make(3, {{1, 2, 3}, {-1, -2, -3}, {-1, 2, -3}});
+  Formula f = test::make_formula(3, {{1, 2, 3}, {-1, -2, -3}, {-1, 2, -3}});
   EXPECT_FALSE(is_lsat(f, LsatForm::Exact3));  // -1 and -3 shared by clauses 2 and 3
   EXPECT_EQ(first_message(f, LsatForm::Exact3), "clauses 2 (-1 -2 -3) and 3 (-1 2 -3) share 2 literals (-3 -1), not exactly 1");
-  EXPECT_TRUE(is_lsat(make(3, {{1, 2, 3}, {-1, -2, -3}}), LsatForm::Exact3));
+  EXPECT_TRUE(is_lsat(test::make_formula(3, {{1, 2, 3}, {-1, -2, -3}}), LsatForm::Exact3));
 }
 
 TEST(Lsat, EachRuleWithItsMessage) {
   // Length.
-  EXPECT_EQ(first_message(make(5, {{1, 2, 3}, {4, 5}}), LsatForm::Exact3), "clause 2 (4 5) has 2 literals, not 3");
-  EXPECT_EQ(first_message(make(3, {{1, 2}}), LsatForm::AtMost3), "OK");
-  EXPECT_EQ(first_message(make(4, {{1, 2, 3, 4}}), LsatForm::AtMost3), "clause 1 (1 2 3 4) has 4 literals, not 1 to 3");
-  EXPECT_EQ(first_message(make(1, {{}}), LsatForm::AtMost3), "clause 1 () has 0 literals, not 1 to 3");
-  EXPECT_EQ(first_message(make(8, {{1, 2, 3, 4, 5, 6, 7, 8}}), LsatForm::Exact3),
+  EXPECT_EQ(first_message(test::make_formula(5, {{1, 2, 3}, {4, 5}}), LsatForm::Exact3), "clause 2 (4 5) has 2 literals, not 3");
+  EXPECT_EQ(first_message(test::make_formula(3, {{1, 2}}), LsatForm::AtMost3), "OK");
+  EXPECT_EQ(first_message(test::make_formula(4, {{1, 2, 3, 4}}), LsatForm::AtMost3), "clause 1 (1 2 3 4) has 4 literals, not 1 to 3");
+  EXPECT_EQ(first_message(test::make_formula(1, {{}}), LsatForm::AtMost3), "clause 1 () has 0 literals, not 1 to 3");
+  EXPECT_EQ(first_message(test::make_formula(8, {{1, 2, 3, 4, 5, 6, 7, 8}}), LsatForm::Exact3),
             "clause 1 (1 2 3 4 5 6 ... 8 literals) has 8 literals, not 3");
   // Repeated literal.
-  EXPECT_EQ(first_message(make(2, {{1, 1, 2}}), LsatForm::Exact3), "clause 1 (1 1 2) repeats literal 1");
-  EXPECT_EQ(first_message(make(2, {{-2, 1, -2}}), LsatForm::AtMost3), "clause 1 (-2 1 -2) repeats literal -2");
+  EXPECT_EQ(first_message(test::make_formula(2, {{1, 1, 2}}), LsatForm::Exact3), "clause 1 (1 1 2) repeats literal 1");
+  EXPECT_EQ(first_message(test::make_formula(2, {{-2, 1, -2}}), LsatForm::AtMost3), "clause 1 (-2 1 -2) repeats literal -2");
   // Two clauses sharing two literals.
-  EXPECT_EQ(first_message(make(4, {{1, 2, 3}, {4, 2, 1}}), LsatForm::Exact3),
+  EXPECT_EQ(first_message(test::make_formula(4, {{1, 2, 3}, {4, 2, 1}}), LsatForm::Exact3),
             "clauses 1 (1 2 3) and 2 (4 2 1) share 2 literals (1 2), not exactly 1");
-  EXPECT_EQ(first_message(make(2, {{1, 2}, {2, 1}}), LsatForm::AtMost3),
+  EXPECT_EQ(first_message(test::make_formula(2, {{1, 2}, {2, 1}}), LsatForm::AtMost3),
             "clauses 1 (1 2) and 2 (2 1) share 2 literals (1 2), not exactly 1");
   // A clause meeting two others.
-  EXPECT_EQ(first_message(make(7, {{1, 2, 3}, {1, 4, 5}, {2, 6, 7}}), LsatForm::Exact3),
+  EXPECT_EQ(first_message(test::make_formula(7, {{1, 2, 3}, {1, 4, 5}, {2, 6, 7}}), LsatForm::Exact3),
             "clause 1 (1 2 3) intersects clauses 2 (in literal 1) and 3 (in literal 2), not at most one");
   // A literal three times: the first clause meets the two others.
-  EXPECT_EQ(first_message(make(7, {{-1, 2, 3}, {4, -1, 5}, {6, 7, -1}}), LsatForm::AtMost3),
+  EXPECT_EQ(first_message(test::make_formula(7, {{-1, 2, 3}, {4, -1, 5}, {6, 7, -1}}), LsatForm::AtMost3),
             "clause 1 (-1 2 3) intersects clauses 2 (in literal -1) and 3 (in literal -1), not at most one");
 }
 
 TEST(Lsat, ViolationsInClauseOrderAndRules) {
-  Formula f = make(9, {{1, 2, 3}, {4, 5}, {6, 6, 7}, {1, 8, -9}, {1, 2, 9}});
+  Formula f = test::make_formula(9, {{1, 2, 3}, {4, 5}, {6, 6, 7}, {1, 8, -9}, {1, 2, 9}});
   LsatReport r = check_lsat(f, LsatForm::Exact3, 10);
   ASSERT_FALSE(r.ok);
   std::vector<std::string> got;
@@ -92,18 +85,18 @@ TEST(Lsat, ViolationsInClauseOrderAndRules) {
 }
 
 TEST(Lsat, TautologiesAllowedAndListed) {
-  Formula f = make(4, {{1, -1, 2}, {3, 4, -4}});
+  Formula f = test::make_formula(4, {{1, -1, 2}, {3, 4, -4}});
   LsatReport r = check_lsat(f, LsatForm::Exact3, 3);
   EXPECT_TRUE(r.ok);
   EXPECT_EQ(r.tautologies, (std::vector<size_t>{0, 1}));
 }
 
 TEST(Lsat, MemoryIndependentOfDeclaredVariables) {
-  Formula f = make(INT_MAX, {{INT_MAX, -INT_MAX + 1, 5}, {INT_MAX, 6, 7}});
+  Formula f = test::make_formula(INT_MAX, {{INT_MAX, -INT_MAX + 1, 5}, {INT_MAX, 6, 7}});
   EXPECT_TRUE(is_lsat(f, LsatForm::Exact3));
   // The matching works on the variables that occur; only the answer has one
   // bit per declared variable (found by the fuzzer: "p cnf 666666666 0").
-  Formula g = make(100000000, {{100000000, -5, 6}, {100000000, 7, 8}});
+  Formula g = test::make_formula(100000000, {{100000000, -5, 6}, {100000000, 7, 8}});
   auto a = hall_assignment(g);
   ASSERT_TRUE(a);
   EXPECT_EQ(a->size(), 100000001u);
@@ -172,11 +165,11 @@ TEST(Lsat, AgreesWithNaiveDefinitionOnRandomFormulas) {
 }
 
 TEST(Lsat, HallAssignmentFailsWhenNoDistinctRepresentatives) {
-  EXPECT_FALSE(hall_assignment(make(1, {{1}, {-1}})));
-  EXPECT_FALSE(hall_assignment(make(1, {{}})));
-  auto a = hall_assignment(make(2, {{1, 2}, {-1}}));
+  EXPECT_FALSE(hall_assignment(test::make_formula(1, {{1}, {-1}})));
+  EXPECT_FALSE(hall_assignment(test::make_formula(1, {{}})));
+  auto a = hall_assignment(test::make_formula(2, {{1, 2}, {-1}}));
   ASSERT_TRUE(a);
-  EXPECT_TRUE(satisfies(make(2, {{1, 2}, {-1}}), *a));
+  EXPECT_TRUE(satisfies(test::make_formula(2, {{1, 2}, {-1}}), *a));
 }
 
 // Theorem (docs/formulas.md): every exactly-3 LSAT formula is satisfiable,

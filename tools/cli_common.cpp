@@ -3,10 +3,19 @@
 #include <fstream>
 #include <iostream>
 
+#include "cnf/dimacs.hpp"
 #include "common/diagnostic.hpp"
 #include "lattice/grid_format.hpp"
 
 namespace gridlock::cli {
+
+Formula load_formula(const std::string& path, bool strict_count) {
+  Formula f;
+  DimacsOptions opt;
+  opt.strict_count = strict_count;
+  if (auto err = read_dimacs_file(path, f, opt)) throw UserError(*err);
+  return f;
+}
 
 Instance load_instance(const std::string& path) {
   Instance inst;

@@ -7,11 +7,15 @@
 
 #include <boost/program_options.hpp>
 
+#include "cnf/formula.hpp"
 #include "lattice/instance.hpp"
 
 namespace gridlock::cli {
 
 namespace po = boost::program_options;
+
+// Reads a DIMACS file ("-" = stdin) or throws UserError("FILE:LINE: ...").
+Formula load_formula(const std::string& path, bool strict_count = true);
 
 // Reads a .grid file ("-" = stdin) or throws UserError("FILE:LINE: ...").
 Instance load_instance(const std::string& path);

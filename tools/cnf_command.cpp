@@ -62,13 +62,7 @@ std::string command_line(const std::string& sub, const std::vector<std::string>&
   return s;
 }
 
-Formula load(const std::string& path, bool strict) {
-  Formula f;
-  DimacsOptions opt;
-  opt.strict_count = strict;
-  if (auto err = read_dimacs_file(path, f, opt)) throw UserError(*err);
-  return f;
-}
+Formula load(const std::string& path, bool strict) { return cli::load_formula(path, strict); }
 
 std::string clause_lengths(const Formula& f) {
   if (f.clauses.empty()) return "no clauses";

@@ -5,6 +5,13 @@
 
 namespace gridlock::test {
 
+Formula make_formula(int n, std::vector<std::vector<int>> clauses) {
+  Formula f;
+  f.num_vars = n;
+  f.clauses = std::move(clauses);
+  return f;
+}
+
 std::vector<SatlibFile> satlib_files() {
   std::vector<SatlibFile> files;
   const std::string root = GRIDLOCK_SHARED_DIR "/benchmarks/satlib";

@@ -18,6 +18,9 @@ struct SatlibFile {
 // All files of the three SATLIB folders, sorted by path (300 when complete).
 std::vector<SatlibFile> satlib_files();
 
+// A formula with n variables and these clauses (no comments).
+Formula make_formula(int n, std::vector<std::vector<int>> clauses);
+
 // A random CNF formula with n variables and m clauses whose lengths are
 // uniform in [min_len, max_len]. Literals are drawn independently, so with
 // `messy` clauses may repeat literals, hold a literal and its negation, or

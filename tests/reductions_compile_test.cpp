@@ -1,0 +1,241 @@
+// The gadget compiler: sizes, coupling bounds, non-interference of gadgets,
+// certificates both ways, and the answer of the reduction on every small
+// formula of a sweep.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "cnf/brute_force.hpp"
+#include "cnf/dimacs.hpp"
+#include "cnf/sat_solver.hpp"
+#include "cnf/generate.hpp"
+#include "cnf/lsat.hpp"
+#include "lattice/simulate.hpp"
+#include "reductions/compile.hpp"
+#include "reductions/to_lsat.hpp"
+#include "solver/gaps.hpp"
+#include "support/cnf_testing.hpp"
+#include "support/contract_search.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+bool order_collides(const CompiledFormula& c, const std::vector<CouplingId>& order) {
+  Simulator sim(c.instance);
+  return sim.run_order(order).collision.has_value();
+}
+
+TEST(Compile, SizesFollowTheFormulas) {
+  Rng rng(test::base_seed(11));
+  for (int t = 0; t < test::scaled(200); ++t) {
+    int n = static_cast<int>(rng.between(1, 12)), m = static_cast<int>(rng.between(0, 15));
+    Formula f = test::random_cnf(rng, n, m, 1, 3, false);
+    CompiledFormula c = compile_formula(f);
+    const auto L = static_cast<int64_t>(num_literals(f));
+    SCOPED_TRACE(to_dimacs(f));
+    EXPECT_EQ(c.stats.nodes, static_cast<size_t>(43 * n + 5 * L + 15 * m - 11));
+    EXPECT_EQ(c.stats.edges, c.stats.nodes - 1);  // a tree
+    EXPECT_EQ(c.stats.ops, static_cast<size_t>(8 * n + L + 3 * m - 2));
+    EXPECT_EQ(c.stats.couplings, static_cast<size_t>(4 * n + m));
+    EXPECT_EQ(c.stats.rows, static_cast<size_t>(11 * n + 6 * m - 4));
+    EXPECT_TRUE(c.instance.horizontal_only());
+  }
+}
+
+TEST(Compile, EmptyFormulasAndEmptyClauses) {
+  CompiledFormula c = compile_formula(test::make_formula(0, {}));
+  EXPECT_EQ(c.instance.num_nodes(), 1u);
+  EXPECT_EQ(c.instance.couplings().size(), 0u);
+  EXPECT_THROW(compile_formula(test::make_formula(2, {{1, 2}, {}})), std::invalid_argument);
+  try {
+    compile_formula(test::make_formula(2, {{1, 2}, {}}));
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "clause 2 is empty; the reduction needs at least one literal per clause");
+  }
+}
+
+TEST(Compile, CouplingsOfLsatInputHaveAtMostThreeOperations) {
+  for (uint64_t seed = 1; seed <= static_cast<uint64_t>(test::scaled(100)); ++seed) {
+    LsatParams p;
+    p.n = 12;
+    p.min_len = 1;
+    p.max_len = 3;
+    p.m = lsat_max_clauses(p.n, 1) / 2;
+    p.seed = test::base_seed(0) + seed;
+    Formula f = random_lsat(p);
+    ASSERT_TRUE(is_lsat(f, LsatForm::AtMost3));
+    CompiledFormula c = compile_formula(f);
+    EXPECT_LE(c.stats.max_coupling, 3u) << "seed " << p.seed;
+    EXPECT_TRUE(c.stats.oversize.empty());
+  }
+  // A literal occurring three times breaks the bound, and is named.
+  CompiledFormula c = compile_formula(test::make_formula(2, {{1, 2}, {1, -2}, {1}}));
+  EXPECT_EQ(c.stats.max_coupling, 4u);
+  ASSERT_EQ(c.stats.oversize.size(), 1u);
+  EXPECT_EQ(c.stats.oversize[0], "literal x1 occurs 3 times: coupling x1:F has 4 operations");
+}
+
+// Non-interference: on random orders of compiled small formulas, the
+// simulator collides exactly when some gadget's contract is broken.
+TEST(Compile, GadgetsDoNotInterfere) {
+  const uint64_t seed = test::base_seed(2024);
+  Rng rng(seed);
+  std::mt19937_64 shuffle(seed);
+  int colliding = 0, total = 0;
+  for (int t = 0; t < test::scaled(300); ++t) {
+    int n = static_cast<int>(rng.between(1, 4)), m = static_cast<int>(rng.between(1, 5));
+    Formula f = test::random_cnf(rng, n, m, 1, 3, true);
+    bool empty = false;
+    for (auto& cl : f.clauses) empty = empty || cl.empty();
+    if (empty) continue;
+    CompiledFormula c = compile_formula(f);
+    std::vector<CouplingId> order(c.instance.couplings().size());
+    for (CouplingId q = 0; q < order.size(); ++q) order[q] = q;
+    for (int r = 0; r < 10; ++r) {
+      std::shuffle(order.begin(), order.end(), shuffle);
+      bool got = order_collides(c, order), want = test::order_breaks_contracts(c, order);
+      ASSERT_EQ(got, want) << "seed " << seed << " formula\n" << to_dimacs(f);
+      colliding += got;
+      ++total;
+    }
+  }
+  EXPECT_GT(colliding, 0);
+  EXPECT_LT(colliding, total);
+}
+
+// Certificates: every assignment's schedule is collision-free iff the
+// assignment satisfies the formula, and lifting it back gives the assignment.
+TEST(Compile, AssignmentScheduleCertificates) {
+  const uint64_t seed = test::base_seed(7);
+  Rng rng(seed);
+  for (int t = 0; t < test::scaled(150); ++t) {
+    int n = static_cast<int>(rng.between(1, 5)), m = static_cast<int>(rng.between(1, 8));
+    Formula f = test::random_cnf(rng, n, m, 1, 3, false);
+    CompiledFormula c = compile_formula(f);
+    for (uint32_t mask = 0; mask < (1u << n); ++mask) {
+      std::vector<bool> value(static_cast<size_t>(n) + 1);
+      for (int v = 1; v <= n; ++v) value[static_cast<size_t>(v)] = mask >> (v - 1) & 1;
+      auto order = schedule_from_assignment(c, value);
+      ASSERT_EQ(order_collides(c, order), !satisfies(f, value)) << "seed " << seed << "\n" << to_dimacs(f);
+      EXPECT_EQ(assignment_from_schedule(c, order), value);
+    }
+  }
+}
+
+// The reduction's answer on every clause set over 3 variables with at most
+// 3 clauses (2952 formulas), and on seeded random 4-clause ones: a
+// collision-free schedule exists (contract-level search, whose agreement with
+// the simulator the tests above establish) iff the formula is satisfiable,
+// and every schedule found lifts to a satisfying assignment.
+TEST(Compile, SmallFormulaSweep) {
+  std::vector<std::vector<int>> clauses;  // the 26 non-empty, non-tautological clauses over 3 variables
+  for (int mask = 1; mask < 27; ++mask) {
+    std::vector<int> cl;
+    for (int v = 1, x = mask; v <= 3; ++v, x /= 3)
+      if (x % 3) cl.push_back(x % 3 == 1 ? v : -v);
+    clauses.push_back(cl);
+  }
+  ASSERT_EQ(clauses.size(), 26u);
+  std::vector<Formula> sweep;
+  for (size_t a = 0; a < 26; ++a) {
+    sweep.push_back(test::make_formula(3, {clauses[a]}));
+    for (size_t b = a + 1; b < 26; ++b) {
+      sweep.push_back(test::make_formula(3, {clauses[a], clauses[b]}));
+      for (size_t d = b + 1; d < 26; ++d) sweep.push_back(test::make_formula(3, {clauses[a], clauses[b], clauses[d]}));
+    }
+  }
+  Rng rng(test::base_seed(4));
+  for (int t = 0; t < test::scaled(1500); ++t) {
+    Formula f = test::make_formula(3, {});
+    for (int i = 0; i < 4; ++i) f.clauses.push_back(clauses[rng.below(26)]);
+    sweep.push_back(f);
+  }
+  int sat = 0, unsat = 0;
+  for (const Formula& f : sweep) {
+    CompiledFormula c = compile_formula(f);
+    std::vector<CouplingId> witness;
+    bool yes = test::contract_schedule_exists(c, &witness);
+    bool is_sat = exhaustive_sat(f).status == SatResult::Sat;
+    ASSERT_EQ(yes, is_sat) << to_dimacs(f);
+    if (yes) {
+      ++sat;
+      ASSERT_FALSE(order_collides(c, witness)) << to_dimacs(f);
+      EXPECT_TRUE(satisfies(f, assignment_from_schedule(c, witness))) << to_dimacs(f);
+    } else {
+      ++unsat;
+    }
+  }
+  EXPECT_GT(unsat, 100);
+  EXPECT_GT(sat, 1000);
+}
+
+// The continuous model always says YES on a compiled instance (the paper's
+// point: continuous time is easy), whatever the formula.
+TEST(Compile, ContinuousAlwaysCollisionFree) {
+  Rng rng(test::base_seed(5));
+  for (int t = 0; t < test::scaled(100); ++t) {
+    Formula f = test::random_cnf(rng, static_cast<int>(rng.between(1, 8)), static_cast<int>(rng.between(1, 30)), 1, 3,
+                                 false);
+    CompiledFormula c = compile_formula(f);
+    EXPECT_TRUE(check_gaps(c.instance).collision_free);
+    Schedule s;
+    s.start.assign(c.instance.couplings().size(), Rational(0));
+    EXPECT_FALSE(Simulator(c.instance).run(s).collision.has_value());
+  }
+}
+
+// Every mutation of a gadget changes the reduction's answer on some small
+// formula: the end-to-end comparison (contract search vs SAT) catches it,
+// and on the lattice itself the simulator confirms the wrong answer.
+TEST(Compile, EveryMutationIsCaughtEndToEnd) {
+  std::vector<Formula> probes = {
+      test::make_formula(1, {{1}, {-1}}),                        // UNSAT
+      test::make_formula(2, {{1, 2}, {1, -2}, {-1, 2}, {-1, -2}}),  // UNSAT
+      test::make_formula(2, {{1, 2}, {-1}, {-2, 1}}),            // UNSAT
+      test::make_formula(3, {{1, 2, 3}, {-1}, {-2}}),            // SAT, first clause has one true literal
+      test::make_formula(2, {{1, 2}}),                           // SAT
+  };
+  for (Mutation m : all_mutations()) {
+    SCOPED_TRACE(mutation_name(m));
+    bool caught = false;
+    for (const Formula& f : probes) {
+      CompiledFormula c = compile_formula(f, m);
+      std::vector<CouplingId> witness;
+      bool yes = test::contract_schedule_exists(c, &witness);
+      bool is_sat = exhaustive_sat(f).status == SatResult::Sat;
+      if (yes == is_sat) continue;
+      caught = true;
+      // The simulator agrees with the broken contracts: the wrong answer is real.
+      if (yes) {
+        EXPECT_FALSE(order_collides(c, witness));
+      }
+    }
+    EXPECT_TRUE(caught);
+  }
+}
+
+TEST(Compile, SatlibThroughToLsatLiftsToCollisionFreeSchedules) {
+  auto files = test::satlib_files();
+  int checked = 0;
+  for (const auto& file : files) {
+    if (!file.sat || file.path.find("uf20-") == std::string::npos) continue;
+    if (checked >= test::scaled(100)) break;
+    Formula f;
+    ASSERT_FALSE(read_dimacs_file(file.path, f));
+    LsatReduction red = reduce_to_lsat(f);
+    CompiledFormula c = compile_formula(red.output());
+    EXPECT_LE(c.stats.max_coupling, 3u);
+    SatResult r = solve_sat(f);
+    ASSERT_EQ(r.status, SatResult::Sat);
+    auto order = schedule_from_assignment(c, red.lift_to_target(r.model));
+    ASSERT_FALSE(order_collides(c, order)) << file.path;
+    auto back = red.lift_to_source(assignment_from_schedule(c, order));
+    EXPECT_TRUE(satisfies(f, back)) << file.path;
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+}
+
+}  // namespace
+}  // namespace gridlock

@@ -1,0 +1,82 @@
+// gridlock gadget: one gadget of the reduction, alone, as an instance whose
+// comments state its contract (gadgets/, docs/gadgets.md). Each operation is
+// its own coupling, so `gridlock check --order` can try any order of them.
+#include <sstream>
+
+#include "gadgets/canvas.hpp"
+#include "gadgets/clause_gadget.hpp"
+#include "gadgets/order_gadget.hpp"
+#include "gadgets/variable_gadget.hpp"
+#include "lattice/grid_format.hpp"
+#include "lattice/render.hpp"
+#include "tools/cli_common.hpp"
+#include "tools/command.hpp"
+
+namespace gridlock {
+namespace {
+
+int run_gadget(const std::vector<std::string>& args) {
+  namespace po = boost::program_options;
+  po::options_description opts("options");
+  opts.add_options()
+    ("help,h", "show this help")
+    ("literals,k", po::value<int>()->default_value(3), "clause gadget: literals in the clause (1 to 16)")
+    ("output,o", po::value<std::string>()->default_value("-"), "write the instance (.grid) here ('-': standard output)")
+    ("svg", po::value<std::string>(), "also draw it to this SVG file")
+    ("break-gadget", po::value<std::string>()->default_value("none"),
+     "draw a deliberately broken version (variable-loose-y, clause-loose, clause-tight, order-loose, "
+     "order-drop-release)");
+  po::options_description hidden;
+  hidden.add_options()("kind", po::value<std::string>()->required(), "kind");
+  po::positional_options_description pos;
+  pos.add("kind", 1);
+  po::variables_map vm;
+  if (!cli::parse_args(args, opts, pos, vm, "gadget variable|clause|order [-k K] [-o OUT.grid] [--svg OUT.svg]",
+                       "Draws one gadget of the reduction alone, with its contract (the states of its operations\n"
+                       "that collide) in 'c' lines. Every operation is its own coupling.",
+                       &hidden))
+    return 0;
+  const std::string kind = vm["kind"].as<std::string>();
+  auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
+  if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
+  Canvas canvas;
+  GadgetPlacement p;
+  std::string words, title;
+  if (kind == "variable") {
+    p = place_variable_gadget(canvas, 0, {"T", "F", "y", "z"}, *mutation);
+    words = "variable gadget: collides iff T and F are both done before z, or y is done before T and F";
+    title = "variable gadget";
+  } else if (kind == "clause") {
+    const int k = vm["literals"].as<int>();
+    if (k < 1 || k > 16) throw UserError("--literals must be 1 to 16");
+    std::vector<std::string> lits;
+    for (int i = 1; i <= k; ++i) lits.push_back("l" + std::to_string(i));
+    p = place_clause_gadget(canvas, 0, lits, "u", *mutation);
+    words = "clause gadget: collides iff all " + std::to_string(k) + " literal operations are done before u";
+    title = "clause gadget, " + std::to_string(k) + (k == 1 ? " literal" : " literals");
+  } else if (kind == "order") {
+    p = place_order_gadget(canvas, 0, "a", "b", *mutation);
+    words = "order gadget a < b: collides iff b is done before a";
+    title = "order gadget a < b";
+  } else {
+    throw UserError("unknown gadget '" + kind + "' (variable, clause or order)");
+  }
+  Instance inst = canvas.build();
+  std::vector<std::string> comments = {words, "contract: " + p.contract.str()};
+  if (*mutation != Mutation::None)
+    comments.push_back("BROKEN GADGET (" + std::string(mutation_name(*mutation)) + "): the contract above is the broken one");
+  std::ostringstream grid;
+  write_instance(grid, inst, comments);
+  cli::write_text_file(vm["output"].as<std::string>(), grid.str());
+  if (vm.count("svg")) {
+    RenderOptions ro;
+    ro.title = title;
+    cli::write_text_file(vm["svg"].as<std::string>(), render_svg(inst, ro));
+  }
+  return 0;
+}
+
+Command reg{"gadget", "draw one gadget of the reduction alone, with its contract", run_gadget};
+
+}  // namespace
+}  // namespace gridlock
