@@ -49,6 +49,8 @@ class PrecedenceSearch {
     succ_.assign(k_ * words_, 0);
     pred_.assign(k_ * words_, 0);
     pos_rem_.assign(nc, 0);
+    dirty_.assign(nc, 1);
+    for (size_t c = 0; c < nc; ++c) dirty_list_.push_back(static_cast<uint32_t>(nc - 1 - c));
     for (size_t c = 0; c < nc; ++c)
       for (auto& t : terms_[c]) pos_rem_[c] += std::max<int64_t>(t.coef, 0);
   }
@@ -121,13 +123,25 @@ class PrecedenceSearch {
               const std::vector<uint32_t>& nz) {
     uint64_t* row = m.data() + q * words_;
     const uint64_t tag = &m == &succ_ ? 0 : uint64_t{1} << 63;
+    bool changed = false;
     for (uint32_t x : nz) {
       uint64_t nv = row[x] | bits[x];
       if (nv == row[x]) continue;
       if (open_decisions_ > 0) trail_.push_back({tag | (q * words_ + x), row[x]});
       row[x] = nv;
+      changed = true;
+    }
+    // Propagation reads only "before" (succ rows), done flags and values.
+    if (changed && tag == 0) mark(q);
+  }
+
+  // The gaps of q must be looked at again by propagate().
+  void mark(CouplingId q) {
+    for (auto [c, j] : sys_.of_coupling[q]) {
+      if (!dirty_[c]) dirty_[c] = 1, dirty_list_.push_back(static_cast<uint32_t>(c));
     }
   }
+
 
   void perform(CouplingId q) {
     for (auto [c, j] : sys_.of_coupling[q]) {
@@ -137,6 +151,7 @@ class PrecedenceSearch {
     }
     undone_[q >> 6] &= ~(uint64_t{1} << (q & 63));
     path_.push_back(q);
+    mark(q);
   }
   void unperform() {
     CouplingId q = path_.back();
@@ -157,26 +172,27 @@ class PrecedenceSearch {
     return n;
   }
 
-  // Derives relations to a fixpoint. False on a dead end.
+  // Derives relations to a fixpoint. False on a dead end. Only the gaps
+  // marked since the last fixpoint are looked at (a gap's conclusions change
+  // only when its value, its couplings' done flags or their relations do);
+  // a dead end may leave marks behind, which only costs a second look.
   bool propagate() {
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (size_t c = 0; c < terms_.size(); ++c) {
-        if (!live(c)) continue;
-        for (const Term& t : terms_[c]) {
-          if (t.coef <= 0 || !undone(t.q)) continue;
-          int64_t n = need(c, t.q, t.coef);
-          if (n <= 0) continue;
-          int64_t avail = 0;
-          for (const Term& w : terms_[c])
-            if (w.coef < 0 && undone(w.q) && !before(t.q, w.q)) avail -= w.coef;
-          if (avail < n) return false;
-          for (const Term& w : terms_[c])
-            if (w.coef < 0 && undone(w.q) && !before(t.q, w.q) && avail + w.coef < n && !before(w.q, t.q)) {
-              if (!add_before(w.q, t.q)) return false;
-              changed = true;
-            }
-        }
+    while (!dirty_list_.empty()) {
+      const uint32_t c = dirty_list_.back();
+      dirty_list_.pop_back();
+      dirty_[c] = 0;
+      if (!live(c)) continue;
+      for (const Term& t : terms_[c]) {
+        if (t.coef <= 0 || !undone(t.q)) continue;
+        int64_t n = need(c, t.q, t.coef);
+        if (n <= 0) continue;
+        int64_t avail = 0;
+        for (const Term& w : terms_[c])
+          if (w.coef < 0 && undone(w.q) && !before(t.q, w.q)) avail -= w.coef;
+        if (avail < n) return false;
+        for (const Term& w : terms_[c])
+          if (w.coef < 0 && undone(w.q) && !before(t.q, w.q) && avail + w.coef < n && !before(w.q, t.q))
+            if (!add_before(w.q, t.q)) return false;
       }
     }
     return true;
@@ -302,7 +318,7 @@ class PrecedenceSearch {
       // the previous ones left).
       bool moved = false;
       for (CouplingId q = 0; q < k_; ++q)
-        if (undone(q) && !has_undone_pred(q) && runnable(q) && unsafe_widener(q) == kNone) {
+        if (undone(q) && runnable(q) && unsafe_widener(q) == kNone && !has_undone_pred(q)) {
           ++st_.safe_moves;
           perform(q);
           moved = true;
@@ -336,10 +352,12 @@ class PrecedenceSearch {
   std::vector<std::vector<Term>> terms_;
   std::vector<uint64_t> undone_, succ_, pred_;
   std::vector<CouplingId> path_;
-  std::vector<std::pair<uint64_t, uint64_t>> trail_;
+  std::vector<std::pair<uint64_t, uint64_t>> trail_;  // (matrix tag | word index, old value)
   std::vector<uint64_t> scratch_up_, scratch_down_;
   std::vector<uint32_t> nz_up_, nz_down_;
-  size_t open_decisions_ = 0;  // no trail is needed below the first decision  // (matrix tag | word index, old value)
+  size_t open_decisions_ = 0;  // no trail is needed below the first decision
+  std::vector<char> dirty_;    // per gap: in dirty_list_, to be propagated
+  std::vector<uint32_t> dirty_list_;
 };
 
 }  // namespace
