@@ -37,19 +37,15 @@ class StateSearch {
       for (size_t j = 0; j < cc.rel.size(); ++j)
         for (uint32_t i = 0; i < cc.num_forms; ++i) pos_rem_[offset_[c] + i] += std::max<int64_t>(cc.coef_of(j)[i], 0);
     }
-    // Per (coupling, its constraint): does it only lower / only raise the forms?
+    // Per (coupling, its constraint): does it only lower the forms?
     lowers_.resize(k_);
-    raises_.resize(k_);
     for (CouplingId q = 0; q < k_; ++q) {
       for (auto [c, j] : sys.of_coupling[q]) {
         const CollisionConstraint& cc = sys.constraints[c];
-        bool lo = true, hi = true;
-        for (uint32_t i = 0; i < cc.num_forms; ++i) {
+        bool lo = true;
+        for (uint32_t i = 0; i < cc.num_forms; ++i)
           if (cc.coef_of(j)[i] > 0) lo = false;
-          if (cc.coef_of(j)[i] < 0) hi = false;
-        }
         lowers_[q].push_back(lo);
-        raises_[q].push_back(hi);
       }
     }
   }
@@ -161,35 +157,32 @@ class StateSearch {
     std::vector<CouplingId> undone;
     for (CouplingId q = 0; q < k_; ++q)
       if (!is_done(q)) undone.push_back(q);
-    // Safe move: no branching.
-    for (CouplingId q : undone) {
+    // A safe move is the only move tried; otherwise the enabled couplings
+    // of the stubborn set with the fewest of them (a few seeds tried).
+    std::vector<CouplingId> moves;
+    for (CouplingId q : undone)
       if (safe(q) && enabled(q)) {
         ++st_.safe_moves;
         ++st_.propagations;
-        apply(q, +1);
-        bool ok = dfs();
-        if (ok) return true;
-        apply(q, -1);
-        refute(std::move(key));
-        return false;
+        moves = {q};
+        break;
       }
+    if (moves.empty()) {
+      std::vector<char> in(k_, 0);
+      std::vector<CouplingId> members;
+      bool have = false;
+      size_t tried = 0;
+      for (CouplingId seed : undone) {
+        if (tried++ >= 24) break;
+        std::vector<CouplingId> en = stubborn(seed, in, members);
+        if (!have || en.size() < moves.size()) moves = std::move(en), have = true;
+        if (moves.size() <= 1) break;
+      }
+      if (moves.size() > 1) ++st_.decisions;
     }
-    // Stubborn set with the fewest enabled couplings (a few seeds tried).
-    std::vector<char> in(k_, 0);
-    std::vector<CouplingId> members, best;
-    bool have = false;
-    size_t tried = 0;
-    for (CouplingId seed : undone) {
-      if (tried++ >= 24) break;
-      std::vector<CouplingId> en = stubborn(seed, in, members);
-      if (!have || en.size() < best.size()) best = std::move(en), have = true;
-      if (best.size() <= 1) break;
-    }
-    if (best.size() > 1) ++st_.decisions;
-    for (CouplingId q : best) {
+    for (CouplingId q : moves) {
       apply(q, +1);
-      bool ok = dfs();
-      if (ok) return true;
+      if (dfs()) return true;
       apply(q, -1);
     }
     refute(std::move(key));
@@ -209,7 +202,7 @@ class StateSearch {
   uint64_t hash_ = 0;
   std::vector<uint32_t> offset_;
   std::vector<int64_t> cur_, pos_rem_;
-  std::vector<std::vector<char>> lowers_, raises_;
+  std::vector<std::vector<char>> lowers_;
   std::vector<CouplingId> path_;
   std::unordered_set<StateKey, StateKeyHash> memo_;
 };
