@@ -98,7 +98,8 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
   std::string shown = path == "-" ? "<stdin>" : path;
   auto err = for_each_line(path, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
     last = no;
-    // The status line and "v NAME TIME" lines of `gridlock collide` (a
+    // The status line and "v NAME TIME" lines of `gridlock collide` and
+    // `gridlock gaps` (a
     // coupling may itself be named "s" or "v": only these exact shapes).
     if (tok[0] == "s" && tok.size() == 2 && (tok[1] == "YES" || tok[1] == "NO" || tok[1] == "UNKNOWN"))
       return std::nullopt;

@@ -37,8 +37,8 @@ MaybeError parse_order(const Instance& inst, const std::vector<std::string>& nam
 MaybeError read_order_file(const Instance& inst, const std::string& path, std::vector<CouplingId>& order);
 // Reads start times: one line "NAME TIME" per coupling, TIME an integer or
 // a fraction a/b; comments as above (an "s" line is skipped and a leading
-// "v" dropped, so `gridlock collide` output can be read back). Checks the
-// bounds above.
+// "v" dropped, so the output of `gridlock collide` and `gridlock gaps` can be
+// read back). Checks the bounds above.
 MaybeError read_times_file(const Instance& inst, const std::string& path, Schedule& out);
 // Checks the bounds of kMaxStartTime / kMaxDenominator for a schedule built
 // in code; returns a message or nullopt.

@@ -39,20 +39,43 @@ GapVerdict check_gaps(const Instance& inst) {
   const size_t n = inst.num_nodes();
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
-  const SpanningTree tree = SpanningTree::build(inst);
-
-  // Final displacement of every node (x only: nothing moves vertically).
+  // Final displacement of every node (x only: nothing moves vertically), by
+  // a breadth-first search from the anchor (the same tree SpanningTree
+  // builds, without its Euler tour: this is the hot loop of the checker).
+  const auto& edges = inst.edges();
   std::vector<int64_t> D(n, 0);
-  for (NodeId w : tree.order) {
-    if (w == tree.root) continue;
-    D[w] = D[tree.parent[w]] + op_child_vector(inst, tree, w).x;
+  std::vector<NodeId> parent(n, kNone);
+  std::vector<char> tree_edge(edges.size(), 0);
+  {
+    std::vector<NodeId> queue;
+    queue.reserve(n);
+    const NodeId root = inst.anchor();
+    queue.push_back(root);
+    parent[root] = root;
+    for (size_t head = 0; head < queue.size(); ++head) {
+      NodeId w = queue[head];
+      for (Dir d : kDirs) {
+        NodeId x = inst.neighbour(w, d);
+        if (x == kNone || parent[x] != kNone) continue;
+        uint32_t e = inst.edge_index(w, d);
+        tree_edge[e] = 1;
+        parent[x] = w;
+        int64_t step = 0;
+        if (OpId k = edges[e].op; k != kNone) {
+          step = unit(d).x;  // x moves away from w by one unit along d ...
+          if (ops[k].kind == OpKind::Contract) step = -step;  // ... or toward it
+        }
+        D[x] = D[w] + step;
+        queue.push_back(x);
+      }
+    }
+    parent[root] = kNone;
   }
 
   // Cycles: each non-tree edge closes one fundamental cycle; with everything
   // running at once its mismatch grows linearly, so only the end matters.
-  const auto& edges = inst.edges();
   for (uint32_t e = 0; e < edges.size(); ++e) {
-    if (tree.tree_edge[e]) continue;
+    if (tree_edge[e]) continue;
     ++v.cycles_checked;
     const Edge& ed = edges[e];
     int64_t expected = 0;  // displacement of b relative to a that the edge itself makes
@@ -69,14 +92,17 @@ GapVerdict check_gaps(const Instance& inst) {
     v.reason = GapVerdict::Reason::Cycle;
     v.mismatch = mis;
     // The tree path from a to b, then the edge back to a.
-    std::vector<uint32_t> depth(n, 0);
-    for (NodeId w : tree.order)
-      if (w != tree.root) depth[w] = depth[tree.parent[w]] + 1;
+    auto depth = [&](NodeId w) {
+      uint32_t dep = 0;
+      for (; parent[w] != kNone; w = parent[w]) ++dep;
+      return dep;
+    };
     std::vector<NodeId> up_a, up_b;
     NodeId x = ed.a, y = ed.b;
+    uint32_t dx = depth(x), dy = depth(y);
     while (x != y) {
-      if (depth[x] >= depth[y]) up_a.push_back(x), x = tree.parent[x];
-      else up_b.push_back(y), y = tree.parent[y];
+      if (dx >= dy) up_a.push_back(x), x = parent[x], --dx;
+      else up_b.push_back(y), y = parent[y], --dy;
     }
     v.cycle = up_a;
     v.cycle.push_back(x);
@@ -107,6 +133,7 @@ GapVerdict check_gaps(const Instance& inst) {
 
   if (v.reason == GapVerdict::Reason::Gap) {
     // The operations that change the reported gap: O(n), once.
+    const SpanningTree tree = SpanningTree::build(inst);
     const OpTree ot(inst, tree);
     // Each operation appears once on the path, and a growth is never on it.
     ot.for_each_op_on_path(face_ref(inst, v.left, true), face_ref(inst, v.right, false), [&](OpId k, int sign) {

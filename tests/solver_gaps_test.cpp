@@ -1,0 +1,158 @@
+// The linear-time continuous checker against the Simulator running every
+// coupling at once; the row order against a comparison sort; the collision
+// constraints against the Simulator on random orders.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "solver/constraints.hpp"
+#include "solver/gaps.hpp"
+#include "solver/row_order.hpp"
+#include "support/reference_solver.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+RandomInstanceParams horizontal_params(uint64_t seed) {
+  uint64_t s = seed * 0x9E3779B97F4A7C15ULL + 7;
+  RandomInstanceParams p;
+  p.horizontal_only = true;
+  p.nodes = 2 + static_cast<uint32_t>(draw_below(s, 40));
+  p.ops = static_cast<uint32_t>(draw_below(s, p.nodes + 1));
+  p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 4));
+  p.extra_edge_percent = draw_below(s, 2) ? static_cast<uint32_t>(draw_below(s, 60)) : 0;
+  p.allow_grow = draw_below(s, 4) != 0;
+  p.allow_contract = draw_below(s, 4) != 0;
+  p.path_shape = draw_below(s, 5) == 0;
+  p.spread = static_cast<uint32_t>(draw_below(s, 3));
+  return p;
+}
+
+TEST(Gaps, AgreesWithAllAtOnceSimulation) {
+  const uint64_t base = test::base_seed(7000);
+  const int count = test::scaled(4000);
+  int yes = 0, no_gap = 0, no_cycle = 0;
+  for (int i = 0; i < count; ++i) {
+    uint64_t seed = base + static_cast<uint64_t>(i);
+    Instance inst = random_instance(horizontal_params(seed), seed);
+    ASSERT_TRUE(inst.horizontal_only());
+    GapVerdict v = check_gaps(inst);
+    bool sim_ok = test::reference_all_at_once(inst);
+    ASSERT_EQ(v.collision_free, sim_ok) << "seed " << seed << ": " << describe_gap_verdict(inst, v);
+    if (v.collision_free) {
+      ++yes;
+      continue;
+    }
+    if (v.reason == GapVerdict::Reason::Gap) {
+      ++no_gap;
+      // The reported gap: consecutive nodes of one row, negative at the end,
+      // and the changes add up.
+      const auto& cells = inst.cells();
+      EXPECT_EQ(cells[v.left].y, v.row);
+      EXPECT_EQ(cells[v.right].y, v.row);
+      EXPECT_EQ(v.initial_size, cells[v.right].x - cells[v.left].x - 1);
+      EXPECT_LT(v.final_size, 0);
+      int64_t sum = v.initial_size;
+      for (const GapChange& c : v.changes) sum += c.delta;
+      EXPECT_EQ(sum, v.final_size) << "seed " << seed << ": " << describe_gap_verdict(inst, v);
+    } else {
+      ++no_cycle;
+      EXPECT_NE(v.mismatch, 0);
+      EXPECT_GE(v.cycle.size(), 4u);
+    }
+  }
+  EXPECT_GT(yes, 0);
+  EXPECT_GT(no_gap, 0);
+  EXPECT_GT(no_cycle, 0);
+  std::printf("[ gaps ] %d instances: %d YES, %d NO by a gap, %d NO by a cycle (seed %llu)\n", count, yes, no_gap,
+              no_cycle, static_cast<unsigned long long>(base));
+}
+
+TEST(Gaps, RejectsVerticalInstances) {
+  RandomInstanceParams p;
+  p.nodes = 10;
+  p.ops = 5;
+  for (uint64_t seed = 1; seed < 100; ++seed) {
+    Instance inst = random_instance(p, seed);
+    if (inst.horizontal_only()) continue;
+    EXPECT_THROW(check_gaps(inst), std::invalid_argument);
+    return;
+  }
+  FAIL() << "no vertical instance drawn";
+}
+
+TEST(RowOrder, MatchesComparisonSort) {
+  const uint64_t base = test::base_seed(8000);
+  for (int i = 0; i < test::scaled(300); ++i) {
+    RandomInstanceParams p;
+    p.nodes = 1 + static_cast<uint32_t>(i % 200);
+    p.spread = static_cast<uint32_t>(i % 4);
+    Instance inst = random_instance(p, base + static_cast<uint64_t>(i));
+    std::vector<NodeId> got = nodes_by_row(inst);
+    std::vector<NodeId> want(inst.num_nodes());
+    std::iota(want.begin(), want.end(), 0);
+    const auto& c = inst.cells();
+    std::sort(want.begin(), want.end(), [&](NodeId a, NodeId b) {
+      return c[a].y != c[b].y ? c[a].y < c[b].y : c[a].x < c[b].x;
+    });
+    ASSERT_EQ(got, want) << "seed " << base + static_cast<uint64_t>(i);
+    size_t total = 0;
+    for (const RowRun& r : row_runs(inst, got)) {
+      ASSERT_LT(r.begin, r.end);
+      for (uint32_t j = r.begin; j < r.end; ++j) EXPECT_EQ(c[got[j]].y, c[got[r.begin]].y);
+      total += r.end - r.begin;
+    }
+    EXPECT_EQ(total, inst.num_nodes());
+  }
+}
+
+// The constraint systems (gap and pair) replay random orders exactly as the
+// Simulator does: same verdict, and the failing step is the simulator's.
+TEST(Constraints, ReplayAgreesWithSimulator) {
+  const uint64_t base = test::base_seed(9000);
+  int collide = 0, clean = 0;
+  for (int i = 0; i < test::scaled(3000); ++i) {
+    uint64_t seed = base + static_cast<uint64_t>(i);
+    uint64_t s = seed * 31 + 5;
+    RandomInstanceParams p;
+    p.nodes = 3 + static_cast<uint32_t>(draw_below(s, 30));
+    p.ops = 1 + static_cast<uint32_t>(draw_below(s, 12));
+    p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 3));
+    p.extra_edge_percent = draw_below(s, 3) == 0 ? 30 : 0;
+    p.horizontal_only = draw_below(s, 2) == 0;
+    p.spread = static_cast<uint32_t>(draw_below(s, 3));
+    Instance inst = random_instance(p, seed);
+    FaceNets faces = FaceNets::build(inst);
+    if (std::any_of(faces.coupling_breaks_cycle.begin(), faces.coupling_breaks_cycle.end(), [](char b) { return b; }))
+      continue;  // the systems do not model cycle collisions (the solver checks them first)
+    SpanningTree tree = SpanningTree::build(inst);
+    std::vector<ConstraintSystem> systems;
+    systems.push_back(build_pair_constraints(inst, tree));
+    if (inst.horizontal_only()) systems.push_back(build_gap_constraints(inst, tree));
+    std::vector<CouplingId> order(inst.couplings().size());
+    std::iota(order.begin(), order.end(), 0);
+    for (size_t j = order.size(); j > 1; --j) std::swap(order[j - 1], order[draw_below(s, j)]);
+    Simulator sim(inst);
+    SimResult r = sim.run_order(order);
+    for (const ConstraintSystem& sys : systems) {
+      ReplayResult rr = replay_order(sys, order);
+      ASSERT_EQ(rr.failed_step < order.size(), r.collision.has_value())
+          << "seed " << seed << (sys.kind == ConstraintKind::Gaps ? " gaps" : " pairs");
+      if (r.collision) {
+        // The simulator reports the first collision; step i runs over [i, i+1].
+        EXPECT_EQ(Rational(static_cast<int64_t>(rr.failed_step)) <= r.collision->time, true) << "seed " << seed;
+        EXPECT_LT(r.collision->time, Rational(static_cast<int64_t>(rr.failed_step) + 1)) << "seed " << seed;
+      }
+    }
+    (r.collision ? collide : clean) += 1;
+  }
+  EXPECT_GT(collide, 0);
+  EXPECT_GT(clean, 0);
+}
+
+}  // namespace
+}  // namespace gridlock
