@@ -1,0 +1,75 @@
+#include "solver/solve.hpp"
+
+#include <stdexcept>
+
+#include "lattice/motion.hpp"
+#include "lattice/simulate.hpp"
+#include "solver/constraints.hpp"
+#include "solver/search.hpp"
+
+namespace gridlock {
+
+const char* solve_status_name(SolveResult::Status s) {
+  switch (s) {
+    case SolveResult::Status::Yes: return "YES";
+    case SolveResult::Status::No: return "NO";
+    case SolveResult::Status::Unknown: return "UNKNOWN";
+  }
+  return "?";
+}
+
+SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
+  SearchBudget budget(opt);
+  SolveResult res;
+  const bool horizontal = inst.horizontal_only();
+  if (opt.engine == SolveOptions::Engine::Precedence && !horizontal)
+    throw std::invalid_argument("the precedence search needs a horizontal-only instance");
+
+  // A coupling that breaks a cycle collides whenever it runs.
+  const FaceNets faces = FaceNets::build(inst);
+  for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+    if (faces.coupling_breaks_cycle[q]) {
+      res.status = SolveResult::Status::No;
+      res.cycle_breaker = q;
+      res.stats.engine = "cycle";
+      res.stats.seconds = budget.elapsed();
+      return res;
+    }
+
+  const SpanningTree tree = SpanningTree::build(inst);
+  const ConstraintSystem sys = horizontal ? build_gap_constraints(inst, tree) : build_pair_constraints(inst, tree);
+  res.stats.constraints = sys.constraints.size();
+  const bool precedence = opt.engine == SolveOptions::Engine::Precedence ||
+                          (opt.engine == SolveOptions::Engine::Auto && horizontal);
+  res.stats.engine = precedence ? "precedence" : "states";
+  try {
+    SearchOutcome out = precedence ? search_precedence(sys, budget, res.stats) : search_states(sys, budget, res.stats);
+    res.status = out.status;
+    res.order = std::move(out.order);
+  } catch (const SearchBudget::LimitReached&) {
+    res.status = SolveResult::Status::Unknown;
+    res.order.clear();
+  }
+
+  if (res.status == SolveResult::Status::Yes) {
+    // Never a silent wrong answer: the order must be a permutation that the
+    // constraint system and the exact simulator both accept.
+    std::vector<char> seen(inst.couplings().size(), 0);
+    if (res.order.size() != seen.size()) throw std::logic_error("solver returned an incomplete order");
+    for (CouplingId q : res.order) {
+      if (q >= seen.size() || seen[q]) throw std::logic_error("solver returned an order that is not a permutation");
+      seen[q] = 1;
+    }
+    if (replay_order(sys, res.order).failed_step != res.order.size())
+      throw std::logic_error("solver returned an order its own constraints reject");
+    Simulator sim(inst);
+    SimResult check = sim.run_order(res.order);
+    if (check.collision)
+      throw std::logic_error("solver returned an order that collides in the simulator: " +
+                             describe(inst, sim.regions(), *check.collision));
+  }
+  res.stats.seconds = budget.elapsed();
+  return res;
+}
+
+}  // namespace gridlock

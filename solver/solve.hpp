@@ -1,0 +1,81 @@
+// The exact solver of Discrete Collision-free Schedule (MODEL.md, "Couplings
+// and schedules"): is there an order of all couplings, run one at a time,
+// that performs every operation with no collision?
+//
+// Any instance: all four directions, expansions, contractions, growths,
+// cycles, couplings of any size. The problem is NP-complete (paper,
+// Theorem "Discrete Collision-free Schedule is NP-complete"), so the search is
+// exponential in the worst case; docs/solver.md explains the pruning rules,
+// why each keeps the answer exact, and measured figures.
+//
+// Pipeline:
+//  1. a coupling whose operations sum to a non-zero vector around some face
+//     (FaceNets::coupling_breaks_cycle) collides whenever it runs: NO at once;
+//  2. the collision constraints (solver/constraints.hpp): gap constraints for
+//     horizontal-only instances, pair constraints otherwise;
+//  3. one of two exact searches over "the set of couplings done":
+//     - Precedence (gap systems only, the default there): a DPLL-like search
+//       that posts "a before b" decisions, derives forced orderings and dead
+//       ends by propagation over the gap constraints, and performs a coupling
+//       only when an exchange argument shows that doing it now loses no
+//       solution;
+//     - States (any system, the default for non-horizontal instances):
+//       depth-first search over states with a memo of refuted states, safe
+//       moves and stubborn-set partial-order reduction;
+//  4. a YES order is replayed by the exact Simulator before it is returned;
+//     if the simulator disagrees, solve_discrete throws std::logic_error
+//     (a bug, never a silent wrong answer).
+//
+// Requirements: inst is a valid Instance (InstanceBuilder guarantees it).
+// Complexity: set-up O(n + e log e) plus the constraint builder (near linear
+// for gap systems; see build_pair_constraints for the general case), then
+// per search node O(size of the constraint system) for the state search and
+// O(C * r^2 + k^2 / 64 per derived ordering) for the precedence search
+// (C constraints of at most r couplings each, k couplings). Memory: the memo
+// holds k bits per refuted state; the precedence search keeps two k x k bit
+// matrices per open decision.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lattice/instance.hpp"
+
+namespace gridlock {
+
+struct SolveOptions {
+  double seconds = 0;       // wall-clock limit; 0 = no limit
+  uint64_t max_states = 0;  // limit on search nodes; 0 = none
+  // Which search to run. Auto: Precedence for horizontal-only instances,
+  // States otherwise. Precedence on a non-horizontal instance throws
+  // std::invalid_argument. (Tests run both on the same instances.)
+  enum class Engine { Auto, States, Precedence } engine = Engine::Auto;
+};
+
+struct SolveStats {
+  uint64_t states = 0;        // search nodes: states entered (moves) plus decisions
+  uint64_t refuted = 0;       // dead ends proved (memo entries, conflicts)
+  uint64_t propagations = 0;  // orderings derived (precedence) / safe moves made (states)
+  double seconds = 0;         // wall-clock time of the whole call
+  uint64_t decisions = 0;     // branches opened
+  uint64_t safe_moves = 0;    // couplings performed without branching
+  uint64_t memo_hits = 0;     // states search: revisits of a refuted state
+  uint64_t constraints = 0;   // collision constraints built
+  std::string engine;         // "cycle" (a coupling breaks a cycle), "states", "precedence", "trivial"
+};
+
+struct SolveResult {
+  enum class Status { Yes, No, Unknown } status = Status::Unknown;
+  std::vector<CouplingId> order;  // Yes: every coupling once, accepted by the Simulator
+  SolveStats stats;
+  CouplingId cycle_breaker = kNone;  // No because this coupling breaks a cycle
+};
+
+// Decides Discrete Collision-free Schedule exactly, or returns Unknown when a
+// limit of opt is reached. See the contract above.
+SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt = {});
+
+const char* solve_status_name(SolveResult::Status s);  // "YES", "NO", "UNKNOWN"
+
+}  // namespace gridlock

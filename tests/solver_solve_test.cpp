@@ -1,0 +1,244 @@
+// The exact discrete solver against the all-permutations reference (which
+// runs every order through the Simulator), on seeded random instances of
+// every kind, plus MODEL.md's worked cases and hand-made systems.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "lattice/grid_format.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "solver/gaps.hpp"
+#include "solver/search.hpp"
+#include "solver/solve.hpp"
+#include "support/reference_solver.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+std::string write_instance_string(const Instance& inst) {
+  std::ostringstream out;
+  write_instance(out, inst);
+  return out.str();
+}
+
+using Status = SolveResult::Status;
+
+Instance load(const std::string& name) {
+  Instance inst;
+  auto err = read_instance_file(std::string(GRIDLOCK_SOURCE_DIR) + "/examples/instances/" + name, inst);
+  EXPECT_FALSE(err) << err->str();
+  return inst;
+}
+
+std::string names(const Instance& inst, const std::vector<CouplingId>& order) {
+  std::string s;
+  for (CouplingId q : order) s += " " + inst.couplings()[q].name;
+  return s;
+}
+
+SolveResult solve_with(const Instance& inst, SolveOptions::Engine e) {
+  SolveOptions o;
+  o.engine = e;
+  return solve_discrete(inst, o);
+}
+
+// --- MODEL.md worked cases ---------------------------------------------
+
+TEST(SolveModelCases, Case1TwoGrowthsNo) {
+  Instance inst = load("model-case1-two-growths.grid");
+  SolveResult r = solve_discrete(inst);
+  EXPECT_EQ(r.status, Status::No);
+  EXPECT_EQ(solve_with(inst, SolveOptions::Engine::States).status, Status::No);
+}
+
+TEST(SolveModelCases, Case2OrderGadgetAThenB) {
+  Instance inst = load("model-case2-order-gadget.grid");
+  for (auto e : {SolveOptions::Engine::Auto, SolveOptions::Engine::States, SolveOptions::Engine::Precedence}) {
+    SolveResult r = solve_with(inst, e);
+    ASSERT_EQ(r.status, Status::Yes);
+    EXPECT_EQ(names(inst, r.order), " a b");
+  }
+}
+
+TEST(SolveModelCases, Case3CoupledBlockIsYes) {
+  Instance inst = load("model-case3-block.grid");
+  SolveResult r = solve_discrete(inst);
+  ASSERT_EQ(r.status, Status::Yes);
+  EXPECT_EQ(names(inst, r.order), " Q");
+}
+
+TEST(SolveModelCases, Case3SingleExpansionBreaksTheCycle) {
+  Instance inst;
+  std::istringstream in(
+      "p grid 4 4 2 0\n"
+      "n 0 0\nn 1 0\nn 0 1\nn 1 1\n"
+      "e 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\n"
+      "o a expand 0 0 +x\no b expand 0 1 +x\n");
+  auto err = read_instance(in, "block.grid", inst);
+  ASSERT_FALSE(err) << err->str();
+  SolveResult r = solve_discrete(inst);
+  EXPECT_EQ(r.status, Status::No);
+  EXPECT_EQ(r.stats.engine, "cycle");
+  ASSERT_NE(r.cycle_breaker, kNone);
+  EXPECT_FALSE(test::reference_solve(inst).has_value());
+}
+
+TEST(SolveLimits, ZeroBudgetIsUnknown) {
+  Instance inst = load("model-case2-order-gadget.grid");
+  SolveOptions o;
+  o.max_states = 1;
+  o.engine = SolveOptions::Engine::States;
+  SolveResult r = solve_discrete(inst, o);
+  EXPECT_EQ(r.status, Status::Unknown);
+  EXPECT_TRUE(r.order.empty());
+}
+
+TEST(SolveLimits, PrecedenceOnVerticalInstanceThrows) {
+  RandomInstanceParams p;
+  p.nodes = 6;
+  p.ops = 3;
+  for (uint64_t seed = 1; seed < 50; ++seed) {
+    Instance inst = random_instance(p, seed);
+    if (inst.horizontal_only()) continue;
+    SolveOptions o;
+    o.engine = SolveOptions::Engine::Precedence;
+    EXPECT_THROW(solve_discrete(inst, o), std::invalid_argument);
+    return;
+  }
+}
+
+// --- Random instances against the reference ----------------------------
+
+struct Tally {
+  int yes = 0, no = 0;
+  int no_by_search = 0;  // NO not decided by the cycle test
+  int big = 0;           // instances with at least 5 couplings
+};
+
+// One random instance: solve (every applicable engine) vs reference_solve.
+void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally& t) {
+  auto ref = test::reference_solve(inst);
+  std::vector<SolveOptions::Engine> engines = {SolveOptions::Engine::States};
+  if (inst.horizontal_only()) engines.push_back(SolveOptions::Engine::Precedence);
+  for (auto e : engines) {
+    SolveResult r = solve_with(inst, e);
+    ASSERT_EQ(r.status == Status::Yes, ref.has_value())
+        << family << " seed " << seed << " engine " << r.stats.engine << ": solver says "
+        << solve_status_name(r.status) << ", reference says " << (ref ? "YES" + names(inst, *ref) : "NO") << "\n"
+        << write_instance_string(inst);
+    if (r.status == Status::Yes) {
+      Simulator sim(inst);
+      ASSERT_FALSE(sim.run_order(r.order).collision) << family << " seed " << seed;
+    }
+  }
+  (ref ? t.yes : t.no) += 1;
+  if (inst.couplings().size() >= 5) ++t.big;
+  if (!ref && solve_discrete(inst).stats.engine != "cycle") ++t.no_by_search;
+  if (ref && inst.horizontal_only()) {
+    // Discrete YES implies continuous YES (run everything at once).
+    EXPECT_TRUE(check_gaps(inst).collision_free) << family << " seed " << seed;
+    EXPECT_TRUE(test::reference_all_at_once(inst)) << family << " seed " << seed;
+  }
+}
+
+void run_family(const char* family, RandomInstanceParams p, int count, uint64_t seed0, bool vary) {
+  Tally t;
+  uint64_t base = test::base_seed(seed0);
+  for (int i = 0; i < count; ++i) {
+    uint64_t seed = base + static_cast<uint64_t>(i);
+    RandomInstanceParams q = p;
+    if (vary) {
+      uint64_t s = seed * 0x9E3779B97F4A7C15ULL + 1;
+      q.nodes = 3 + static_cast<uint32_t>(draw_below(s, p.nodes));
+      q.ops = p.ops / 2 + static_cast<uint32_t>(draw_below(s, p.ops - p.ops / 2 + 1));
+      q.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, p.max_coupling));
+    }
+    Instance inst = random_instance(q, seed);
+    if (inst.couplings().size() > 7) continue;
+    cross_check(inst, seed, family, t);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  // The families must exercise both answers, or the test proves little.
+  EXPECT_GT(t.yes, 0) << family;
+  EXPECT_GT(t.no_by_search, 0) << family;
+  std::printf("[ %s ] %d instances (%d with >= 5 couplings): %d YES, %d NO (%d by search) (seed %llu)\n", family,
+              t.yes + t.no, t.big, t.yes, t.no, t.no_by_search, static_cast<unsigned long long>(base));
+}
+
+TEST(SolveRandom, TreesAllKinds) {
+  RandomInstanceParams p;
+  p.nodes = 12;
+  p.ops = 7;
+  p.max_coupling = 3;
+  run_family("trees", p, test::scaled(1500), 1000, true);
+}
+
+TEST(SolveRandom, CyclesAllKinds) {
+  RandomInstanceParams p;
+  p.nodes = 12;
+  p.ops = 7;
+  p.max_coupling = 3;
+  p.extra_edge_percent = 40;
+  run_family("cycles", p, test::scaled(1000), 50000, true);
+}
+
+TEST(SolveRandom, SparseShapes) {
+  RandomInstanceParams p;
+  p.nodes = 14;
+  p.ops = 7;
+  p.max_coupling = 2;
+  p.spread = 3;
+  run_family("sparse", p, test::scaled(600), 90000, true);
+}
+
+TEST(SolveRandom, HorizontalOnly) {
+  RandomInstanceParams p;
+  p.nodes = 14;
+  p.ops = 7;
+  p.max_coupling = 3;
+  p.horizontal_only = true;
+  run_family("horizontal", p, test::scaled(1500), 120000, true);
+}
+
+TEST(SolveRandom, HorizontalCycles) {
+  RandomInstanceParams p;
+  p.nodes = 14;
+  p.ops = 7;
+  p.max_coupling = 3;
+  p.horizontal_only = true;
+  p.extra_edge_percent = 35;
+  run_family("horizontal-cycles", p, test::scaled(800), 160000, true);
+}
+
+TEST(SolveRandom, HorizontalPaths) {
+  RandomInstanceParams p;
+  p.nodes = 12;
+  p.ops = 7;
+  p.max_coupling = 2;
+  p.horizontal_only = true;
+  p.path_shape = true;
+  run_family("horizontal-paths", p, test::scaled(600), 200000, true);
+}
+
+// Seven singleton couplings each: 5040 orders for the reference.
+TEST(SolveRandom, SevenCouplings) {
+  RandomInstanceParams p;
+  p.nodes = 10;
+  p.ops = 7;
+  p.max_coupling = 1;
+  run_family("seven", p, test::scaled(400), 300000, false);
+}
+
+TEST(SolveRandom, SevenCouplingsHorizontal) {
+  RandomInstanceParams p;
+  p.nodes = 12;
+  p.ops = 7;
+  p.max_coupling = 1;
+  p.horizontal_only = true;
+  run_family("seven-horizontal", p, test::scaled(400), 310000, false);
+}
+
+}  // namespace
+}  // namespace gridlock
