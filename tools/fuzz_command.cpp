@@ -113,7 +113,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   auto status_line = [&] {
     std::ostringstream s;
     s << done << " formulas (" << sat << " SAT, " << unsat << " UNSAT, " << unknown << " unknown), "
-      << static_cast<uint64_t>(done / std::max(elapsed(), 1e-9)) << "/s, " << certificates << " certificates, "
+      << static_cast<uint64_t>(static_cast<double>(done) / std::max(elapsed(), 1e-9)) << "/s, " << certificates << " certificates, "
       << disagreements << " disagreements, " << static_cast<uint64_t>(elapsed()) << " s";
     return s.str();
   };

@@ -138,7 +138,7 @@ int run_verify(const std::vector<std::string>& args) {
   std::ostream& out = std::cout;
   const int w = 14;
   if (!json) {
-    out << std::left << std::setw(w) << "formula" << std::right << std::setw(5) << "vars" << std::setw(7) << "clauses"
+    out << std::left << std::setw(w) << "formula" << std::right << std::setw(5) << "vars" << std::setw(8) << "clauses"
         << std::setw(8) << "nodes" << std::setw(7) << "coupl" << std::setw(7) << "SAT" << std::setw(9) << "discrete"
         << std::setw(7) << "contin" << std::setw(6) << "wit" << std::setw(10) << "states" << "  ms sat/compile/solve/gaps"
         << '\n';
@@ -174,7 +174,7 @@ int run_verify(const std::vector<std::string>& args) {
     } else {
       std::string name = stem(files[i]);
       if (name.size() > static_cast<size_t>(w - 1)) name = name.substr(0, static_cast<size_t>(w - 2)) + "~";
-      out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(7)
+      out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(8)
           << r.source.clauses.size() << std::setw(8) << r.nodes << std::setw(7) << r.couplings << std::setw(7)
           << sat_word(r.sat) << std::setw(9) << tri_name(r.discrete) << std::setw(7) << tri_name(r.continuous)
           << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" +
