@@ -1,15 +1,15 @@
-// End-to-end verification of the reduction on one formula (issue 6).
+// End-to-end verification of the reduction on one formula (docs/verify.md).
 //
 // For a CNF formula F: answer "is F satisfiable?" three ways and compare.
-//  1. CaDiCaL on F (the model is checked against F).
+//  1. CaDiCaL on F (its model is checked against F).
 //  2. If F is not LSAT<=3, reduce it with to-lsat to G (else G = F); compile
 //     G into a lattice instance I; the exact discrete solver on I.
 //  3. The linear-time gap checker on I (continuous model): every compiled
-//     instance is expected to be YES, the paper's point that continuous time
-//     is easy.
+//     instance is expected to be YES (paper: continuous time is easy), and
+//     its witness "everything at time 0" is run through the simulator.
 // Certificates are checked both ways: F's model -> G's assignment -> a
-// schedule of I -> the simulator; the solver's schedule -> an assignment of
-// G -> an assignment of F -> F.
+// schedule of I -> the simulator; the solver's schedule (already replayed by
+// the simulator inside the solver) -> an assignment of G -> of F -> F.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "gadgets/mutation.hpp"
 #include "lattice/instance.hpp"
 
 namespace gridlock {
@@ -25,35 +26,43 @@ enum class Tri { Yes, No, Unknown };
 const char* tri_name(Tri t);  // "YES", "NO", "UNKNOWN"
 
 struct VerifyOptions {
-  double solve_seconds = 60;        // limit of the exact solver (then UNKNOWN)
-  uint64_t max_states = 0;          // limit of the exact solver; 0 = none
-  std::string break_gadget;         // test only: compile with a broken gadget
+  double solve_seconds = 60;           // limit of the exact solver (then UNKNOWN)
+  uint64_t max_states = 0;             // limit of the exact solver; 0 = none
+  Mutation mutation = Mutation::None;  // test only: compile with a broken gadget
 };
+
+// A certificate check: not applicable, checked and valid, checked and INVALID.
+enum class Check { None, Valid, Invalid };
 
 struct VerifyResult {
   std::string name;
-  Formula source, lsat;             // F and G
-  bool reduced = false;             // G came from to-lsat
+  Formula source, lsat;  // F and G
+  bool reduced = false;  // G came from to-lsat
   Instance instance;
-  size_t nodes = 0, ops = 0, couplings = 0;
+  size_t nodes = 0, ops = 0, couplings = 0, max_coupling = 0;
   Tri sat = Tri::Unknown, discrete = Tri::Unknown, continuous = Tri::Unknown;
-  // Certificates: 1 checked and valid, 0 not applicable, -1 checked and INVALID.
-  int sat_witness = 0;              // F's model -> schedule -> simulator
-  int solver_witness = 0;           // solver's schedule -> assignment -> F
+  Check sat_witness = Check::None;     // F's model -> schedule -> simulator
+  Check solver_witness = Check::None;  // solver's schedule -> assignment -> F
+  Check gaps_witness = Check::None;    // gaps YES: all couplings at time 0 -> simulator
   std::vector<std::string> sat_schedule, solver_schedule;  // coupling names
   double ms_sat = 0, ms_compile = 0, ms_solve = 0, ms_gaps = 0;
   uint64_t solver_states = 0;
-  bool agree = false;               // everything consistent (UNKNOWN is not a disagreement)
-  std::string problem;              // what disagreed, if anything
+  bool agree = false;   // everything consistent (UNKNOWN is not a disagreement)
+  std::string problem;  // what disagreed, if anything
+  // Number of certificates checked and valid (for the table).
+  int witnesses_checked() const;
 };
 
-// Runs the whole check. Never throws for a formula with clauses of any
-// length (longer ones go through to-lsat); limits give UNKNOWN.
+// Runs the whole check. Never throws for a valid formula (validate(f)
+// empty) with clauses of any length, empty ones included (they go through
+// to-lsat); limits give UNKNOWN. Time: CaDiCaL + O(size) compile + the
+// solver (exponential worst case, bounded by the limits) + simulator runs.
 VerifyResult verify_formula(const Formula& f, const std::string& name, const VerifyOptions& opt);
 
-// Writes a reproducer for r into dir (created): formula.cnf, lsat.cnf,
-// instance.grid, sat-schedule.txt, solver-schedule.txt, README.txt with what
-// disagreed, and run.sh with the command that replays it. Returns dir.
-std::string write_reproducer(const VerifyResult& r, const std::string& dir);
+// Writes a reproducer for r into dir (created, with parents): formula.cnf,
+// lsat.cnf, instance.grid, sat-schedule.txt, solver-schedule.txt, README.txt
+// saying what disagreed, and run.sh replaying it with `gridlock verify`.
+// Throws std::runtime_error if a file cannot be written. Returns dir.
+std::string write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt);
 
 }  // namespace gridlock

@@ -1,0 +1,75 @@
+#include "reductions/fuzz.hpp"
+
+#include <algorithm>
+
+#include "cnf/generate.hpp"
+
+namespace gridlock {
+
+const char* fuzz_kind_name(FuzzKind k) {
+  switch (k) {
+    case FuzzKind::Ksat: return "ksat";
+    case FuzzKind::Lsat: return "lsat";
+    case FuzzKind::Planted: return "planted";
+  }
+  return "?";
+}
+
+uint64_t fuzz_formula_seed(uint64_t seed, uint64_t index) {
+  uint64_t z = seed * 0x9E3779B97F4A7C15ull + index + 0x632BE59BD9B4E019ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
+  const uint64_t s = fuzz_formula_seed(p.seed, index);
+  Rng rng(s);
+  const FuzzKind kind = p.kinds[index % p.kinds.size()];
+  const int n = static_cast<int>(rng.between(p.min_vars, p.max_vars));
+  Formula f;
+  switch (kind) {
+    case FuzzKind::Ksat: {
+      KSatParams k;
+      k.n = n;
+      k.k = std::min(3, n);
+      k.m = static_cast<int>(rng.between(1, 7 * n));
+      k.seed = rng.next();
+      f = random_ksat(k);
+      break;
+    }
+    case FuzzKind::Lsat: {
+      LsatParams l;
+      l.n = n;
+      l.min_len = 1;
+      l.max_len = std::min(3, n);
+      l.m = static_cast<int>(rng.between(1, std::max(1, lsat_max_clauses(n, 1))));
+      l.seed = rng.next();
+      f = random_lsat(l);
+      break;
+    }
+    case FuzzKind::Planted: {
+      PlantedParams pl;
+      pl.n = n;
+      pl.k = std::min(3, n);
+      pl.m = static_cast<int>(rng.between(1, 7 * n));
+      pl.seed = rng.next();
+      f = planted_ksat(pl);
+      break;
+    }
+  }
+  f.comments.insert(f.comments.begin(), "gridlock fuzz formula " + std::to_string(index) + " of campaign seed " +
+                                            std::to_string(p.seed) + " (" + fuzz_kind_name(kind) + ", formula seed " +
+                                            std::to_string(s) + ")");
+  return f;
+}
+
+Formula shrink_disagreement(const Formula& f, const VerifyOptions& opt, ShrinkStats* stats) {
+  auto disagrees = [&](const Formula& g) { return !verify_formula(g, "shrink", opt).agree; };
+  Formula g = shrink_formula(f, disagrees, stats);
+  g.comments.push_back("shrunk from a formula with " + std::to_string(f.num_vars) + " variables and " +
+                       std::to_string(f.clauses.size()) + " clauses");
+  return g;
+}
+
+}  // namespace gridlock

@@ -1,0 +1,214 @@
+// gridlock verify: is the reduction right on these formulas? CaDiCaL vs the
+// exact discrete solver vs the gap checker, every certificate checked
+// (reductions/verify.hpp, docs/verify.md).
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cnf/dimacs.hpp"
+#include "lattice/render.hpp"
+#include "lattice/schedule.hpp"
+#include "lattice/simulate.hpp"
+#include "reductions/compile.hpp"
+#include "reductions/verify.hpp"
+#include "tools/cli_common.hpp"
+#include "tools/command.hpp"
+
+namespace gridlock {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The formulas named on the command line: files, every *.cnf of a folder
+// (sorted), or "-".
+std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
+  std::vector<std::string> out;
+  for (const auto& in : inputs) {
+    std::error_code ec;
+    if (in != "-" && fs::is_directory(in, ec)) {
+      std::vector<std::string> files;
+      for (const auto& e : fs::directory_iterator(in, ec))
+        if (e.is_regular_file() && e.path().extension() == ".cnf") files.push_back(e.path().string());
+      if (ec) throw UserError(Diagnostic{in, 0, "cannot list folder"});
+      if (files.empty()) throw UserError(Diagnostic{in, 0, "folder holds no .cnf file"});
+      // Natural order, so uf20-2 comes before uf20-10.
+      std::sort(files.begin(), files.end(), [](const std::string& a, const std::string& b) {
+        return a.size() != b.size() ? a.size() < b.size() : a < b;
+      });
+      out.insert(out.end(), files.begin(), files.end());
+    } else {
+      out.push_back(in);
+    }
+  }
+  return out;
+}
+
+std::string stem(const std::string& path) { return path == "-" ? "stdin" : fs::path(path).stem().string(); }
+
+std::string fmt_ms(double ms) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(ms < 10 ? 2 : ms < 100 ? 1 : 0) << ms;
+  return s.str();
+}
+
+std::string sat_word(Tri t) { return t == Tri::Yes ? "SAT" : t == Tri::No ? "UNSAT" : "?"; }
+
+// Pictures of a small compiled instance and of its witness (or, for an
+// unsatisfiable formula, of one lifted schedule's collision).
+void draw(const VerifyResult& r, const std::string& dir) {
+  fs::create_directories(dir);
+  const Instance& inst = r.instance;
+  const std::string base = dir + "/" + stem(r.name);
+  RenderOptions ro;
+  ro.title = r.name + ": " + std::to_string(r.nodes) + " nodes, " + std::to_string(r.couplings) + " couplings";
+  cli::write_text_file(base + ".svg", render_svg(inst, ro));
+  const auto& names = !r.solver_schedule.empty() ? r.solver_schedule : r.sat_schedule;
+  std::vector<CouplingId> order;
+  if (!names.empty()) {
+    if (parse_order(inst, names, r.name, 0, order)) return;
+  } else {
+    // Unsatisfiable: the schedule of the all-false assignment must collide.
+    CompiledFormula c = compile_formula(r.lsat);
+    order = schedule_from_assignment(c, std::vector<bool>(static_cast<size_t>(r.lsat.num_vars) + 1, false));
+  }
+  Schedule s = schedule_from_order(order);
+  Simulator sim(inst);
+  SimResult res = sim.run(s);
+  RenderOptions wo;
+  wo.schedule = &s;
+  if (res.collision) {
+    wo.time = res.collision->time;
+    wo.collision = &*res.collision;
+    wo.title = r.name + ": every schedule collides; here x=false for all, " + describe(inst, sim.regions(), *res.collision);
+    cli::write_text_file(base + "-collision.svg", render_svg(inst, wo));
+  } else {
+    wo.time = Rational(static_cast<int64_t>(order.size()));
+    wo.title = r.name + ": the witness schedule, completed without collision";
+    cli::write_text_file(base + "-witness.svg", render_svg(inst, wo));
+  }
+}
+
+int run_verify(const std::vector<std::string>& args) {
+  namespace po = boost::program_options;
+  po::options_description opts("options");
+  opts.add_options()
+    ("help,h", "show this help")
+    ("timeout", po::value<double>()->default_value(60), "seconds the exact solver may spend on one formula (then UNKNOWN)")
+    ("max-states", po::value<uint64_t>()->default_value(0), "search nodes the exact solver may visit per formula (0: no limit)")
+    ("reproducers", po::value<std::string>()->default_value("verify-failures"),
+     "folder for reproducers of disagreements (one subfolder each)")
+    ("pictures", po::value<std::string>(), "draw each compiled instance of at most --picture-nodes nodes, and its "
+                                           "witness (or a collision), into this folder")
+    ("picture-nodes", po::value<size_t>()->default_value(1500), "largest instance drawn by --pictures")
+    ("json", "print one JSON object instead of the table");
+  po::options_description hidden;
+  hidden.add_options()
+    ("inputs", po::value<std::vector<std::string>>()->required(), "formulas")
+    ("break-gadget", po::value<std::string>()->default_value("none"), "test only: compile with a broken gadget");
+  po::positional_options_description pos;
+  pos.add("inputs", -1);
+  po::variables_map vm;
+  if (!cli::parse_args(args, opts, pos, vm, "verify FORMULA.cnf|FOLDER|- ...",
+                       "Checks the reduction end to end on each formula: to-lsat if needed, compile, then\n"
+                       "  SAT        CaDiCaL on the formula (model checked),\n"
+                       "  discrete   the exact solver on the instance (expected: the same answer),\n"
+                       "  continuous the gap checker (expected: YES for every compiled instance),\n"
+                       "and every certificate: CaDiCaL's model -> schedule -> simulator; the solver's\n"
+                       "schedule -> assignment -> formula; 'all at time 0' -> simulator. One row per formula,\n"
+                       "then a summary. Exit 0 iff everything agrees (UNKNOWN, a limit hit, is no disagreement);\n"
+                       "exit 1 on any disagreement, with a reproducer written for each.",
+                       &hidden))
+    return 0;
+  VerifyOptions opt;
+  opt.solve_seconds = vm["timeout"].as<double>();
+  opt.max_states = vm["max-states"].as<uint64_t>();
+  auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
+  if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
+  opt.mutation = *mutation;
+  const bool json = vm.count("json") > 0;
+  std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
+  // Read everything first: a bad file is reported before any work is done.
+  std::vector<Formula> formulas;
+  for (const auto& f : files) formulas.push_back(cli::load_formula(f));
+
+  std::ostream& out = std::cout;
+  const int w = 14;
+  if (!json) {
+    out << std::left << std::setw(w) << "formula" << std::right << std::setw(5) << "vars" << std::setw(8) << "clauses"
+        << std::setw(8) << "nodes" << std::setw(7) << "coupl" << std::setw(7) << "SAT" << std::setw(9) << "discrete"
+        << std::setw(7) << "contin" << std::setw(6) << "wit" << std::setw(10) << "states" << "  ms sat/compile/solve/gaps"
+        << '\n';
+  }
+  nlohmann::json rows = nlohmann::json::array();
+  size_t agree = 0, unknown = 0, disagree = 0, witnesses = 0, sat = 0, unsat = 0;
+  double total_ms = 0;
+  for (size_t i = 0; i < files.size(); ++i) {
+    VerifyResult r = verify_formula(formulas[i], files[i], opt);
+    witnesses += static_cast<size_t>(r.witnesses_checked());
+    sat += r.sat == Tri::Yes;
+    unsat += r.sat == Tri::No;
+    total_ms += r.ms_sat + r.ms_compile + r.ms_solve + r.ms_gaps;
+    std::string status = r.agree ? (r.discrete == Tri::Unknown ? "unknown" : "agree") : "DISAGREE";
+    if (!r.agree) {
+      ++disagree;
+      std::string dir = vm["reproducers"].as<std::string>() + "/" + stem(files[i]);
+      write_reproducer(r, dir, opt);
+      r.problem += " (reproducer: " + dir + ")";
+    } else if (r.discrete == Tri::Unknown) {
+      ++unknown;
+    } else {
+      ++agree;
+    }
+    if (vm.count("pictures") && r.nodes <= vm["picture-nodes"].as<size_t>()) draw(r, vm["pictures"].as<std::string>());
+    if (json) {
+      rows.push_back({{"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
+                      {"reduced", r.reduced}, {"nodes", r.nodes}, {"operations", r.ops}, {"couplings", r.couplings},
+                      {"max_coupling", r.max_coupling}, {"sat", tri_name(r.sat)}, {"discrete", tri_name(r.discrete)},
+                      {"continuous", tri_name(r.continuous)}, {"witnesses_checked", r.witnesses_checked()},
+                      {"solver_states", r.solver_states}, {"ms_sat", r.ms_sat}, {"ms_compile", r.ms_compile},
+                      {"ms_solve", r.ms_solve}, {"ms_gaps", r.ms_gaps}, {"status", status}, {"problem", r.problem}});
+    } else {
+      std::string name = stem(files[i]);
+      if (name.size() > static_cast<size_t>(w - 1)) name = name.substr(0, static_cast<size_t>(w - 2)) + "~";
+      out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(8)
+          << r.source.clauses.size() << std::setw(8) << r.nodes << std::setw(7) << r.couplings << std::setw(7)
+          << sat_word(r.sat) << std::setw(9) << tri_name(r.discrete) << std::setw(7) << tri_name(r.continuous)
+          << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" +
+                              std::to_string((r.sat == Tri::Yes) + (r.discrete == Tri::Yes) + (r.continuous == Tri::Yes)))
+          << std::setw(10) << r.solver_states << "  " << fmt_ms(r.ms_sat) << "/" << fmt_ms(r.ms_compile) << "/"
+          << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps) << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
+    }
+  }
+  std::string summary = std::to_string(files.size()) + " formulas (" + std::to_string(sat) + " SAT, " +
+                        std::to_string(unsat) + " UNSAT): " + std::to_string(agree) + " agree, " +
+                        std::to_string(unknown) + " unknown (solver limit), " + std::to_string(disagree) +
+                        " disagree; " + std::to_string(witnesses) + " certificates checked; " +
+                        fmt_ms(total_ms / 1000) + " s";
+  if (json) {
+    nlohmann::json j;
+    j["command"] = "verify";
+    j["formulas"] = rows;
+    j["summary"] = {{"formulas", files.size()}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
+                    {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
+    j["exit_code"] = disagree ? 1 : 0;
+    out << j.dump() << std::endl;
+  } else {
+    out << "summary: " << summary << std::endl;
+  }
+  if (disagree) {
+    std::cerr << "gridlock: error: verify: " << disagree << " disagreement" << (disagree > 1 ? "s" : "")
+              << "; reproducers in " << vm["reproducers"].as<std::string>() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+Command reg{"verify", "is the reduction right on these formulas? CaDiCaL vs exact solver vs gap checker, certificates checked",
+            run_verify};
+
+}  // namespace
+}  // namespace gridlock
