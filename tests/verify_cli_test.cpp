@@ -90,6 +90,12 @@ TEST(VerifyCli, BadInput) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err.rfind("gridlock: error: " + bad + ":2: ", 0), 0u) << r.err;
   EXPECT_EQ(r.out, "");  // nothing is checked before every file has been read
+  r = run_gridlock({"verify"});
+  EXPECT_EQ(r.err, "gridlock: error: missing argument INPUTS (see 'gridlock verify --help')\n");
+  r = run_gridlock({"gen-instances"});
+  EXPECT_EQ(r.err, "gridlock: error: missing option --out (see 'gridlock gen-instances --help')\n");
+  r = run_gridlock({"cnf", "solve"});
+  EXPECT_EQ(r.err, "gridlock: error: missing argument FILE (see 'gridlock cnf solve --help')\n");
 }
 
 nlohmann::json fuzz(const std::vector<std::string>& extra) {

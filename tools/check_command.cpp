@@ -22,16 +22,11 @@ int run_check(const std::vector<std::string>& args) {
     ("times", po::value<std::string>(), "continuous schedule: a file of lines 'COUPLING TIME' (TIME like 3 or 5/2)")
     ("svg", po::value<std::string>(), "draw the configuration at the collision (or at the end) to this SVG file")
     ("json", "print one JSON object instead of c/s/v lines");
-  po::options_description hidden;
-  hidden.add_options()("instance", po::value<std::string>()->required(), "instance");
-  po::positional_options_description pos;
-  pos.add("instance", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "check INSTANCE.grid (--order \"Q...\" | --order-file F | --times F) [--svg OUT.svg]",
+  if (!cli::parse_args_one_input(args, opts, "instance", vm, "check INSTANCE.grid (--order \"Q...\" | --order-file F | --times F) [--svg OUT.svg]",
                        "Runs one schedule and answers: is it collision-free? s YES (exit 10) or s NO (exit 20)\n"
                        "with the first collision: its exact moment, kind, the two nodes (or the cycle) and\n"
-                       "the couplings moving then.",
-                       &hidden))
+                       "the couplings moving then."))
     return 0;
   int given = static_cast<int>(vm.count("order") + vm.count("order-file") + vm.count("times"));
   if (given != 1) throw UserError("give exactly one of --order, --order-file, --times");

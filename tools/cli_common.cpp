@@ -1,7 +1,9 @@
 #include "tools/cli_common.hpp"
 
+#include <cctype>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "cnf/dimacs.hpp"
 #include "common/diagnostic.hpp"
@@ -23,6 +25,22 @@ Instance load_instance(const std::string& path) {
   return inst;
 }
 
+namespace {
+// "cnf solve" from "cnf solve FILE.cnf [--time S]": the leading lower-case words.
+std::string command_of(const std::string& usage) {
+  std::string out;
+  std::istringstream in(usage);
+  for (std::string w; in >> w;) {
+    bool word = !w.empty();
+    for (char ch : w) word = word && ((ch >= 'a' && ch <= 'z') || ch == '-');
+    word = word && w[0] != '-';
+    if (!word) break;
+    out += (out.empty() ? "" : " ") + w;
+  }
+  return out;
+}
+}  // namespace
+
 bool parse_args(const std::vector<std::string>& args, const po::options_description& visible,
                 const po::positional_options_description& positional, po::variables_map& vm,
                 const std::string& usage, const std::string& description, const po::options_description* hidden) {
@@ -36,10 +54,29 @@ bool parse_args(const std::vector<std::string>& args, const po::options_descript
       return false;
     }
     po::notify(vm);
+  } catch (const po::required_option& e) {
+    // Required options are our positional arguments: name them as such.
+    std::string name = e.get_option_name();
+    while (!name.empty() && name[0] == '-') name.erase(0, 1);
+    if (visible.find_nothrow(name, false))
+      throw UserError("missing option --" + name + " (see 'gridlock " + command_of(usage) + " --help')");
+    for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    throw UserError("missing argument " + name + " (see 'gridlock " + command_of(usage) + " --help')");
   } catch (const po::error& e) {
-    throw UserError(std::string(e.what()) + " (see 'gridlock " + usage.substr(0, usage.find(' ')) + " --help')");
+    throw UserError(std::string(e.what()) + " (see 'gridlock " + command_of(usage) + " --help')");
   }
   return true;
+}
+
+bool parse_args_one_input(const std::vector<std::string>& args, const po::options_description& visible,
+                          const std::string& input_name, po::variables_map& vm, const std::string& usage,
+                          const std::string& description, const po::options_description* extra_hidden) {
+  po::options_description hidden;
+  hidden.add_options()(input_name.c_str(), po::value<std::string>()->required(), input_name.c_str());
+  if (extra_hidden) hidden.add(*extra_hidden);
+  po::positional_options_description pos;
+  pos.add(input_name.c_str(), 1);
+  return parse_args(args, visible, pos, vm, usage, description, &hidden);
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

@@ -28,6 +28,13 @@ bool parse_args(const std::vector<std::string>& args, const po::options_descript
                 const std::string& usage, const std::string& description,
                 const po::options_description* hidden = nullptr);
 
+// parse_args for the common shape "SUBCOMMAND [OPTIONS] INPUT": one required
+// positional argument, stored in vm[input_name]; extra_hidden adds options
+// that --help does not list (test-only switches).
+bool parse_args_one_input(const std::vector<std::string>& args, const po::options_description& visible,
+                          const std::string& input_name, po::variables_map& vm, const std::string& usage,
+                          const std::string& description, const po::options_description* extra_hidden = nullptr);
+
 // Writes text to path ("-" = stdout) or throws UserError.
 void write_text_file(const std::string& path, const std::string& text);
 

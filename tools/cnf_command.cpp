@@ -88,18 +88,13 @@ int run_check(const std::vector<std::string>& args) {
     ("max-violations", po::value<size_t>()->default_value(3), "how many broken rules to list")
     ("json", "print one JSON object instead of c/s lines");
   add_reader_options(opts);
-  po::options_description hidden;
-  hidden.add_options()("file", po::value<std::string>()->required(), "formula");
-  po::positional_options_description pos;
-  pos.add("file", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "cnf check FILE.cnf [--relaxed] [--max-violations N]",
+  if (!cli::parse_args_one_input(args, opts, "file", vm, "cnf check FILE.cnf [--relaxed] [--max-violations N]",
                        "Answers whether FILE is an LSAT formula: every clause has exactly 3 distinct literals\n"
                        "(1 to 3 with --relaxed), shares literals with at most one other clause, and shares\n"
                        "exactly one literal with it. Literals, not variables: x and -x do not intersect.\n"
                        "s YES (exit 10) or s NO (exit 20); c lines give both verdicts and name the first\n"
-                       "clauses that break a rule, and which rule. Tautologies are allowed and listed.",
-                       &hidden))
+                       "clauses that break a rule, and which rule. Tautologies are allowed and listed."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
   const Formula f = load(path, vm.count("no-strict-count") == 0);
@@ -171,20 +166,15 @@ int run_gen(const std::vector<std::string>& args) {
     ("seed", po::value<std::string>()->default_value("1"), "random seed, 0 to 2^64-1")
     ("output,o", po::value<std::string>()->default_value("-"), "output file ('-' = standard output)")
     ("json", "print one JSON object (with the DIMACS text when writing to standard output)");
-  po::options_description hidden;
-  hidden.add_options()("kind", po::value<std::string>()->required(), "generator");
-  po::positional_options_description pos;
-  pos.add("kind", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "cnf gen KIND --n N (--m M | --ratio R) [--seed S] [-o FILE]",
+  if (!cli::parse_args_one_input(args, opts, "kind", vm, "cnf gen KIND --n N (--m M | --ratio R) [--seed S] [-o FILE]",
                        "Writes a seeded random formula in DIMACS. The same command gives the same bytes on\n"
                        "every machine. The header comments record the command line, the generator, its\n"
                        "parameters and the seed. KIND:\n"
                        "  ksat      uniform random k-SAT: k distinct variables per clause, uniform signs\n"
                        "  lsat      random exactly-3 LSAT (m <= about 4n/5; always satisfiable)\n"
                        "  lsat-le3  random LSAT<=3, clause lengths uniform in [min-len, max-len]\n"
-                       "  planted   k-SAT clauses satisfied by a hidden assignment (recorded in a comment)",
-                       &hidden))
+                       "  planted   k-SAT clauses satisfied by a hidden assignment (recorded in a comment)"))
     return 0;
   const std::string kind = vm["kind"].as<std::string>();
   if (!vm.count("n")) throw UserError("cnf gen: --n is required");
@@ -240,20 +230,15 @@ int run_to_lsat(const std::vector<std::string>& args) {
     ("no-passthrough", "build the construction even when the input already is LSAT<=3")
     ("json", "print one JSON object (sizes; the DIMACS text when writing to standard output)");
   add_reader_options(opts);
-  po::options_description hidden;
-  hidden.add_options()("file", po::value<std::string>()->required(), "formula");
-  po::positional_options_description pos;
-  pos.add("file", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "cnf to-lsat FILE.cnf [-o OUT.cnf] [--no-passthrough]",
+  if (!cli::parse_args_one_input(args, opts, "file", vm, "cnf to-lsat FILE.cnf [-o OUT.cnf] [--no-passthrough]",
                        "Writes an LSAT<=3 formula (clauses of 1 to 3 literals; each clause shares literals\n"
                        "with at most one other, exactly one) that is satisfiable iff FILE is. Any CNF is\n"
                        "accepted: long clauses are split, tautologies and repeated literals dropped. Output\n"
                        "variables 1..n are FILE's variables: truncating a model of the output gives a model\n"
                        "of FILE. Size: at most 5m + n variables and 6m + n clauses for a 3-CNF with m clauses\n"
                        "(exact formulas in docs/formulas.md). An input that already is LSAT<=3 is written\n"
-                       "unchanged unless --no-passthrough is given.",
-                       &hidden))
+                       "unchanged unless --no-passthrough is given."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
   const Formula in = load(path, vm.count("no-strict-count") == 0);
@@ -319,16 +304,11 @@ int run_solve(const std::vector<std::string>& args) {
      "cadical, or an independent oracle: dpll (small formulas), exhaustive (at most 24 variables)")
     ("json", "print one JSON object instead of c/s/v lines");
   add_reader_options(opts);
-  po::options_description hidden;
-  hidden.add_options()("file", po::value<std::string>()->required(), "formula");
-  po::positional_options_description pos;
-  pos.add("file", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "cnf solve FILE.cnf [--conflicts N] [--time SECONDS]",
+  if (!cli::parse_args_one_input(args, opts, "file", vm, "cnf solve FILE.cnf [--conflicts N] [--time SECONDS]",
                        "Decides satisfiability with CaDiCaL (linked as a library). Prints s SATISFIABLE and\n"
                        "the model on v lines ending in 0 (exit 10), s UNSATISFIABLE (exit 20), or s UNKNOWN\n"
-                       "when a limit is hit (exit 0). The model is checked against the formula first.",
-                       &hidden))
+                       "when a limit is hit (exit 0). The model is checked against the formula first."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
   const Formula f = load(path, vm.count("no-strict-count") == 0);

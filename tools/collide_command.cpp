@@ -19,18 +19,13 @@ int run_collide(const std::vector<std::string>& args) {
      "pairwise (any instance: exact per-pair tests)")
     ("svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")
     ("json", "print one JSON object instead of c/s/v lines");
-  po::options_description hidden;
-  hidden.add_options()("instance", po::value<std::string>()->required(), "instance");
-  po::positional_options_description pos;
-  pos.add("instance", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
+  if (!cli::parse_args_one_input(args, opts, "instance", vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
                        "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
                        "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
                        "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
                        "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
-                       "s NO (exit 20): no schedule collides.",
-                       &hidden))
+                       "s NO (exit 20): no schedule collides."))
     return 0;
   const std::string model_name = vm["model"].as<std::string>();
   TimeModel model;

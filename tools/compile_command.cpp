@@ -24,12 +24,9 @@ int run_compile(const std::vector<std::string>& args) {
     ("json", "print the sizes as one JSON object (needs -o FILE)");
   po::options_description hidden;
   hidden.add_options()
-    ("formula", po::value<std::string>()->required(), "formula")
     ("break-gadget", po::value<std::string>()->default_value("none"), "test only: compile with a broken gadget");
-  po::positional_options_description pos;
-  pos.add("formula", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "compile FORMULA.cnf [-o INSTANCE.grid] [--svg INSTANCE.svg]",
+  if (!cli::parse_args_one_input(args, opts, "formula", vm, "compile FORMULA.cnf [-o INSTANCE.grid] [--svg INSTANCE.svg]",
                        "Compiles a CNF formula (clauses of 1 or more literals; LSAT<=3 for couplings of at most 3\n"
                        "operations, see 'gridlock cnf to-lsat') into a lattice instance of Discrete Collision-free\n"
                        "Schedule: collision-free schedule exists iff the formula is satisfiable (docs/gadgets.md).\n"

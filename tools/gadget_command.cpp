@@ -26,15 +26,10 @@ int run_gadget(const std::vector<std::string>& args) {
     ("break-gadget", po::value<std::string>()->default_value("none"),
      "draw a deliberately broken version (variable-loose-y, clause-loose, clause-tight, order-loose, "
      "order-drop-release)");
-  po::options_description hidden;
-  hidden.add_options()("kind", po::value<std::string>()->required(), "kind");
-  po::positional_options_description pos;
-  pos.add("kind", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "gadget variable|clause|order [-k K] [-o OUT.grid] [--svg OUT.svg]",
+  if (!cli::parse_args_one_input(args, opts, "kind", vm, "gadget variable|clause|order [-k K] [-o OUT.grid] [--svg OUT.svg]",
                        "Draws one gadget of the reduction alone, with its contract (the states of its operations\n"
-                       "that collide) in 'c' lines. Every operation is its own coupling.",
-                       &hidden))
+                       "that collide) in 'c' lines. Every operation is its own coupling."))
     return 0;
   const std::string kind = vm["kind"].as<std::string>();
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());

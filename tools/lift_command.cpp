@@ -23,20 +23,15 @@ int run_lift(const std::vector<std::string>& args) {
     ("schedule", po::value<std::string>(), "a discrete order of the couplings (e.g. 'gridlock solve' output): "
                                            "lift it to an assignment")
     ("json", "print one JSON object instead of c/s/v lines");
-  po::options_description hidden;
-  hidden.add_options()("formula", po::value<std::string>()->required(), "formula");
-  po::positional_options_description pos;
-  pos.add("formula", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "lift FORMULA.cnf (--model M | --schedule S)",
+  if (!cli::parse_args_one_input(args, opts, "formula", vm, "lift FORMULA.cnf (--model M | --schedule S)",
                        "The certificates of the reduction, each checked by an independent path. The formula is\n"
                        "compiled exactly as 'gridlock compile' does.\n"
                        "  --model M: the schedule x_i:T/F (by M), y_1..y_n, z_1..z_n, u_1..u_m, then the other\n"
                        "    values; run through the exact simulator: s YES (10) with the order on v lines if it\n"
                        "    is collision-free, s NO (20) with the collision otherwise (M does not satisfy F).\n"
                        "  --schedule S: simulated first (it must be collision-free), then x_i = [x_i:T before x_i:F];\n"
-                       "    s YES (10) with the assignment on v lines if it satisfies F, s NO (20) otherwise.",
-                       &hidden))
+                       "    s YES (10) with the assignment on v lines if it satisfies F, s NO (20) otherwise."))
     return 0;
   if (vm.count("model") + vm.count("schedule") != 1) throw UserError("give exactly one of --model, --schedule");
   const std::string path = vm["formula"].as<std::string>();

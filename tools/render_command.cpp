@@ -17,14 +17,9 @@ int run_render(const std::vector<std::string>& args) {
     ("ascii", "draw with characters for a terminal instead of SVG")
     ("tikz", "write a TikZ picture for LaTeX instead of SVG")
     ("title", po::value<std::string>()->default_value(""), "title drawn above the SVG");
-  po::options_description hidden;
-  hidden.add_options()("instance", po::value<std::string>()->required(), "instance");
-  po::positional_options_description pos;
-  pos.add("instance", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "render INSTANCE.grid [-o OUT.svg] [--ascii | --tikz]",
-                       "Draws an instance: nodes, edges, operations as arrows coloured by coupling, the anchor.",
-                       &hidden))
+  if (!cli::parse_args_one_input(args, opts, "instance", vm, "render INSTANCE.grid [-o OUT.svg] [--ascii | --tikz]",
+                       "Draws an instance: nodes, edges, operations as arrows coloured by coupling, the anchor."))
     return 0;
   if (vm.count("ascii") && vm.count("tikz")) throw UserError("give at most one of --ascii and --tikz");
   Instance inst = cli::load_instance(vm["instance"].as<std::string>());

@@ -25,17 +25,12 @@ int run_solve(const std::vector<std::string>& args) {
     ("engine", po::value<std::string>()->default_value("auto"),
      "search: auto (precedence for horizontal-only instances, else states), states, precedence")
     ("json", "print one JSON object instead of c/s/v lines");
-  po::options_description hidden;
-  hidden.add_options()("instance", po::value<std::string>()->required(), "instance");
-  po::positional_options_description pos;
-  pos.add("instance", 1);
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "solve INSTANCE.grid [--timeout S] [--max-states N] [--json]",
+  if (!cli::parse_args_one_input(args, opts, "instance", vm, "solve INSTANCE.grid [--timeout S] [--max-states N] [--json]",
                        "Discrete Collision-free Schedule, exactly: is there an order of the couplings, run one\n"
                        "at a time, with no collision? s YES (exit 10) with the order as v lines (checked by the\n"
                        "simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
-                       "exhaustive search, s UNKNOWN (exit 0) when a limit is reached.",
-                       &hidden))
+                       "exhaustive search, s UNKNOWN (exit 0) when a limit is reached."))
     return 0;
   SolveOptions opt;
   if (vm.count("timeout")) {
