@@ -3,6 +3,8 @@
 // formula of a sweep.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <iostream>
 #include <random>
 
 #include "cnf/brute_force.hpp"
@@ -14,6 +16,7 @@
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
 #include "solver/gaps.hpp"
+#include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
 #include "support/contract_search.hpp"
 #include "support/test_scale.hpp"
@@ -123,11 +126,14 @@ TEST(Compile, AssignmentScheduleCertificates) {
   }
 }
 
-// The reduction's answer on every clause set over 3 variables with at most
-// 3 clauses (2952 formulas), and on seeded random 4-clause ones: a
-// collision-free schedule exists (contract-level search, whose agreement with
-// the simulator the tests above establish) iff the formula is satisfiable,
-// and every schedule found lifts to a satisfying assignment.
+// The reduction's answer on every formula over 3 variables with 1 to 4
+// distinct clauses (17 901 formulas; repeating a clause changes nothing):
+// a collision-free schedule exists (contract-level search, whose agreement
+// with the simulator the tests above establish) iff the formula is
+// satisfiable (brute force); every schedule found is collision-free in the
+// simulator and lifts to a satisfying assignment; and the exact solver on the
+// lattice says NO on every unsatisfiable one and YES (checked) on a spread of
+// the satisfiable ones.
 TEST(Compile, SmallFormulaSweep) {
   std::vector<std::vector<int>> clauses;  // the 26 non-empty, non-tautological clauses over 3 variables
   for (int mask = 1; mask < 27; ++mask) {
@@ -138,21 +144,27 @@ TEST(Compile, SmallFormulaSweep) {
   }
   ASSERT_EQ(clauses.size(), 26u);
   std::vector<Formula> sweep;
-  for (size_t a = 0; a < 26; ++a) {
-    sweep.push_back(test::make_formula(3, {clauses[a]}));
-    for (size_t b = a + 1; b < 26; ++b) {
-      sweep.push_back(test::make_formula(3, {clauses[a], clauses[b]}));
-      for (size_t d = b + 1; d < 26; ++d) sweep.push_back(test::make_formula(3, {clauses[a], clauses[b], clauses[d]}));
+  std::vector<size_t> pick;
+  std::function<void(size_t)> grow = [&](size_t from) {
+    if (!pick.empty()) {
+      Formula f = test::make_formula(3, {});
+      for (size_t i : pick) f.clauses.push_back(clauses[i]);
+      sweep.push_back(f);
     }
-  }
-  Rng rng(test::base_seed(4));
-  for (int t = 0; t < test::scaled(1500); ++t) {
-    Formula f = test::make_formula(3, {});
-    for (int i = 0; i < 4; ++i) f.clauses.push_back(clauses[rng.below(26)]);
-    sweep.push_back(f);
-  }
-  int sat = 0, unsat = 0;
-  for (const Formula& f : sweep) {
+    if (pick.size() == 4) return;
+    for (size_t i = from; i < clauses.size(); ++i) {
+      pick.push_back(i);
+      grow(i + 1);
+      pick.pop_back();
+    }
+  };
+  grow(0);
+  ASSERT_EQ(sweep.size(), 26u + 325 + 2600 + 14950);
+  // Under the sanitizers every k-th formula (all of them at scale 1).
+  const size_t step = static_cast<size_t>(std::max(1, 1000 / test::scaled(1000)));
+  int sat = 0, unsat = 0, solved = 0;
+  for (size_t i = 0; i < sweep.size(); i += step) {
+    const Formula& f = sweep[i];
     CompiledFormula c = compile_formula(f);
     std::vector<CouplingId> witness;
     bool yes = test::contract_schedule_exists(c, &witness);
@@ -165,9 +177,51 @@ TEST(Compile, SmallFormulaSweep) {
     } else {
       ++unsat;
     }
+    if (!is_sat || i % 16 == 0) {
+      SolveResult r = solve_discrete(c.instance);
+      ASSERT_EQ(r.status, is_sat ? SolveResult::Status::Yes : SolveResult::Status::No) << to_dimacs(f);
+      if (is_sat) {
+        EXPECT_TRUE(satisfies(f, assignment_from_schedule(c, r.order))) << to_dimacs(f);
+      }
+      ++solved;
+    }
   }
-  EXPECT_GT(unsat, 100);
-  EXPECT_GT(sat, 1000);
+  EXPECT_GT(unsat, 10);
+  EXPECT_GT(sat, 100);
+  std::cout << "sweep: " << sat + unsat << " formulas (" << sat << " SAT, " << unsat << " UNSAT), " << solved
+            << " solved on the lattice\n";
+}
+
+// A few hundred seeded random LSAT<=3 formulas (the reduction's real input):
+// the exact solver agrees with CaDiCaL, its schedules lift to satisfying
+// assignments, and CaDiCaL's models lift to collision-free schedules.
+TEST(Compile, RandomLsatFormulasEndToEnd) {
+  const uint64_t seed = test::base_seed(31);
+  int sat = 0, unsat = 0;
+  for (int t = 0; t < test::scaled(300); ++t) {
+    LsatParams p;
+    p.n = 3 + t % 8;
+    p.min_len = 1;
+    p.max_len = 3;
+    p.m = std::max(1, lsat_max_clauses(p.n, 1) * (30 + t % 50) / 100);  // sparse to full: SAT and UNSAT
+    p.seed = seed + static_cast<uint64_t>(t);
+    Formula f = random_lsat(p);
+    CompiledFormula c = compile_formula(f);
+    SatResult s = solve_sat(f);
+    SolveResult r = solve_discrete(c.instance);
+    ASSERT_NE(r.status, SolveResult::Status::Unknown);
+    ASSERT_EQ(r.status == SolveResult::Status::Yes, s.status == SatResult::Sat) << "seed " << p.seed << "\n" << to_dimacs(f);
+    if (s.status == SatResult::Sat) {
+      ++sat;
+      EXPECT_TRUE(satisfies(f, assignment_from_schedule(c, r.order))) << "seed " << p.seed;
+      EXPECT_FALSE(order_collides(c, schedule_from_assignment(c, s.model))) << "seed " << p.seed;
+    } else {
+      ++unsat;
+    }
+  }
+  EXPECT_GT(sat, 0);
+  EXPECT_GT(unsat, 0);
+  std::cout << "random LSAT<=3: " << sat << " SAT, " << unsat << " UNSAT\n";
 }
 
 // The continuous model always says YES on a compiled instance (the paper's
