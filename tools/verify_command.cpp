@@ -64,7 +64,7 @@ void draw(const VerifyResult& r, const std::string& dir) {
   const Instance& inst = r.instance;
   const std::string base = dir + "/" + stem(r.name);
   RenderOptions ro;
-  ro.title = r.name + ": " + std::to_string(r.nodes) + " nodes, " + std::to_string(r.couplings) + " couplings";
+  ro.title = stem(r.name) + ": " + std::to_string(r.nodes) + " nodes";
   cli::write_text_file(base + ".svg", render_svg(inst, ro));
   const auto& names = !r.solver_schedule.empty() ? r.solver_schedule : r.sat_schedule;
   std::vector<CouplingId> order;
@@ -83,11 +83,11 @@ void draw(const VerifyResult& r, const std::string& dir) {
   if (res.collision) {
     wo.time = res.collision->time;
     wo.collision = &*res.collision;
-    wo.title = r.name + ": every schedule collides; here x=false for all, " + describe(inst, sim.regions(), *res.collision);
+    wo.title = stem(r.name) + ": UNSAT; the all-false schedule collides";
     cli::write_text_file(base + "-collision.svg", render_svg(inst, wo));
   } else {
     wo.time = Rational(static_cast<int64_t>(order.size()));
-    wo.title = r.name + ": the witness schedule, completed without collision";
+    wo.title = stem(r.name) + ": witness schedule, done";
     cli::write_text_file(base + "-witness.svg", render_svg(inst, wo));
   }
 }
