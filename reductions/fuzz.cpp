@@ -27,17 +27,19 @@ Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
   Rng rng(s);
   const FuzzKind kind = p.kinds[index % p.kinds.size()];
   const int n = static_cast<int>(rng.between(p.min_vars, p.max_vars));
+  // Random and planted 3-SAT draw the same parameters, in this order.
+  auto three_sat = [&](auto params) {
+    params.n = n;
+    params.k = std::min(3, n);
+    params.m = static_cast<int>(rng.between(1, 7 * n));
+    params.seed = rng.next();
+    return params;
+  };
   Formula f;
   switch (kind) {
-    case FuzzKind::Ksat: {
-      KSatParams k;
-      k.n = n;
-      k.k = std::min(3, n);
-      k.m = static_cast<int>(rng.between(1, 7 * n));
-      k.seed = rng.next();
-      f = random_ksat(k);
+    case FuzzKind::Ksat:
+      f = random_ksat(three_sat(KSatParams{}));
       break;
-    }
     case FuzzKind::Lsat: {
       LsatParams l;
       l.n = n;
@@ -48,15 +50,9 @@ Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
       f = random_lsat(l);
       break;
     }
-    case FuzzKind::Planted: {
-      PlantedParams pl;
-      pl.n = n;
-      pl.k = std::min(3, n);
-      pl.m = static_cast<int>(rng.between(1, 7 * n));
-      pl.seed = rng.next();
-      f = planted_ksat(pl);
+    case FuzzKind::Planted:
+      f = planted_ksat(three_sat(PlantedParams{}));
       break;
-    }
   }
   f.comments.insert(f.comments.begin(), "gridlock fuzz formula " + std::to_string(index) + " of campaign seed " +
                                             std::to_string(p.seed) + " (" + fuzz_kind_name(kind) + ", formula seed " +

@@ -56,7 +56,8 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   LsatReduction red = reduce_to_lsat(f);
   r.reduced = !red.stats().identity;
   r.lsat = red.output();
-  CompiledFormula c = compile_formula(r.lsat, opt.mutation);
+  r.compiled = compile_formula(r.lsat, opt.mutation);
+  const CompiledFormula& c = r.compiled;
   r.ms_compile = ms_since(t0);
   r.nodes = c.stats.nodes;
   r.ops = c.stats.ops;
@@ -113,7 +114,6 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   if (r.gaps_witness == Check::Invalid) problem("running every coupling at time 0 collides in the simulator");
   r.problem = p;
   r.agree = p.empty();
-  r.instance = c.instance;
   return r;
 }
 
@@ -127,7 +127,7 @@ std::string write_reproducer(const VerifyResult& r, const std::string& dir, cons
   write("formula.cnf", to_dimacs(r.source));
   write("lsat.cnf", to_dimacs(r.lsat));
   std::ostringstream grid;
-  write_instance(grid, r.instance, {"reproducer of a disagreement: " + r.problem});
+  write_instance(grid, r.instance(), {"reproducer of a disagreement: " + r.problem});
   write("instance.grid", grid.str());
   auto lines = [](const std::vector<std::string>& v) {
     std::string s;

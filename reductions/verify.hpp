@@ -19,6 +19,7 @@
 #include "cnf/formula.hpp"
 #include "gadgets/mutation.hpp"
 #include "lattice/instance.hpp"
+#include "reductions/compile.hpp"
 
 namespace gridlock {
 
@@ -38,7 +39,8 @@ struct VerifyResult {
   std::string name;
   Formula source, lsat;  // F and G
   bool reduced = false;  // G came from to-lsat
-  Instance instance;
+  CompiledFormula compiled;  // G compiled (with the mutation, if any): the instance checked
+  const Instance& instance() const { return compiled.instance; }
   size_t nodes = 0, ops = 0, couplings = 0, max_coupling = 0;
   Tri sat = Tri::Unknown, discrete = Tri::Unknown, continuous = Tri::Unknown;
   Check sat_witness = Check::None;     // F's model -> schedule -> simulator

@@ -61,7 +61,7 @@ std::string sat_word(Tri t) { return t == Tri::Yes ? "SAT" : t == Tri::No ? "UNS
 // unsatisfiable formula, of one lifted schedule's collision).
 void draw(const VerifyResult& r, const std::string& dir) {
   fs::create_directories(dir);
-  const Instance& inst = r.instance;
+  const Instance& inst = r.instance();
   const std::string base = dir + "/" + stem(r.name);
   RenderOptions ro;
   ro.title = stem(r.name) + ": " + std::to_string(r.nodes) + " nodes";
@@ -72,8 +72,7 @@ void draw(const VerifyResult& r, const std::string& dir) {
     if (parse_order(inst, names, r.name, 0, order)) return;
   } else {
     // Unsatisfiable: the schedule of the all-false assignment must collide.
-    CompiledFormula c = compile_formula(r.lsat);
-    order = schedule_from_assignment(c, std::vector<bool>(static_cast<size_t>(r.lsat.num_vars) + 1, false));
+    order = schedule_from_assignment(r.compiled, std::vector<bool>(static_cast<size_t>(r.lsat.num_vars) + 1, false));
   }
   Schedule s = schedule_from_order(order);
   Simulator sim(inst);
