@@ -11,6 +11,9 @@ PACKAGES=(
   libgtest-dev librapidcheck-dev            # tests, property tests
   libbenchmark-dev                          # bench/
   librsvg2-bin                              # rsvg-convert: look at the SVGs as PNG
+  ccache                                    # shared objects between the builds
+  libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
+  chromium                                  # headless browser for the viewer's page tests
 )
 
 missing=()
