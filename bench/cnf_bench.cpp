@@ -16,7 +16,7 @@ namespace gridlock {
 namespace {
 
 Formula satlib(const std::string& set, int index) {
-  std::string path = std::string(GRIDLOCK_SHARED_DIR) + "/benchmarks/satlib/" + set + "-218/" + set + "-0" +
+  std::string path = std::string(GRIDLOCK_DATA_DIR) + "/satlib/" + set + "-218/" + set + "-0" +
                      std::to_string(index) + ".cnf";
   Formula f;
   if (auto e = read_dimacs_file(path, f)) throw std::runtime_error(e->str());

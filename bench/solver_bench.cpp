@@ -7,7 +7,7 @@
 //    gadgets for a CNF formula, written directly (no geometry): order chain
 //    y_1 < .. < y_n < z_1 < .. < z_n < u_1 < .. < u_m, variable gadgets and
 //    clause gadgets, couplings x_i:T, x_i:F, y_i, z_i, u_h. Runs the SATLIB
-//    samples in ../shared/benchmarks/satlib (through to-lsat).
+//    samples in tests/data/satlib (through to-lsat).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -164,7 +164,7 @@ ConstraintSystem gadget_system(const Formula& f) {
 
 std::vector<std::string> satlib_files(const std::string& set) {
   std::vector<std::string> files;
-  std::string dir = std::string(GRIDLOCK_SHARED_DIR) + "/benchmarks/satlib/" + set;
+  std::string dir = std::string(GRIDLOCK_DATA_DIR) + "/satlib/" + set;
   if (!std::filesystem::is_directory(dir)) return files;
   for (auto& e : std::filesystem::directory_iterator(dir))
     if (e.path().extension() == ".cnf") files.push_back(e.path().string());

@@ -199,14 +199,14 @@ TEST(CnfCli, ErrorsAreFileLineMessage) {
             "gridlock: error: cnf gen: give exactly one of --m and --ratio\n");
   EXPECT_EQ(run_gridlock({"cnf", "gen", "nope", "--n", "5", "--m", "1"}).exit_code, 1);
   EXPECT_EQ(run_gridlock({"cnf", "solve", "--solver", "exhaustive",
-                          GRIDLOCK_SHARED_DIR "/benchmarks/satlib/uf50-218/uf50-01.cnf"})
+                          GRIDLOCK_DATA_DIR "/satlib/uf50-218/uf50-01.cnf"})
                 .exit_code,
             1);
   std::filesystem::remove_all(dir);
 }
 
 TEST(CnfCli, JsonEverywhere) {
-  const std::string uf = GRIDLOCK_SHARED_DIR "/benchmarks/satlib/uf20-91/uf20-01.cnf";
+  const std::string uf = GRIDLOCK_DATA_DIR "/satlib/uf20-91/uf20-01.cnf";
   auto solve = run_gridlock({"cnf", "solve", "--json", uf});
   EXPECT_EQ(solve.exit_code, 10);
   auto j = nlohmann::json::parse(solve.out);
@@ -274,8 +274,8 @@ TEST(CnfCli, SolveLimitsAndOracles) {
   EXPECT_NE(r.out.find("\ns UNKNOWN\n"), std::string::npos);
   auto t = run_gridlock({"cnf", "solve", "--time", "0.05", "-"}, php);
   EXPECT_EQ(t.exit_code, 0);
-  const std::string uf = GRIDLOCK_SHARED_DIR "/benchmarks/satlib/uf20-91/uf20-02.cnf";
-  const std::string uuf = GRIDLOCK_SHARED_DIR "/benchmarks/satlib/uuf50-218/uuf50-02.cnf";
+  const std::string uf = GRIDLOCK_DATA_DIR "/satlib/uf20-91/uf20-02.cnf";
+  const std::string uuf = GRIDLOCK_DATA_DIR "/satlib/uuf50-218/uuf50-02.cnf";
   for (const char* solver : {"cadical", "dpll", "exhaustive"}) {
     auto s = run_gridlock({"cnf", "solve", "--solver", solver, uf});
     EXPECT_EQ(s.exit_code, 10) << solver;

@@ -144,7 +144,7 @@ TEST(Dimacs, HugeHeaderCountsCostNothing) {
 
 TEST(Dimacs, ReadsEverySatlibSample) {
   auto files = test::satlib_files();
-  ASSERT_EQ(files.size(), 300u) << "the SATLIB sample in " GRIDLOCK_SHARED_DIR " is incomplete";
+  ASSERT_EQ(files.size(), 300u) << "the SATLIB sample in " GRIDLOCK_DATA_DIR " is incomplete";
   for (const auto& file : files) {
     Formula f;
     auto e = read_dimacs_file(file.path, f);

@@ -14,7 +14,7 @@ namespace {
 using test::run_gridlock;
 
 const std::string kExamples = GRIDLOCK_SOURCE_DIR "/examples/formulas/";
-const std::string kSatlib = GRIDLOCK_SHARED_DIR "/benchmarks/satlib/";
+const std::string kSatlib = GRIDLOCK_DATA_DIR "/satlib/";
 
 TEST(CompileCli, WritesAReadableInstanceAndPicture) {
   std::string dir = test::temp_dir();

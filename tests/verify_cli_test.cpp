@@ -18,7 +18,7 @@ using test::run_gridlock;
 namespace fs = std::filesystem;
 
 const std::string kExamples = GRIDLOCK_SOURCE_DIR "/examples/formulas";
-const std::string kSatlib = GRIDLOCK_SHARED_DIR "/benchmarks/satlib/";
+const std::string kSatlib = GRIDLOCK_DATA_DIR "/satlib/";
 
 TEST(VerifyCli, BundledExamplesAgreeWithEveryCertificateChecked) {
   std::string dir = test::temp_dir();

@@ -14,7 +14,7 @@ Formula make_formula(int n, std::vector<std::vector<int>> clauses) {
 
 std::vector<SatlibFile> satlib_files() {
   std::vector<SatlibFile> files;
-  const std::string root = GRIDLOCK_SHARED_DIR "/benchmarks/satlib";
+  const std::string root = GRIDLOCK_DATA_DIR "/satlib";
   for (const char* dir : {"uf20-91", "uf50-218", "uuf50-218"}) {
     const bool sat = dir[0] == 'u' && dir[1] == 'f';
     std::error_code ec;

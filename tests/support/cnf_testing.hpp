@@ -12,7 +12,7 @@ namespace gridlock::test {
 
 struct SatlibFile {
   std::string path;
-  bool sat;  // the label from ../shared/benchmarks/satlib/README.md: uf* SAT, uuf* UNSAT
+  bool sat;  // the label from tests/data/satlib/README.md: uf* SAT, uuf* UNSAT
 };
 
 // All files of the three SATLIB folders, sorted by path (300 when complete).
