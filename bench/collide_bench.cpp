@@ -18,10 +18,10 @@
 #include <string>
 
 #include "bench_families.hpp"
+#include "collide/collide.hpp"
+#include "collide/collide_tree.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
-#include "solver/collide.hpp"
-#include "solver/collide_tree.hpp"
 
 namespace gridlock {
 namespace {

@@ -1,12 +1,12 @@
-// Colliding Schedule on hand-made cases: MODEL.md's worked cases, growth
+// Colliding Schedule on hand-made cases: docs/model.md's worked cases, growth
 // into an occupied cell, touching is no collision, contraction widths,
 // cycles; every applicable method, both models.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
+#include "collide/collide.hpp"
 #include "lattice/random_instance.hpp"
-#include "solver/collide.hpp"
 #include "support/instance_io.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
@@ -60,8 +60,9 @@ TEST(CollideCases, ModelCase3Block) {
   Instance single = parse(
       "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\no a expand 0 0 +x\n");
   CollideResult r = find_collision(single, TimeModel::Discrete);
-  EXPECT_TRUE(r.collides);
+  ASSERT_TRUE(r.collides);
   EXPECT_EQ(r.algorithm, "cycle");
+  ASSERT_TRUE(r.simulated.has_value());
   EXPECT_EQ(r.simulated->kind, Collision::Kind::Cycle);
   expect_answer(single, TimeModel::Continuous, true);
 }

@@ -1,10 +1,10 @@
-// The per-pair exact tests of solver/collide_pairs against vertex
+// The per-pair exact tests of collide/collide_pairs against vertex
 // enumeration, on random region forms and random path nets (every kind of
 // width change, couplings shared between the path and the own operations).
 #include <gtest/gtest.h>
 
+#include "collide/collide_pairs.hpp"
 #include "lattice/random_instance.hpp"
-#include "solver/collide_pairs.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
 

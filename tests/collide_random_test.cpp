@@ -3,9 +3,9 @@
 // algorithms that apply to an instance against each other.
 #include <gtest/gtest.h>
 
+#include "collide/collide.hpp"
+#include "collide/collide_tree.hpp"
 #include "lattice/random_instance.hpp"
-#include "solver/collide.hpp"
-#include "solver/collide_tree.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
 

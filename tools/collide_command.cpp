@@ -1,6 +1,6 @@
 // gridlock collide: Colliding Schedule (is there a schedule that collides?).
+#include "collide/collide.hpp"
 #include "lattice/simulate.hpp"
-#include "solver/collide.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/output.hpp"

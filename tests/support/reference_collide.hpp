@@ -1,4 +1,4 @@
-// Brute-force twins for Colliding Schedule (solver/collide.hpp), for tiny
+// Brute-force twins for Colliding Schedule (collide/collide.hpp), for tiny
 // instances only.
 //
 // Discrete: every order of the couplings through the exact Simulator.
@@ -8,17 +8,17 @@
 // inequalities over the whole cube of progresses p in [0,1]^k by vertex
 // enumeration: the closed polytope {g >= 0, 0 <= p <= 1} has non-empty
 // strict interior iff the centroid of its vertices satisfies every g > 0.
-// The faces are written again from MODEL.md's words (not from the solver's
+// The faces are written again from docs/model.md's words (not from the solver's
 // RegionForm), on a depth-first tree of the instance's own edges.
 #pragma once
 
 #include <optional>
 #include <vector>
 
+#include "collide/collide_pairs.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
-#include "solver/collide_pairs.hpp"
 
 namespace gridlock::test {
 
@@ -45,7 +45,7 @@ CouplingDisplacements coupling_displacements(const Instance& inst);
 // at full progress (zero without an operation).
 Vec2 edge_vector(const Instance& inst, uint32_t e, NodeId from);
 
-// One pair of region forms (solver/collide_pairs.hpp) with the path's nets,
+// One pair of region forms (collide/collide_pairs.hpp) with the path's nets,
 // couplings numbered below nq: continuous by vertex enumeration over the
 // cube; discrete by every done set S and running coupling q, each a vertex
 // enumeration in the one variable s.

@@ -1,5 +1,5 @@
 // Colliding Schedule (paper, "Algorithms for Colliding Schedule"; semantics:
-// ../shared/MODEL.md): is there a schedule that causes a collision?
+// docs/model.md): is there a schedule that causes a collision?
 //
 // find_collision picks the algorithm that fits the instance (docs/collide.md):
 //   1. a coupling with a non-zero net vector around some face walk: running
@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "collide/collide_pairs.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
-#include "solver/collide_pairs.hpp"
 
 namespace gridlock {
 

@@ -1,4 +1,4 @@
-#include "solver/collide_pairs.hpp"
+#include "collide/collide_pairs.hpp"
 
 #include <algorithm>
 #include <map>

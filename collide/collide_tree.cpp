@@ -1,4 +1,4 @@
-#include "solver/collide_tree.hpp"
+#include "collide/collide_tree.hpp"
 
 #include <algorithm>
 #include <stdexcept>

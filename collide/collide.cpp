@@ -1,9 +1,9 @@
-#include "solver/collide.hpp"
+#include "collide/collide.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "solver/collide_tree.hpp"
+#include "collide/collide_tree.hpp"
 
 namespace gridlock {
 
