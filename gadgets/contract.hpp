@@ -2,7 +2,7 @@
 //
 // Every gadget of the reduction is a small tree with horizontal expansions
 // only. Nodes never leave their rows, so a collision is a gap (the empty
-// cells between two consecutive nodes of a row) going negative (MODEL.md,
+// cells between two consecutive nodes of a row) going negative (docs/model.md,
 // "Consequences worth testing"). A gap's size after a set S of operations is
 //   size + sum over the operations k on the tree path between its two nodes
 //          of sign(k) * [k in S],      sign = +1 widens, -1 narrows.

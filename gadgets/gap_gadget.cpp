@@ -9,7 +9,7 @@ GadgetPlacement place_gap_gadget(Canvas& canvas, int64_t row, const GapGadgetSpe
   if (spec.gap < 0) throw std::logic_error("gap gadget: negative gap");
   const auto nw = static_cast<int64_t>(spec.widen.size());
   const auto nn = static_cast<int64_t>(spec.narrow.size());
-  // Two operations never share a node (MODEL.md), so the expansions sit on
+  // Two operations never share a node (docs/model.md), so the expansions sit on
   // every other edge: widening j on the backbone edge x = 2j, narrowing j on
   // the hook edge x = b + 2j.
   const int64_t b = spec.gap + 1;

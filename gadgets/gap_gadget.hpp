@@ -34,7 +34,7 @@ struct GapGadgetSpec {
   bool detach_widening = false;
 };
 
-// Two operations never share a node (MODEL.md), hence the plain edges between
+// Two operations never share a node (docs/model.md), hence the plain edges between
 // consecutive expansions.
 //
 // Draws the gadget with its attach node at (0, row); uses rows row, row+1 and

@@ -1,5 +1,5 @@
 // The order gadget a < b (paper, proof of the NP-completeness theorem, and
-// MODEL.md worked case 2): b collides unless a ran before it.
+// docs/model.md worked case 2): b collides unless a ran before it.
 //
 // It is the one-gap gadget (gadgets/gap_gadget.hpp) with gap 0, a on the
 // backbone (widens) and b on the hook (narrows):

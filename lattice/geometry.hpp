@@ -1,6 +1,6 @@
 // Grid geometry: directions, integer vectors and cells.
 //
-// A cell (x, y) is the closed unit square [x, x+1] x [y, y+1] (MODEL.md).
+// A cell (x, y) is the closed unit square [x, x+1] x [y, y+1] (docs/model.md).
 #pragma once
 
 #include <cstdint>

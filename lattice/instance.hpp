@@ -1,4 +1,4 @@
-// The lattice model of ../shared/MODEL.md: a connected shape of unit-square
+// The lattice model of docs/model.md: a connected shape of unit-square
 // nodes on Z^2, operations on it, and a coupling partition of the operations.
 //
 // An Instance is always valid once built: InstanceBuilder checks every rule
@@ -119,7 +119,7 @@ class InstanceBuilder {
   std::optional<std::string> add_edge(Vec2 a, Vec2 b);
   // kind Expand/Contract: c = u + dir must hold a node joined to u by an edge.
   // kind Grow: c must not hold a node joined to u by an edge (an unjoined node
-  // there is allowed: the growth then collides at once, MODEL.md).
+  // there is allowed: the growth then collides at once, docs/model.md).
   std::optional<std::string> add_op(const std::string& name, OpKind kind, Vec2 u, Dir dir);
   std::optional<std::string> add_coupling(const std::string& name, const std::vector<std::string>& ops);
   std::optional<std::string> set_anchor(Vec2 cell);

@@ -1,4 +1,4 @@
-// Motion: how operations move the shape (MODEL.md, "Motion").
+// Motion: how operations move the shape (docs/model.md, "Motion").
 //
 // Positions are computed on a spanning tree rooted at the anchor. Every tree
 // edge that carries an operation k moves the child's side relative to the
@@ -70,7 +70,7 @@ struct Regions {
 // "(3,1)", "node inserted by a", "node grown by g".
 std::string region_label(const Instance& inst, const Regions& regions, uint32_t r);
 
-// Cycle test data (MODEL.md "Cycle collision"). The face walks of the plane
+// Cycle test data (docs/model.md "Cycle collision"). The face walks of the plane
 // grid graph generate its cycle space, so the displacement summed around
 // every cycle stays zero iff it does around every face walk. For each face
 // walk we keep, per coupling with a non-zero sum, that coupling's net vector:

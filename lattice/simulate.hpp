@@ -1,6 +1,6 @@
 // The exact simulator: does a schedule collide, and if so, when, where, how.
 //
-// Semantics: ../shared/MODEL.md. All arithmetic is on integers: times and
+// Semantics: docs/model.md. All arithmetic is on integers: times and
 // coordinates are scaled by the common denominator D of the start times, so
 // every position at an event time is an integer multiple of 1/D, and within
 // an interval between consecutive events every face moves linearly.

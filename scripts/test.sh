@@ -1,20 +1,66 @@
 #!/usr/bin/env bash
-# The test command: sets up, builds, and runs the whole test suite twice:
-# once optimised, once under AddressSanitizer + UndefinedBehaviorSanitizer.
-# Then runs every libFuzzer target for a short fixed time.
-#   --quick    only the optimised build (no sanitizers, no fuzzing)
+# The test command (CI runs exactly this). In order:
+#  1. no file of the repository reaches beside it (scripts/check_self_contained.sh);
+#  2. the optimised build and the whole suite, in a copy of the repository in
+#     a fresh temporary folder with nothing beside it: this proves the suite
+#     needs nothing outside the repository;
+#  3. that build installed into a temporary prefix, and examples/api built
+#     against it with find_package(gridlock) and run on two formulas;
+#  4. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/);
+#  5. every libFuzzer target for a short fixed time.
+# Every build treats warnings as errors (GRIDLOCK_WERROR).
+#   --quick    steps 1 to 3 only
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
 [ "${1:-}" = "--quick" ] && quick=1
+bash scripts/setup.sh
 
-echo "== optimised build and tests"
-BUILD_DIR=build bash scripts/build.sh
-(cd build && ctest --output-on-failure -j "$(nproc)")
+echo "== self-contained: no file reaches outside the repository"
+bash scripts/check_self_contained.sh
+
+echo "== optimised build and tests, from a copy of the repository with nothing beside it"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+copy="$work/gridlock"
+mkdir "$copy"
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  # Tracked files plus new ones not yet committed (never build trees or out/).
+  git ls-files -co --exclude-standard -z | xargs -0 cp --parents -t "$copy"
+else
+  tar --exclude='./build*' --exclude='./out' --exclude='./.git' -cf - . | tar -xf - -C "$copy"
+fi
+if [ -e "$work/shared" ]; then
+  echo "test.sh: $work/shared exists; the copy must have nothing beside it" >&2
+  exit 1
+fi
+# ccache keys on paths relative to the copy, so repeated runs reuse objects.
+export CCACHE_BASEDIR="$copy" CCACHE_NOHASHDIR=1
+(cd "$copy" && BUILD_DIR=build bash scripts/build.sh -DGRIDLOCK_WERROR=ON)
+(cd "$copy/build" && ctest --output-on-failure -j "$(nproc)")
+
+echo "== the API example against the installed package"
+cmake --install "$copy/build" --prefix "$work/prefix" >/dev/null
+cmake -S "$copy/examples/api" -B "$work/api" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion -Werror" >/dev/null
+cmake --build "$work/api" -j "$(nproc)" >/dev/null
+for case in "tiny-sat.cnf 10" "tiny-unsat.cnf 20" "uf20-01.cnf 10"; do
+  set -- $case
+  status=0
+  "$work/api/gridlock_api" "examples/formulas/$1" >"$work/api.out" || status=$?
+  if [ "$status" -ne "$2" ]; then
+    cat "$work/api.out"
+    echo "test.sh: examples/api on $1 exited $status, expected $2" >&2
+    exit 1
+  fi
+  echo "examples/api $1: exit $status, $(tail -n 1 "$work/api.out" | cut -c1-60)"
+done
+unset CCACHE_BASEDIR CCACHE_NOHASHDIR
 
 if [ $quick -eq 0 ]; then
   echo "== ASan + UBSan build and tests"
-  BUILD_DIR=build-asan BUILD_TYPE=Debug bash scripts/build.sh -DGRIDLOCK_SANITIZE=ON -DGRIDLOCK_BENCH=OFF
+  BUILD_DIR=build-asan BUILD_TYPE=Debug bash scripts/build.sh -DGRIDLOCK_SANITIZE=ON -DGRIDLOCK_BENCH=OFF \
+    -DGRIDLOCK_WERROR=ON
   # Sanitized runs are slower: the randomized comparisons take fewer cases.
   (cd build-asan && GRIDLOCK_TEST_SCALE=0.3 ASAN_OPTIONS=detect_leaks=1 \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$(nproc)")

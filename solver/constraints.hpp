@@ -1,7 +1,7 @@
 // Collision constraints: the discrete model as arithmetic on couplings.
 //
 // In the discrete model only the set S of couplings done decides where
-// everything is (MODEL.md). Every face of every region is its base coordinate
+// everything is (docs/model.md). Every face of every region is its base coordinate
 // plus a sum over couplings q of [q in S] * (integer), so for two regions A, B
 // each quantity below is such a linear form in the indicator vector of S:
 //   A.xhi - B.xlo,  B.xhi - A.xlo,  A.yhi - B.ylo,  B.yhi - A.ylo   (overlap)
@@ -17,7 +17,7 @@
 // Two builders:
 //  - gap constraints (horizontal-only instances): nodes stay in their rows,
 //    and a collision is a gap between consecutive nodes of a row going
-//    negative (MODEL.md, "Consequences"). One form per gap: the overlap
+//    negative (docs/model.md, "Consequences"). One form per gap: the overlap
 //    right(a) - left(b), growths counted as part of their node. O(n) pairs.
 //  - pair constraints (any instance): every pair of regions that could ever
 //    overlap (a necessary distance test against the operations on the tree

@@ -12,7 +12,7 @@ namespace gridlock {
 namespace {
 
 // The node whose displacement a node's left (right) face follows: itself,
-// except for a contracting v, whose face toward u follows u (MODEL.md).
+// except for a contracting v, whose face toward u follows u (docs/model.md).
 NodeId face_ref(const Instance& inst, NodeId w, bool right_face) {
   OpId k = inst.op_of_node(w);
   if (k == kNone) return w;

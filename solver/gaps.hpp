@@ -1,6 +1,6 @@
 // The continuous model for horizontal-only instances, in linear time
 // (paper, Theorem "Collision-free Schedule is solvable in linear time if all
-// operations are horizontal"; MODEL.md, "Consequences worth testing").
+// operations are horizontal"; docs/model.md, "Consequences").
 //
 // Horizontal operations keep every node in its row, so a node collision is a
 // gap between two consecutive nodes of a row going negative. All gap and

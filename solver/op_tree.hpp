@@ -2,7 +2,7 @@
 //
 // In the discrete model the position of a node is its cell plus the sum of
 // the vectors of the done operations on its tree path from the anchor
-// (MODEL.md, "Motion"). The solvers need relative positions as sums over
+// (docs/model.md, "Motion"). The solvers need relative positions as sums over
 // couplings: disp(b) - disp(a) = sum over the operations k on the tree path
 // between a and b of (+-) vec(k) * [coupling(k) done]. Contracting every tree
 // edge without an operation leaves a tree of rigid components whose edges are

@@ -1,4 +1,4 @@
-// The exact solver of Discrete Collision-free Schedule (MODEL.md, "Couplings
+// The exact solver of Discrete Collision-free Schedule (docs/model.md, "Couplings
 // and schedules"): is there an order of all couplings, run one at a time,
 // that performs every operation with no collision?
 //

@@ -1,4 +1,4 @@
-// The exact simulator: MODEL.md's worked cases, each operation's geometry,
+// The exact simulator: docs/model.md's worked cases, each operation's geometry,
 // anchor independence, and the fast simulator against the all-pairs twin.
 #include <gtest/gtest.h>
 
@@ -32,7 +32,7 @@ Schedule times(const Instance& inst, const std::vector<std::pair<std::string, Ra
   return s;
 }
 
-// --- MODEL.md worked cases ---------------------------------------------
+// --- docs/model.md worked cases ---------------------------------------------
 
 TEST(ModelCases, Case1TwoGrowthsAlwaysMeet) {
   Instance inst = load("model-case1-two-growths.grid");

@@ -2,7 +2,7 @@
 //
 // Independent of the fast simulator on purpose: its own spanning tree (from
 // any root, so anchor independence is tested too), region rectangles written
-// again from MODEL.md's words, overlap found by sampling between the roots of
+// again from docs/model.md's words, overlap found by sampling between the roots of
 // the eight linear constraints (not by solving them), and cycle collisions
 // from the fundamental cycles of its tree (not from face walks).
 // O(k (n^2 + e n)) rationals: for small instances only.
