@@ -8,12 +8,13 @@ PACKAGES=(
   libcadical-dev                            # the SAT solver, linked as a library
   libboost-program-options-dev              # the command line
   nlohmann-json3-dev                        # --json output, manifests
-  libgtest-dev librapidcheck-dev            # tests, property tests
+  libgtest-dev                              # tests
   libbenchmark-dev                          # bench/
   librsvg2-bin                              # rsvg-convert: look at the SVGs as PNG
   ccache                                    # shared objects between the builds
   libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
   chromium                                  # headless browser for the viewer's page tests
+  clang-format clang-tidy                   # scripts/lint.sh
 )
 
 missing=()
