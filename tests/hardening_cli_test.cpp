@@ -3,6 +3,7 @@
 // real binary on real files; docs/errors.md lists the classes.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -273,6 +274,20 @@ TEST(HardeningCli, HeaderCountsAreCheckedBeforeAllocating) {
                        ":1: the compiled instance would have 33583009 nodes (43n + 5L + 15m - 11), more than the "
                        ".grid format's limit of 33554432\n");
   EXPECT_FALSE(fs::exists(dir + "/w.grid"));
+  // Out of memory names the file and the task (address space limited to
+  // 400 MB for the child; the instance would need several GB).
+  std::string huge = test::write_file(dir + "/huge.cnf", "p cnf 700000 1\n1 0\n");
+  struct rlimit old {};
+  getrlimit(RLIMIT_AS, &old);
+  struct rlimit small = old;
+  small.rlim_cur = 400ull << 20;
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &small), 0);
+  auto p = test::start_gridlock({"compile", huge, "-o", dir + "/huge.grid"});
+  setrlimit(RLIMIT_AS, &old);
+  auto oom = test::finish_gridlock(p);
+  EXPECT_EQ(oom.exit_code, 1);
+  EXPECT_EQ(oom.err, "gridlock: error: " + huge + ": out of memory while compiling the formula\n");
+  EXPECT_FALSE(fs::exists(dir + "/huge.grid"));
   // Just inside both limits: accepted (to-lsat passes it through).
   std::string ok = test::write_file(dir + "/ok.cnf", "p cnf 1048577 1\n1 0\n");
   EXPECT_EQ(run_gridlock({"cnf", "to-lsat", ok, "-o", dir + "/ok-l.cnf"}).exit_code, 0);

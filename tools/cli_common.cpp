@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -56,6 +57,7 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
 
 Instance load_instance(const std::string& path) {
   Instance inst;
+  Activity act(path == "-" ? "<stdin>" : path, "reading the instance");
   if (auto err = read_instance_file(path, inst)) throw UserError(*err);
   return inst;
 }
@@ -182,15 +184,28 @@ int interrupted_exit_code() { return 128 + stop_signal().load(); }
 
 namespace {
 Activity* g_activity = nullptr;
-}
+std::string g_unwound;  // the innermost activity an exception left, "FILE: out of memory while WHAT"
+}  // namespace
 
 Activity::Activity(std::string file, std::string what)
-    : file_(std::move(file)), what_(std::move(what)), outer_(g_activity) {
+    : file_(std::move(file)), what_(std::move(what)), outer_(g_activity), uncaught_(std::uncaught_exceptions()) {
   g_activity = this;
 }
-Activity::~Activity() { g_activity = outer_; }
+
+Activity::~Activity() {
+  g_activity = outer_;
+  // Unwinding: main's handler runs after every destructor, so the innermost
+  // activity (the first destroyed) is remembered here.
+  if (std::uncaught_exceptions() > uncaught_ && g_unwound.empty()) {
+    try {
+      g_unwound = Diagnostic{file_, 0, "out of memory while " + what_}.str();
+    } catch (...) {  // no memory left even for the message: main says "out of memory"
+    }
+  }
+}
 
 std::string Activity::out_of_memory_message() {
+  if (!g_unwound.empty()) return g_unwound;
   if (!g_activity) return "out of memory";
   return Diagnostic{g_activity->file_, 0, "out of memory while " + g_activity->what_}.str();
 }

@@ -89,13 +89,15 @@ class Activity {
   ~Activity();
   Activity(const Activity&) = delete;
   Activity& operator=(const Activity&) = delete;
-  // "FILE: out of memory while WHAT" of the innermost live activity, or
-  // "out of memory" when none is.
+  // "FILE: out of memory while WHAT" of the innermost activity that was
+  // alive when the exception was thrown (recorded as the stack unwinds), or
+  // "out of memory" when none was.
   static std::string out_of_memory_message();
 
  private:
   std::string file_, what_;
   Activity* outer_;
+  int uncaught_;  // exceptions in flight at construction: more at destruction = unwinding
 };
 
 }  // namespace gridlock::cli

@@ -305,6 +305,9 @@ int run_solve(const std::vector<std::string>& args) {
                        "when a limit is hit (exit 0). The model is checked against the formula first."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
+  SatLimits lim;  // options first: a bad value is reported before the file is read
+  if (auto c = cli::count_arg_opt(vm, "conflicts", 1, INT_MAX)) lim.conflicts = static_cast<int64_t>(*c);
+  if (auto t = cli::seconds_arg_opt(vm, "time")) lim.seconds = *t;
   const Formula f = load(path, vm.count("no-strict-count") == 0, cli::FormulaUse::Solve);
   cli::Activity act(path, "solving the formula");
   const std::string solver = vm["solver"].as<std::string>();
@@ -313,9 +316,6 @@ int run_solve(const std::vector<std::string>& args) {
   SatResult r;
   std::string name;
   if (solver == "cadical") {
-    SatLimits lim;
-    if (auto c = cli::count_arg_opt(vm, "conflicts", 1, INT_MAX)) lim.conflicts = static_cast<int64_t>(*c);
-    if (auto t = cli::seconds_arg_opt(vm, "time")) lim.seconds = *t;
     r = solve_sat(f, lim);
     name = sat_solver_name();
   } else if (solver == "dpll") {

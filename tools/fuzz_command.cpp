@@ -3,6 +3,7 @@
 // from --seed; --shard K/N splits a campaign across processes or machines.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -127,7 +128,9 @@ int run_fuzz(const std::vector<std::string>& args) {
   for (uint64_t i = first; i < last && !stop_requested(); i += shards) {
     if (time_limit > 0 && elapsed() >= time_limit) break;
     Formula f = fuzz_formula(p, i);
-    VerifyResult r = verify_formula(f, "formula " + std::to_string(i), vo);
+    VerifyOptions vi = vo;  // --time bounds the campaign: the last formula's solver gets what is left
+    if (time_limit > 0) vi.solve_seconds = std::min(vo.solve_seconds, std::max(time_limit - elapsed(), 0.001));
+    VerifyResult r = verify_formula(f, "formula " + std::to_string(i), vi);
     if (stop_requested()) break;  // answers may be cut short: the formula is not counted
     ++done;
     sat += r.sat == Tri::Yes;
