@@ -7,9 +7,9 @@
 #include <stdexcept>
 
 #include "cnf/dimacs.hpp"
-#include "common/atomic_file.hpp"
 #include "cnf/lsat.hpp"
 #include "cnf/sat_solver.hpp"
+#include "common/atomic_file.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"

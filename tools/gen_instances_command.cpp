@@ -14,9 +14,9 @@
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
-#include "common/limits.hpp"
 #include "cnf/generate.hpp"
 #include "cnf/sat_solver.hpp"
+#include "common/limits.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
