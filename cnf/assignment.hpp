@@ -1,11 +1,17 @@
-// Assignments as files: the 'v' lines a SAT solver prints, or bare literals.
+// Assignments (models): SAT-competition answers in files, or literals on the
+// command line.
 //
-//   c comment            skipped (as is an 's ...' status line)
-//   v 1 -2 3             a leading 'v' is dropped; literals v / -v
-//   v -4 0               a 0 ends the assignment (optional)
+// A file is a SAT-competition answer, as `gridlock cnf solve` and every
+// competition solver print it:
 //
-// So the output of `gridlock cnf solve` and of any SAT-competition solver can
-// be read back as it is.
+//   c comment            any number, anywhere
+//   s SATISFIABLE        exactly one status line (another status: no model)
+//   v 1 -2 3             literals v / -v, over one or more 'v' lines
+//   v -4 0               a 0 ends the model; nothing but comments after it
+//
+// Every variable 1..num_vars must be given exactly once (a literal may
+// repeat, never with both signs). Errors carry FILE:LINE ("FILE:1" for an
+// empty file; the last line for what is missing at the end).
 #pragma once
 
 #include <string>
@@ -15,12 +21,23 @@
 
 namespace gridlock {
 
-// Reads an assignment of variables 1..num_vars into value (indexed
-// 1..num_vars, value[0] unused). Variables not mentioned are false. Errors
-// (with file and line): a token that is not an integer, a literal beyond
-// num_vars, a variable given twice with opposite signs, text after the 0.
-// "-" reads standard input. O(size of input + num_vars).
+// Reads a SAT-competition answer (see above) into value (indexed
+// 1..num_vars, value[0] unused). "-" reads standard input; a directory is
+// refused. O(size of input + num_vars).
 MaybeError read_assignment_file(const std::string& path, int num_vars, std::vector<bool>& value);
 MaybeError read_assignment(std::istream& in, const std::string& name, int num_vars, std::vector<bool>& value);
+
+// Literals given as text ("1 -2 3", an optional trailing 0), every variable
+// once; errors name `name` (e.g. "--model") without a line.
+MaybeError parse_assignment_literals(const std::string& text, const std::string& name, int num_vars,
+                                     std::vector<bool>& value);
+
+// True if text holds only digits, '-' and blanks (and some digit).
+bool looks_like_literals(const std::string& text);
+
+// The --model argument of the command line: a file (or "-") holding a
+// SAT-competition answer, or, when no such file exists and the text looks
+// like literals, the literals themselves ("1 -2 3").
+MaybeError read_model(const std::string& arg, int num_vars, std::vector<bool>& value);
 
 }  // namespace gridlock

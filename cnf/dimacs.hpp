@@ -27,6 +27,9 @@ struct DimacsOptions {
   // because it almost always means a truncated or concatenated file. false:
   // the header's clause count is not checked (the variable count still is).
   bool strict_count = true;
+  // If set, receives the line of the 'p cnf' header (0 if none was read), so
+  // that size checks after reading can point at it.
+  long* header_line = nullptr;
 };
 
 // Reads one formula. Returns nullopt and fills `out` (num_vars from the

@@ -101,6 +101,7 @@ MaybeError Reader::header(const std::vector<std::string_view>& tok, std::string_
   if (auto e = count(tok[2], "variable", declared_vars_)) return e;
   if (auto e = count(tok[3], "clause", declared_clauses_)) return e;
   header_line_ = line_no_;
+  if (opt_.header_line) *opt_.header_line = line_no_;
   out_->num_vars = static_cast<int>(declared_vars_);
   return std::nullopt;
 }
@@ -183,7 +184,7 @@ MaybeError Reader::run(Formula& out) {
   if (in_.bad()) return error("read error");
   if (header_line_ == 0) {
     if (percent) return error("missing header 'p cnf VARIABLES CLAUSES' before '%'");
-    line_no_ = 0;
+    line_no_ = any_content ? 0 : 1;
     return any_content ? error("missing header 'p cnf VARIABLES CLAUSES'") : error("empty input: no 'p cnf' header");
   }
   if (clause_open_) {

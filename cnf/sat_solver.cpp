@@ -8,6 +8,8 @@
 #include <climits>
 #include <stdexcept>
 
+#include "common/limits.hpp"
+
 namespace gridlock {
 
 namespace {
@@ -15,14 +17,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // CaDiCaL polls its terminator regularly during search; this one ends the
-// search at a wall-clock deadline.
-class Deadline : public CaDiCaL::Terminator {
+// search at a wall-clock deadline or at a stop request (common/limits.hpp).
+class SatDeadline : public CaDiCaL::Terminator {
  public:
-  explicit Deadline(Clock::time_point at) : at_(at) {}
-  bool terminate() override { return Clock::now() >= at_; }
+  SatDeadline(Clock::time_point at, bool limited) : at_(at), limited_(limited) {}
+  bool terminate() override { return stop_requested() || (limited_ && Clock::now() >= at_); }
 
  private:
   Clock::time_point at_;
+  bool limited_;
 };
 
 }  // namespace
@@ -55,11 +58,12 @@ SatResult solve_sat(const Formula& f, const SatLimits& limits) {
   }
   if (limits.conflicts >= 0)
     solver.limit("conflicts", static_cast<int>(std::min<int64_t>(limits.conflicts, INT_MAX)));
-  Deadline deadline(start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                                std::max(limits.seconds, 0.0))));
-  if (limits.seconds > 0) solver.connect_terminator(&deadline);
+  SatDeadline deadline(start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                                   std::max(limits.seconds, 0.0))),
+                       limits.seconds > 0);
+  solver.connect_terminator(&deadline);
   const int code = solver.solve();
-  if (limits.seconds > 0) solver.disconnect_terminator();
+  solver.disconnect_terminator();
   res.status = code == 10 ? SatResult::Sat : code == 20 ? SatResult::Unsat : SatResult::Unknown;
   if (res.status == SatResult::Sat) {
     res.model.assign(static_cast<size_t>(f.num_vars) + 1, false);

@@ -1,5 +1,7 @@
 // Reader of the .grid format; see lattice/grid_format.hpp for the grammar.
+#include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -101,6 +103,7 @@ std::vector<std::string_view> split(std::string_view s) {
 MaybeError Reader::run(Instance& out) {
   InstanceBuilder b;
   bool header = false;
+  long anchor_line = 0;
   int64_t expect[4] = {0, 0, 0, 0};  // nodes, edges, ops, couplings
   int64_t seen[4] = {0, 0, 0, 0};
   const char* what[4] = {"nodes", "edges", "operations", "couplings"};
@@ -172,6 +175,9 @@ MaybeError Reader::run(Instance& out) {
       }
       case 'a': {
         Vec2 c;
+        if (anchor_line > 0)
+          return error("second anchor line (the first is line " + std::to_string(anchor_line) + ")");
+        anchor_line = line_no_;
         if (!want(3, "a X Y") || !cell(t, 1, c)) return err_;
         problem = b.set_anchor(c);
         break;
@@ -182,7 +188,7 @@ MaybeError Reader::run(Instance& out) {
     if (problem) return error(*problem);
   }
   if (err_) return err_;
-  if (!header) return Diagnostic{name_, line_no_, "empty input: no 'p grid' header"};
+  if (!header) return Diagnostic{name_, std::max<long>(line_no_, 1), "empty input: no 'p grid' header"};
   for (int k = 0; k < 4; ++k)
     if (seen[k] < expect[k])
       return Diagnostic{name_, line_no_,
@@ -204,6 +210,8 @@ MaybeError read_instance(std::istream& in, const std::string& name, Instance& ou
 
 MaybeError read_instance_file(const std::string& path, Instance& out) {
   if (path == "-") return read_instance(std::cin, "<stdin>", out);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return Diagnostic{path, 0, "is a directory, not a file"};
   std::ifstream in(path, std::ios::binary);
   if (!in) return Diagnostic{path, 0, "cannot open file"};
   return read_instance(in, path, out);

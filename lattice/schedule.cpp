@@ -1,5 +1,6 @@
 #include "lattice/schedule.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <numeric>
@@ -40,6 +41,8 @@ MaybeError for_each_line(const std::string& path, Fn fn) {
   std::istream* in = &std::cin;
   std::string name = path == "-" ? "<stdin>" : path;
   if (path != "-") {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return Diagnostic{path, 0, "is a directory, not a file"};
     file.open(path, std::ios::binary);
     if (!file) return Diagnostic{path, 0, "cannot open file"};
     in = &file;

@@ -19,8 +19,20 @@ std::string literal_name(int lit) { return (lit < 0 ? "~" : "") + var_name(var_o
 
 }  // namespace
 
+uint64_t compiled_node_count(const Formula& f) {
+  if (f.num_vars < 1) return 0;
+  uint64_t literals = 0;
+  for (const auto& c : f.clauses) literals += c.size();
+  const auto n = static_cast<uint64_t>(f.num_vars), m = static_cast<uint64_t>(f.clauses.size());
+  return 43 * n + 5 * literals + 15 * m - 11;
+}
+
 CompiledFormula compile_formula(const Formula& f, Mutation mutation) {
   if (auto e = validate(f); !e.empty()) throw std::invalid_argument("compile: " + e);
+  if (uint64_t nodes = compiled_node_count(f); nodes > static_cast<uint64_t>(kMaxNodes))
+    throw std::invalid_argument("the compiled instance would have " + std::to_string(nodes) +
+                                " nodes (43n + 5L + 15m - 11), more than the .grid format's limit of " +
+                                std::to_string(kMaxNodes));
   for (size_t h = 0; h < f.clauses.size(); ++h)
     if (f.clauses[h].empty())
       throw std::invalid_argument("clause " + std::to_string(h + 1) +

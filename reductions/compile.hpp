@@ -64,8 +64,14 @@ struct CompiledFormula {
   CompileStats stats;
 };
 
+// The node count of f's compiled instance, 43n + 5L + 15m - 11 (0 for
+// n = 0), computed from the counts alone, before anything is drawn.
+uint64_t compiled_node_count(const Formula& f);
+
 // Compiles f. Requires validate(f) empty and every clause non-empty (throws
-// std::invalid_argument naming the first empty clause, 1-based). The mutation
+// std::invalid_argument naming the first empty clause, 1-based), and
+// compiled_node_count(f) <= kMaxNodes (checked first, before any allocation:
+// std::invalid_argument "the compiled instance would have N nodes ..."). The mutation
 // breaks one gadget kind (tests and the fuzzer's self-test only).
 // Deterministic. Time and memory O(n + m + L).
 CompiledFormula compile_formula(const Formula& f, Mutation mutation = Mutation::None);

@@ -9,6 +9,7 @@
 #include "cnf/dimacs.hpp"
 #include "cnf/lsat.hpp"
 #include "cnf/sat_solver.hpp"
+#include "common/atomic_file.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
@@ -120,9 +121,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
 std::string write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt) {
   std::filesystem::create_directories(dir);
   auto write = [&](const std::string& file, const std::string& text) {
-    std::ofstream out(dir + "/" + file, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + dir + "/" + file);
+    if (auto err = write_file_atomic(dir + "/" + file, text)) throw std::runtime_error(err->str());
   };
   write("formula.cnf", to_dimacs(r.source));
   write("lsat.cnf", to_dimacs(r.lsat));

@@ -12,6 +12,7 @@ PACKAGES=(
   libbenchmark-dev                          # bench/
   librsvg2-bin                              # rsvg-convert: look at the SVGs as PNG
   ccache                                    # shared objects between the builds
+  jq                                        # tests/chaos.sh reads the JSON it checks
   libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
   chromium                                  # headless browser for the viewer's page tests
   clang-format clang-tidy                   # scripts/lint.sh

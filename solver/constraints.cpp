@@ -111,7 +111,7 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
   return lo_n * hi_d < hi_n * lo_d;
 }
 
-ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree) {
+ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Gaps;
   sys.num_couplings = inst.couplings().size();
@@ -123,6 +123,7 @@ ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree&
   for (const RowRun& run : row_runs(inst, order)) {
     for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
       NodeId a = order[i], b = order[i + 1];
+      if (deadline && (sys.candidate_pairs & 63) == 0) deadline->check();
       ++sys.candidate_pairs;
       // Overlap form right(a) - left(b); a growth counts as part of its node.
       LinForm f;
@@ -153,7 +154,7 @@ int axis_of_face(int f) { return f < 2 ? 0 : 1; }
 
 }  // namespace
 
-ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree) {
+ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Pairs;
   sys.num_couplings = inst.couplings().size();
@@ -211,6 +212,7 @@ ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree
   };
 
   auto consider = [&](uint32_t a, uint32_t b) {
+    if (deadline && (sys.candidate_pairs & 63) == 0) deadline->check();
     ++sys.candidate_pairs;
     Vec2 d = cell[a] - cell[b];
     int64_t H = 0, V = 0;
@@ -226,6 +228,7 @@ ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree
   };
 
   for (uint32_t a = 0; a < nr; ++a) {
+    if (deadline) deadline->check();
     int64_t hx = hdepth[main[a]] + hmax, vy = vdepth[main[a]] + vmax;
     // Scan the box of cells around a, unless it is larger than the region list.
     auto box = static_cast<__int128>(2 * hx + 1) * (2 * vy + 1);

@@ -26,6 +26,8 @@
 // solver; such a coupling makes every schedule collide).
 #pragma once
 
+#include "common/limits.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -68,7 +70,9 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf);
 // inst.horizontal_only() and no coupling breaking a cycle (else the result
 // does not describe the instance). O(n + sum over gaps of the operations on
 // the tree path between the gap's two nodes); O(n) time for the rows.
-ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree);
+// deadline (optional) is checked every few pairs: LimitReached ends the build.
+ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree,
+                                       const Deadline* deadline = nullptr);
 
 // Pair constraints of any instance. Requires no coupling breaking a cycle.
 // A pair (A, B) is kept iff it passes the distance test (each region stays in
@@ -78,7 +82,9 @@ ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree&
 // changes. Time O(sum over regions of min(#regions, scanned cells)) plus the
 // path walks of the candidates: quadratic in the worst case (long rows of
 // operations), near linear when operations are sparse.
-ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree);
+// deadline (optional) is checked every few pairs: LimitReached ends the build.
+ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree,
+                                        const Deadline* deadline = nullptr);
 
 // "gap between (1,0) and (3,0)" / "node (1,1) and node inserted by a".
 std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c);

@@ -7,35 +7,65 @@
 // Neither checks the answer against the simulator; solve_discrete does.
 #pragma once
 
-#include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "solver/constraints.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {
 
-// Wall clock and node budget shared by the searches; throws LimitReached.
+// Wall clock, node budget and stop requests shared by the searches and the
+// set-up of solve_discrete; throws LimitReached (common/limits.hpp).
 class SearchBudget {
  public:
-  struct LimitReached {};
-  explicit SearchBudget(const SolveOptions& opt)
-      : opt_(opt), start_(std::chrono::steady_clock::now()) {}
+  using LimitReached = gridlock::LimitReached;
+  explicit SearchBudget(const SolveOptions& opt) : opt_(opt), deadline_(opt.seconds) {}
   // Counts one node; throws LimitReached when a limit is hit. The clock is
-  // read every 256 nodes.
+  // read at every node (a search node costs far more than a clock read), so
+  // --timeout is honoured to within one node.
   void tick(SolveStats& st) {
     ++st.states;
     if (opt_.max_states != 0 && st.states > opt_.max_states) throw LimitReached{};
-    if (opt_.seconds > 0 && (st.states & 255) == 0 && elapsed() > opt_.seconds) throw LimitReached{};
+    deadline_.check();
+    if (opt_.progress) show_progress(st);
   }
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  // Time and stop check without counting a node: for long loops inside one
+  // node and for the set-up (constraint building).
+  void check() const { deadline_.check(); }
+  // check() every 64th call: for loops whose steps are too cheap to read
+  // the clock at each one, but that may run for seconds inside one node.
+  void poll() {
+    if ((++polls_ & 63) == 0) deadline_.check();
+  }
+  const Deadline& deadline() const { return deadline_; }
+  double elapsed() const { return deadline_.elapsed(); }
+  // Depth of the current search path, shown by the progress line.
+  void set_depth(size_t depth) { depth_ = depth; }
+  // Erases the progress line (if one was drawn).
+  void clear_progress() {
+    if (drawn_) std::fputs("\r\033[K", stderr);
+    drawn_ = false;
   }
 
  private:
+  void show_progress(const SolveStats& st) {
+    const double t = elapsed();
+    if (t - last_shown_ < 0.5) return;
+    last_shown_ = t;
+    std::fprintf(stderr, "\r\033[Ksolve: %llu states, depth %zu, %.0f states/s, %.1f s", 
+                 static_cast<unsigned long long>(st.states), depth_, static_cast<double>(st.states) / t, t);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
   SolveOptions opt_;
-  std::chrono::steady_clock::time_point start_;
+  Deadline deadline_;
+  size_t depth_ = 0;
+  uint64_t polls_ = 0;
+  double last_shown_ = 0;
+  bool drawn_ = false;
 };
 
 struct SearchOutcome {

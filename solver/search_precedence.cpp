@@ -107,11 +107,13 @@ class PrecedenceSearch {
     for (uint32_t w : nz_up_)
       for (uint64_t bits = up[w]; bits; bits &= bits - 1) {
         auto x = static_cast<CouplingId>(w * 64 + __builtin_ctzll(bits));
+        budget_.poll();
         if (!before(x, b)) or_row(succ_, x, down, nz_down_);
       }
     for (uint32_t w : nz_down_)
       for (uint64_t bits = down[w]; bits; bits &= bits - 1) {
         auto y = static_cast<CouplingId>(w * 64 + __builtin_ctzll(bits));
+        budget_.poll();
         if (!((pred_[y * words_ + (a >> 6)] >> (a & 63)) & 1)) or_row(pred_, y, up, nz_up_);
       }
     return true;
@@ -178,6 +180,7 @@ class PrecedenceSearch {
   // a dead end may leave marks behind, which only costs a second look.
   bool propagate() {
     while (!dirty_list_.empty()) {
+      budget_.poll();
       const uint32_t c = dirty_list_.back();
       dirty_list_.pop_back();
       dirty_[c] = 0;
@@ -264,6 +267,7 @@ class PrecedenceSearch {
     std::vector<CouplingId> opts;
     std::vector<std::pair<uint64_t, CouplingId>> scored;
     for (size_t c = 0; c < terms_.size(); ++c) {
+      budget_.poll();
       if (!live(c)) continue;
       for (const Term& t : terms_[c]) {
         if (t.coef <= 0 || !undone(t.q)) continue;
@@ -297,6 +301,7 @@ class PrecedenceSearch {
     if (!br.edges.empty()) return true;
     // Every requirement is met: order a runnable source and a widener.
     for (CouplingId q = 0; q < k_; ++q) {
+      budget_.poll();
       if (!undone(q) || has_undone_pred(q) || !runnable(q)) continue;
       CouplingId w = unsafe_widener(q);
       if (w == kNone) continue;
@@ -317,12 +322,14 @@ class PrecedenceSearch {
       // Every safe coupling, in one sweep (each is re-checked at the state
       // the previous ones left).
       bool moved = false;
-      for (CouplingId q = 0; q < k_; ++q)
+      for (CouplingId q = 0; q < k_; ++q) {
+        budget_.poll();
         if (undone(q) && runnable(q) && unsafe_widener(q) == kNone && !has_undone_pred(q)) {
           ++st_.safe_moves;
           perform(q);
           moved = true;
         }
+      }
       if (!moved) break;
     }
     Branch br;

@@ -147,6 +147,7 @@ class StateSearch {
   }
 
   bool dfs() {
+    budget_.set_depth(path_.size());
     budget_.tick(st_);
     if (path_.size() == k_) return true;
     StateKey key{done_, hash_};
@@ -174,6 +175,7 @@ class StateSearch {
       size_t tried = 0;
       for (CouplingId seed : undone) {
         if (tried++ >= 24) break;
+        budget_.check();  // a closure can cost as much as the whole system
         std::vector<CouplingId> en = stubborn(seed, in, members);
         if (!have || en.size() < moves.size()) moves = std::move(en), have = true;
         if (moves.size() <= 1) break;

@@ -25,31 +25,41 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
   if (opt.engine == SolveOptions::Engine::Precedence && !horizontal)
     throw std::invalid_argument("the precedence search needs a horizontal-only instance");
 
-  // A coupling that breaks a cycle collides whenever it runs.
-  const FaceNets faces = FaceNets::build(inst);
-  for (CouplingId q = 0; q < inst.couplings().size(); ++q)
-    if (faces.coupling_breaks_cycle[q]) {
-      res.status = SolveResult::Status::No;
-      res.cycle_breaker = q;
-      res.stats.engine = "cycle";
-      res.stats.seconds = budget.elapsed();
-      return res;
-    }
+  try {
+    // A coupling that breaks a cycle collides whenever it runs.
+    const FaceNets faces = FaceNets::build(inst);
+    budget.check();
+    for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+      if (faces.coupling_breaks_cycle[q]) {
+        res.status = SolveResult::Status::No;
+        res.cycle_breaker = q;
+        res.stats.engine = "cycle";
+        res.stats.seconds = budget.elapsed();
+        return res;
+      }
+  } catch (const LimitReached&) {
+    res.stats.seconds = budget.elapsed();
+    return res;  // Unknown
+  }
 
-  const SpanningTree tree = SpanningTree::build(inst);
-  const ConstraintSystem sys = horizontal ? build_gap_constraints(inst, tree) : build_pair_constraints(inst, tree);
-  res.stats.constraints = sys.constraints.size();
   const bool precedence = opt.engine == SolveOptions::Engine::Precedence ||
                           (opt.engine == SolveOptions::Engine::Auto && horizontal);
   res.stats.engine = precedence ? "precedence" : "states";
+  ConstraintSystem sys;
   try {
+    const SpanningTree tree = SpanningTree::build(inst);
+    budget.check();
+    sys = horizontal ? build_gap_constraints(inst, tree, &budget.deadline())
+                     : build_pair_constraints(inst, tree, &budget.deadline());
+    res.stats.constraints = sys.constraints.size();
     SearchOutcome out = precedence ? search_precedence(sys, budget, res.stats) : search_states(sys, budget, res.stats);
     res.status = out.status;
     res.order = std::move(out.order);
-  } catch (const SearchBudget::LimitReached&) {
+  } catch (const LimitReached&) {
     res.status = SolveResult::Status::Unknown;
     res.order.clear();
   }
+  budget.clear_progress();
 
   if (res.status == SolveResult::Status::Yes) {
     // Never a silent wrong answer: the order must be a permutation that the

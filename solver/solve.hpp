@@ -47,6 +47,9 @@ namespace gridlock {
 struct SolveOptions {
   double seconds = 0;       // wall-clock limit; 0 = no limit
   uint64_t max_states = 0;  // limit on search nodes; 0 = none
+  // Draw a progress line (states, depth, rate) on stderr every 0.5 s; for
+  // the command line when stderr is a terminal. Erased before returning.
+  bool progress = false;
   // Which search to run. Auto: Precedence for horizontal-only instances,
   // States otherwise. Precedence on a non-horizontal instance throws
   // std::invalid_argument. (Tests run both on the same instances.)
@@ -73,7 +76,9 @@ struct SolveResult {
 };
 
 // Decides Discrete Collision-free Schedule exactly, or returns Unknown when a
-// limit of opt is reached. See the contract above.
+// limit of opt is reached (or a stop was requested: common/limits.hpp). The
+// time limit covers the set-up too (cycle check, constraint building). See
+// the contract above.
 SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt = {});
 
 const char* solve_status_name(SolveResult::Status s);  // "YES", "NO", "UNKNOWN"

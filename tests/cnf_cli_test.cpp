@@ -194,7 +194,7 @@ TEST(CnfCli, ErrorsAreFileLineMessage) {
             "gridlock: error: cnf gen lsat: an LSAT formula with 10 variables and clauses of at least 3 literals has "
             "at most 8 clauses (got m=9)\n");
   EXPECT_EQ(run_gridlock({"cnf", "gen", "ksat", "--n", "5", "--m", "2", "--seed", "-1"}).err,
-            "gridlock: error: --seed must be an integer from 0 to 2^64-1, got '-1'\n");
+            "gridlock: error: --seed: want a seed, a whole number from 0 to 18446744073709551615, got '-1'\n");
   EXPECT_EQ(run_gridlock({"cnf", "gen", "ksat", "--n", "5"}).err,
             "gridlock: error: cnf gen: give exactly one of --m and --ratio\n");
   EXPECT_EQ(run_gridlock({"cnf", "gen", "nope", "--n", "5", "--m", "1"}).exit_code, 1);

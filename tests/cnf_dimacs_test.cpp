@@ -65,8 +65,8 @@ struct Bad {
 
 TEST(Dimacs, EveryRejectionHasItsMessage) {
   const std::vector<Bad> cases = {
-      {"empty", "", "t.cnf: empty input: no 'p cnf' header"},
-      {"blank", " \n\n\t\n", "t.cnf: empty input: no 'p cnf' header"},
+      {"empty", "", "t.cnf:1: empty input: no 'p cnf' header"},
+      {"blank", " \n\n\t\n", "t.cnf:1: empty input: no 'p cnf' header"},
       {"only comments", "c hello\n", "t.cnf: missing header 'p cnf VARIABLES CLAUSES'"},
       {"clause first", "1 2 0\np cnf 2 1\n", "t.cnf:1: missing header 'p cnf VARIABLES CLAUSES' before the first clause"},
       {"% first", "c x\n%\n", "t.cnf:2: missing header 'p cnf VARIABLES CLAUSES' before '%'"},

@@ -108,7 +108,7 @@ TEST(GridFormat, RejectsEachBadInputClassWithItsMessage) {
       {"not an integer", "p grid 1 0 0 0\nn 0 x1\n", "bad.grid:2: expected an integer coordinate, got 'x1'"},
       {"missing header", "n 0 0\n",
        "bad.grid:1: missing header 'p grid NODES EDGES OPS COUPLINGS' before the first n line"},
-      {"empty input", "", "bad.grid: empty input: no 'p grid' header"},
+      {"empty input", "", "bad.grid:1: empty input: no 'p grid' header"},
       {"truncated input", "p grid 3 2 0 0\nn 0 0\nn 1 0\n",
        "bad.grid:3: unexpected end of input: the header promises 3 nodes, the file gives 2 (truncated?)"},
       {"more than the header", "p grid 1 0 0 0\nn 0 0\nn 1 0\n", "bad.grid:3: more nodes than the header's 1"},

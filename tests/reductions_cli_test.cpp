@@ -85,7 +85,7 @@ TEST(LiftCli, CertificatesBothWaysThroughOtherSubcommands) {
 TEST(LiftCli, BadModelCollidesAndBadScheduleIsRefused) {
   std::string dir = test::temp_dir();
   std::string f = kExamples + "tiny-sat.cnf";  // (1 2 3)(-2 3)(1 -3)
-  std::string bad = test::write_file(dir + "/bad.txt", "v 1 2 -3 0\n");
+  std::string bad = test::write_file(dir + "/bad.txt", "s SATISFIABLE\nv 1 2 -3 0\n");
   auto r = run_gridlock({"lift", f, "--model", bad});
   EXPECT_EQ(r.exit_code, 20);
   EXPECT_NE(r.out.find("c the model falsifies clause 2: expect a collision"), std::string::npos) << r.out;
@@ -95,13 +95,13 @@ TEST(LiftCli, BadModelCollidesAndBadScheduleIsRefused) {
   r = run_gridlock({"lift", f, "--schedule", sched});
   EXPECT_EQ(r.exit_code, 20);
   EXPECT_NE(r.out.find("c simulator: the schedule collides"), std::string::npos) << r.out;
-  std::string junk = test::write_file(dir + "/j.txt", "v 1 x 0\n");
+  std::string junk = test::write_file(dir + "/j.txt", "s SATISFIABLE\nv 1 x 0\n");
   r = run_gridlock({"lift", f, "--model", junk});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "gridlock: error: " + junk + ":1: 'x' is not a literal\n");
-  std::string far = test::write_file(dir + "/far.txt", "v 1 -2\nv 9 0\n");
+  EXPECT_EQ(r.err, "gridlock: error: " + junk + ":2: 'x' is not a literal\n");
+  std::string far = test::write_file(dir + "/far.txt", "s SATISFIABLE\nv 1 -2\nv 9 0\n");
   r = run_gridlock({"lift", f, "--model", far});
-  EXPECT_EQ(r.err, "gridlock: error: " + far + ":2: literal 9 beyond the formula's 3 variables\n");
+  EXPECT_EQ(r.err, "gridlock: error: " + far + ":3: literal 9 beyond the formula's 3 variables\n");
 }
 
 TEST(LiftCli, EverySatlibUf20SampleLiftsThroughToLsat) {

@@ -31,6 +31,7 @@ int run_check(const std::vector<std::string>& args) {
   int given = static_cast<int>(vm.count("order") + vm.count("order-file") + vm.count("times"));
   if (given != 1) throw UserError("give exactly one of --order, --order-file, --times");
   const std::string path = vm["instance"].as<std::string>();
+  if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
   Instance inst = cli::load_instance(path);
   Schedule sched;
   std::string model;

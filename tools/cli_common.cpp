@@ -1,26 +1,63 @@
 #include "tools/cli_common.hpp"
 
+#include <signal.h>
+
+#include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
+#include "common/atomic_file.hpp"
 #include "common/diagnostic.hpp"
+#include "common/limits.hpp"
 #include "lattice/grid_format.hpp"
+#include "reductions/compile.hpp"
 
 namespace gridlock::cli {
 
-Formula load_formula(const std::string& path, bool strict_count) {
+namespace fs = std::filesystem;
+
+Formula load_formula(const std::string& path, bool strict_count, FormulaUse use) {
   Formula f;
   DimacsOptions opt;
   opt.strict_count = strict_count;
-  if (auto err = read_dimacs_file(path, f, opt)) throw UserError(*err);
+  long header_line = 0;
+  opt.header_line = &header_line;
+  {
+    Activity act(path == "-" ? "<stdin>" : path, "reading the formula");
+    if (auto err = read_dimacs_file(path, f, opt)) throw UserError(*err);
+  }
+  const std::string name = path == "-" ? "<stdin>" : path;
+  if (use == FormulaUse::Read) return f;
+  int max_used = 0;
+  for (const auto& c : f.clauses)
+    for (int lit : c) max_used = std::max(max_used, var_of(lit));
+  if (f.num_vars - max_used > kMaxUnusedVariables)
+    throw UserError(Diagnostic{name, header_line,
+                               "the header declares " + std::to_string(f.num_vars) +
+                                   " variables but no clause uses one above " + std::to_string(max_used) +
+                                   ": at most " + std::to_string(kMaxUnusedVariables) +
+                                   " unused variables beyond the last one used are accepted"});
+  if (use == FormulaUse::Compile) {
+    if (uint64_t nodes = compiled_node_count(f); nodes > static_cast<uint64_t>(kMaxNodes))
+      throw UserError(Diagnostic{name, header_line,
+                                 "the compiled instance would have " + std::to_string(nodes) +
+                                     " nodes (43n + 5L + 15m - 11), more than the .grid format's limit of " +
+                                     std::to_string(kMaxNodes)});
+  }
   return f;
 }
 
 Instance load_instance(const std::string& path) {
   Instance inst;
+  Activity act(path == "-" ? "<stdin>" : path, "reading the instance");
   if (auto err = read_instance_file(path, inst)) throw UserError(*err);
   return inst;
 }
@@ -84,10 +121,93 @@ void write_text_file(const std::string& path, const std::string& text) {
     std::cout << text;
     return;
   }
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw UserError(Diagnostic{path, 0, "cannot write file"});
-  out << text;
-  if (!out) throw UserError(Diagnostic{path, 0, "write failed"});
+  if (auto err = write_file_atomic(path, text)) throw UserError(*err);
+}
+
+void write_text_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<StagedFile> staged;
+  auto discard_all = [&] {
+    for (auto& f : staged) discard_file(f);
+  };
+  for (const auto& [path, text] : files) {
+    if (path == "-") continue;
+    StagedFile f;
+    if (auto err = stage_file(path, text, f)) {
+      discard_all();
+      throw UserError(*err);
+    }
+    staged.push_back(f);
+  }
+  for (auto& f : staged)
+    if (auto err = commit_file(f)) {
+      discard_all();
+      throw UserError(*err);
+    }
+  for (const auto& [path, text] : files)
+    if (path == "-") std::cout << text;
+}
+
+void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs) {
+  if (out == "-") return;
+  for (const auto& in : inputs) {
+    if (in == "-") continue;
+    std::error_code ec;
+    bool same = fs::path(out).lexically_normal() == fs::path(in).lexically_normal() || fs::equivalent(out, in, ec);
+    if (same) throw UserError(Diagnostic{out, 0, "output would overwrite the input " + in});
+  }
+}
+
+std::string stdout_error() {
+  std::cout.flush();
+  if (!std::cout) return "<stdout>: write failed" + std::string(errno ? ": " + std::string(std::strerror(errno)) : "");
+  if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    return "<stdout>: write failed: " + std::string(std::strerror(errno));
+  return "";
+}
+
+namespace {
+extern "C" void on_stop_signal(int sig) {
+  stop_signal().store(sig, std::memory_order_relaxed);
+}
+}  // namespace
+
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = 0;  // no SA_RESTART: a blocking read returns EINTR
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+int interrupted_exit_code() { return 128 + stop_signal().load(); }
+
+namespace {
+Activity* g_activity = nullptr;
+std::string g_unwound;  // the innermost activity an exception left, "FILE: out of memory while WHAT"
+}  // namespace
+
+Activity::Activity(std::string file, std::string what)
+    : file_(std::move(file)), what_(std::move(what)), outer_(g_activity), uncaught_(std::uncaught_exceptions()) {
+  g_activity = this;
+}
+
+Activity::~Activity() {
+  g_activity = outer_;
+  // Unwinding: main's handler runs after every destructor, so the innermost
+  // activity (the first destroyed) is remembered here.
+  if (std::uncaught_exceptions() > uncaught_ && g_unwound.empty()) {
+    try {
+      g_unwound = Diagnostic{file_, 0, "out of memory while " + what_}.str();
+    } catch (...) {  // no memory left even for the message: main says "out of memory"
+    }
+  }
+}
+
+std::string Activity::out_of_memory_message() {
+  if (!g_unwound.empty()) return g_unwound;
+  if (!g_activity) return "out of memory";
+  return Diagnostic{g_activity->file_, 0, "out of memory while " + g_activity->what_}.str();
 }
 
 }  // namespace gridlock::cli

@@ -14,8 +14,20 @@ namespace gridlock::cli {
 
 namespace po = boost::program_options;
 
+// What a command builds from a formula: decides the size checks made right
+// after reading, before anything is allocated per variable or node.
+//   Read     none
+//   Solve    (cnf solve, to-lsat, lift, verify) at most kMaxUnusedVariables
+//            declared variables beyond the largest one a clause uses: the
+//            header count must not drive allocation beyond what the file holds
+//   Compile  Solve's check, and the compiled instance's node count
+//            (43n + 5L + 15m - 11) within the .grid format's kMaxNodes
+// A failed check is "FILE:LINE: ..." with the header's line.
+enum class FormulaUse { Read, Solve, Compile };
+inline constexpr int64_t kMaxUnusedVariables = int64_t{1} << 20;
+
 // Reads a DIMACS file ("-" = stdin) or throws UserError("FILE:LINE: ...").
-Formula load_formula(const std::string& path, bool strict_count = true);
+Formula load_formula(const std::string& path, bool strict_count = true, FormulaUse use = FormulaUse::Read);
 
 // Reads a .grid file ("-" = stdin) or throws UserError("FILE:LINE: ...").
 Instance load_instance(const std::string& path);
@@ -35,7 +47,57 @@ bool parse_args_one_input(const std::vector<std::string>& args, const po::option
                           const std::string& input_name, po::variables_map& vm, const std::string& usage,
                           const std::string& description, const po::options_description* extra_hidden = nullptr);
 
-// Writes text to path ("-" = stdout) or throws UserError.
+// Writes text to path ("-" = stdout) or throws UserError. A file is written
+// atomically and checked (common/atomic_file.hpp): a temporary file in the
+// same folder renamed into place; a full disk is
+// "PATH: write failed: No space left on device", never a success.
 void write_text_file(const std::string& path, const std::string& text);
+
+// Several outputs, all or none: every file is staged first (a failure
+// removes what was staged and throws, leaving every path as it was), then
+// all are renamed into place. "-" entries go to standard output last.
+void write_text_files(const std::vector<std::pair<std::string, std::string>>& files);
+
+// Throws UserError("OUT: output would overwrite the input INPUT") if output
+// path out names the same file as one of inputs (same path, or the same file
+// through links). "-" never conflicts. Call it before reading the inputs.
+void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs);
+
+// Standard output is checked at exit (tools/main.cpp): a failed write or
+// flush makes the command fail with "<stdout>: write failed: REASON", exit 1.
+// Returns the error message, or "" if stdout is fine.
+std::string stdout_error();
+
+// --- Interruption (SIGINT, SIGTERM) ---------------------------------------
+// install_stop_handlers() makes SIGINT and SIGTERM set the stop request of
+// common/limits.hpp instead of killing the process. Campaign commands (fuzz,
+// verify, gen-instances) call it first, poll stop_requested() between items
+// (long computations inside an item see it through Deadline/SearchBudget and
+// end as UNKNOWN), finish or remove the file in progress, print a partial
+// summary marked interrupted, and return interrupted_exit_code()
+// (128 + signal: 130 for SIGINT, 143 for SIGTERM).
+void install_stop_handlers();
+int interrupted_exit_code();
+
+// --- Out of memory ----------------------------------------------------------
+// While an Activity is alive, an std::bad_alloc that reaches main is reported
+// as "FILE: out of memory while WHAT" (innermost activity):
+//   cli::Activity act(path, "compiling the formula");
+class Activity {
+ public:
+  Activity(std::string file, std::string what);
+  ~Activity();
+  Activity(const Activity&) = delete;
+  Activity& operator=(const Activity&) = delete;
+  // "FILE: out of memory while WHAT" of the innermost activity that was
+  // alive when the exception was thrown (recorded as the stack unwinds), or
+  // "out of memory" when none was.
+  static std::string out_of_memory_message();
+
+ private:
+  std::string file_, what_;
+  Activity* outer_;
+  int uncaught_;  // exceptions in flight at construction: more at destruction = unwinding
+};
 
 }  // namespace gridlock::cli

@@ -1,6 +1,7 @@
 // gridlock cnf: formulas. Sub-subcommands check (is it LSAT?), gen (seeded
 // generators), to-lsat (CNF -> LSAT<=3) and solve (CaDiCaL). See
 // docs/formulas.md.
+#include <climits>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "reductions/to_lsat.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 #include "tools/output.hpp"
 
 namespace gridlock {
@@ -62,7 +64,9 @@ std::string command_line(const std::string& sub, const std::vector<std::string>&
   return s;
 }
 
-Formula load(const std::string& path, bool strict) { return cli::load_formula(path, strict); }
+Formula load(const std::string& path, bool strict, cli::FormulaUse use = cli::FormulaUse::Read) {
+  return cli::load_formula(path, strict, use);
+}
 
 std::string clause_lengths(const Formula& f) {
   if (f.clauses.empty()) return "no clauses";
@@ -85,7 +89,7 @@ int run_check(const std::vector<std::string>& args) {
   opts.add_options()
     ("help,h", "show this help")
     ("relaxed", "decide LSAT<=3 (clauses of 1 to 3 literals) instead of exactly-3 LSAT")
-    ("max-violations", po::value<size_t>()->default_value(3), "how many broken rules to list")
+    ("max-violations", po::value<std::string>()->default_value("3"), "how many broken rules to list")
     ("json", "print one JSON object instead of c/s lines");
   add_reader_options(opts);
   po::variables_map vm;
@@ -99,7 +103,7 @@ int run_check(const std::vector<std::string>& args) {
   const std::string path = vm["file"].as<std::string>();
   const Formula f = load(path, vm.count("no-strict-count") == 0);
   const bool relaxed = vm.count("relaxed") > 0;
-  const size_t maxv = vm["max-violations"].as<size_t>();
+  const auto maxv = static_cast<size_t>(cli::count_arg(vm, "max-violations", 1, 1u << 30));
   Answer ans("cnf check", vm.count("json") > 0);
   ans.comment(path + ": " + summary(f) + "; " + clause_lengths(f));
   const LsatReport exact = check_lsat(f, LsatForm::Exact3, std::max<size_t>(maxv, 1));
@@ -141,28 +145,16 @@ int run_check(const std::vector<std::string>& args) {
 }
 
 // ---------------------------------------------------------------- gen
-uint64_t parse_seed(const std::string& s) {
-  uint64_t v = 0;
-  if (s.empty() || s.size() > 20) throw UserError("--seed must be an integer from 0 to 2^64-1, got '" + s + "'");
-  for (char ch : s) {
-    if (ch < '0' || ch > '9') throw UserError("--seed must be an integer from 0 to 2^64-1, got '" + s + "'");
-    uint64_t d = static_cast<uint64_t>(ch - '0');
-    if (v > (UINT64_MAX - d) / 10) throw UserError("--seed must be an integer from 0 to 2^64-1, got '" + s + "'");
-    v = v * 10 + d;
-  }
-  return v;
-}
-
 int run_gen(const std::vector<std::string>& args) {
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("n", po::value<int>(), "number of variables (required)")
-    ("m", po::value<int>(), "number of clauses")
+    ("n", po::value<std::string>(), "number of variables (required)")
+    ("m", po::value<std::string>(), "number of clauses")
     ("ratio", po::value<double>(), "clauses per variable: m = round(ratio * n) (instead of --m)")
-    ("k", po::value<int>()->default_value(3), "literals per clause (ksat, planted)")
-    ("min-len", po::value<int>(), "shortest clause (lsat: 3, lsat-le3: 1)")
-    ("max-len", po::value<int>(), "longest clause (lsat: 3, lsat-le3: 3)")
+    ("k", po::value<std::string>()->default_value("3"), "literals per clause (ksat, planted)")
+    ("min-len", po::value<std::string>(), "shortest clause (lsat: 3, lsat-le3: 1)")
+    ("max-len", po::value<std::string>(), "longest clause (lsat: 3, lsat-le3: 3)")
     ("seed", po::value<std::string>()->default_value("1"), "random seed, 0 to 2^64-1")
     ("output,o", po::value<std::string>()->default_value("-"), "output file ('-' = standard output)")
     ("json", "print one JSON object (with the DIMACS text when writing to standard output)");
@@ -179,12 +171,12 @@ int run_gen(const std::vector<std::string>& args) {
   const std::string kind = vm["kind"].as<std::string>();
   if (!vm.count("n")) throw UserError("cnf gen: --n is required");
   if (vm.count("m") + vm.count("ratio") != 1) throw UserError("cnf gen: give exactly one of --m and --ratio");
-  const int n = vm["n"].as<int>();
-  const uint64_t seed = parse_seed(vm["seed"].as<std::string>());
-  const int k = vm["k"].as<int>();
+  const int n = cli::int_arg(vm, "n", 1, INT_MAX);
+  const uint64_t seed = cli::seed_arg(vm, "seed");
+  const int k = cli::int_arg(vm, "k", 1, INT_MAX);
   Formula f;
   try {
-    const int m = vm.count("m") ? vm["m"].as<int>() : clauses_for_ratio(n, vm["ratio"].as<double>());
+    const int m = vm.count("m") ? cli::int_arg(vm, "m", 0, INT_MAX) : clauses_for_ratio(n, vm["ratio"].as<double>());
     if (kind == "ksat") {
       f = random_ksat({n, m, k, seed});
     } else if (kind == "planted") {
@@ -194,8 +186,8 @@ int run_gen(const std::vector<std::string>& args) {
       p.n = n;
       p.m = m;
       p.seed = seed;
-      p.min_len = vm.count("min-len") ? vm["min-len"].as<int>() : kind == "lsat" ? 3 : 1;
-      p.max_len = vm.count("max-len") ? vm["max-len"].as<int>() : 3;
+      p.min_len = vm.count("min-len") ? cli::int_arg(vm, "min-len", 1, INT_MAX) : kind == "lsat" ? 3 : 1;
+      p.max_len = vm.count("max-len") ? cli::int_arg(vm, "max-len", 1, INT_MAX) : 3;
       f = random_lsat(p);
     } else {
       throw UserError("cnf gen: unknown generator '" + kind + "' (ksat, lsat, lsat-le3 or planted)");
@@ -241,7 +233,9 @@ int run_to_lsat(const std::vector<std::string>& args) {
                        "unchanged unless --no-passthrough is given."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
-  const Formula in = load(path, vm.count("no-strict-count") == 0);
+  cli::refuse_overwriting_input(vm["output"].as<std::string>(), {path});
+  const Formula in = load(path, vm.count("no-strict-count") == 0, cli::FormulaUse::Solve);
+  cli::Activity act(path, "reducing the formula to LSAT<=3");
   ToLsatOptions opt;
   opt.passthrough = vm.count("no-passthrough") == 0;
   LsatReduction red = [&] {
@@ -298,8 +292,8 @@ int run_solve(const std::vector<std::string>& args) {
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("conflicts", po::value<int64_t>(), "give up (s UNKNOWN, exit 0) after this many conflicts (CaDiCaL)")
-    ("time", po::value<double>(), "give up (s UNKNOWN, exit 0) after this many seconds (CaDiCaL)")
+    ("conflicts", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many conflicts (CaDiCaL)")
+    ("time", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many seconds (CaDiCaL)")
     ("solver", po::value<std::string>()->default_value("cadical"),
      "cadical, or an independent oracle: dpll (small formulas), exhaustive (at most 24 variables)")
     ("json", "print one JSON object instead of c/s/v lines");
@@ -311,16 +305,17 @@ int run_solve(const std::vector<std::string>& args) {
                        "when a limit is hit (exit 0). The model is checked against the formula first."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
-  const Formula f = load(path, vm.count("no-strict-count") == 0);
+  SatLimits lim;  // options first: a bad value is reported before the file is read
+  if (auto c = cli::count_arg_opt(vm, "conflicts", 1, INT_MAX)) lim.conflicts = static_cast<int64_t>(*c);
+  if (auto t = cli::seconds_arg_opt(vm, "time")) lim.seconds = *t;
+  const Formula f = load(path, vm.count("no-strict-count") == 0, cli::FormulaUse::Solve);
+  cli::Activity act(path, "solving the formula");
   const std::string solver = vm["solver"].as<std::string>();
   Answer ans("cnf solve", vm.count("json") > 0);
   ans.comment(path + ": " + summary(f));
   SatResult r;
   std::string name;
   if (solver == "cadical") {
-    SatLimits lim;
-    if (vm.count("conflicts")) lim.conflicts = vm["conflicts"].as<int64_t>();
-    if (vm.count("time")) lim.seconds = vm["time"].as<double>();
     r = solve_sat(f, lim);
     name = sat_solver_name();
   } else if (solver == "dpll") {

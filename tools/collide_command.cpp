@@ -41,6 +41,7 @@ int run_collide(const std::vector<std::string>& args) {
   else throw UserError("--method must be auto, tree, tree-pairwise or pairwise, not '" + method_name + "'");
 
   const std::string path = vm["instance"].as<std::string>();
+  if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
   Instance inst = cli::load_instance(path);
   Answer ans("collide", vm.count("json") > 0);
   ans.comment("gridlock collide " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +

@@ -39,7 +39,11 @@ int run_compile(const std::vector<std::string>& args) {
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   if (vm.count("json") && out_path == "-") throw UserError("--json needs -o FILE for the instance");
-  Formula f = cli::load_formula(path);
+  const std::string svg_path = vm.count("svg") ? vm["svg"].as<std::string>() : "";
+  cli::refuse_overwriting_input(out_path, {path});
+  if (!svg_path.empty()) cli::refuse_overwriting_input(svg_path, {path, out_path});
+  Formula f = cli::load_formula(path, true, cli::FormulaUse::Compile);
+  cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {
     c = compile_formula(f, *mutation);
@@ -51,12 +55,15 @@ int run_compile(const std::vector<std::string>& args) {
   if (*mutation != Mutation::None) lines.push_back("BROKEN GADGET (test only): " + std::string(mutation_name(*mutation)));
   std::ostringstream grid;
   write_instance(grid, c.instance, lines);
-  cli::write_text_file(out_path, grid.str());
-  if (vm.count("svg")) {
+  // The instance and its picture are written together: both or neither.
+  std::vector<std::pair<std::string, std::string>> files;
+  if (!svg_path.empty()) {
     RenderOptions ro;
     ro.title = path + ": " + std::to_string(c.stats.nodes) + " nodes, " + std::to_string(c.stats.couplings) + " couplings";
-    cli::write_text_file(vm["svg"].as<std::string>(), render_svg(c.instance, ro));
+    files.emplace_back(svg_path, render_svg(c.instance, ro));
   }
+  files.emplace_back(out_path, grid.str());
+  cli::write_text_files(files);
   if (out_path == "-") return 0;
   Answer ans("compile", vm.count("json") > 0);
   for (const auto& l : lines) ans.comment(l);

@@ -3,6 +3,7 @@
 // from --seed; --shard K/N splits a campaign across processes or machines.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -11,9 +12,11 @@
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
+#include "common/limits.hpp"
 #include "reductions/fuzz.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 
 namespace gridlock {
 namespace {
@@ -33,20 +36,21 @@ std::vector<FuzzKind> parse_kinds(const std::string& s) {
 }
 
 int run_fuzz(const std::vector<std::string>& args) {
+  cli::install_stop_handlers();  // first: a signal at any moment gives the partial summary
   namespace po = boost::program_options;
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("seed", po::value<uint64_t>()->default_value(1), "campaign seed: formula i is drawn from (seed, i) alone")
-    ("count", po::value<uint64_t>(), "formulas in the campaign (default 1000 unless --time is given)")
-    ("time", po::value<double>(), "stop after this many seconds")
+    ("seed", po::value<std::string>()->default_value("1"), "campaign seed: formula i is drawn from (seed, i) alone")
+    ("count", po::value<std::string>(), "formulas in the campaign (default 1000 unless --time is given)")
+    ("time", po::value<std::string>(), "stop after this many seconds")
     ("shard", po::value<std::string>()->default_value("0/1"), "K/N: run only the formulas i with i % N == K")
-    ("index", po::value<uint64_t>(), "run only formula i (replays a finding)")
-    ("min-vars", po::value<int>()->default_value(3), "fewest variables of a formula (1 to 64)")
-    ("max-vars", po::value<int>()->default_value(6), "most variables of a formula (1 to 64)")
+    ("index", po::value<std::string>(), "run only formula i (replays a finding)")
+    ("min-vars", po::value<std::string>()->default_value("3"), "fewest variables of a formula (1 to 64)")
+    ("max-vars", po::value<std::string>()->default_value("6"), "most variables of a formula (1 to 64)")
     ("kinds", po::value<std::string>()->default_value("mix"), "generators, comma-separated: ksat, lsat, planted, mix")
-    ("timeout", po::value<double>()->default_value(10), "seconds the exact solver may spend on one formula")
-    ("max-states", po::value<uint64_t>()->default_value(2'000'000), "search nodes the exact solver may visit per formula")
+    ("timeout", po::value<std::string>()->default_value("10"), "seconds the exact solver may spend on one formula")
+    ("max-states", po::value<std::string>()->default_value("2000000"), "search nodes the exact solver may visit per formula")
     ("out", po::value<std::string>()->default_value("fuzz-failures"), "folder for shrunk counterexamples")
     ("keep-going", "do not stop at the first disagreement")
     ("json", "print one JSON object at the end instead of c/s lines");
@@ -60,43 +64,47 @@ int run_fuzz(const std::vector<std::string>& args) {
                        "each checked three ways as 'gridlock verify' does. Every disagreement is shrunk (delta\n"
                        "debugging over clauses, literals, variables) and saved as a replayable folder before it\n"
                        "is reported. On a terminal a progress line shows the rate and the counts.\n"
-                       "Exit 0 if no formula disagreed, 1 otherwise.\n"
+                       "Exit 0 if no formula disagreed, 1 otherwise. SIGINT/SIGTERM end the campaign after the\n"
+                       "formula in progress is abandoned: the summary (JSON too) is marked interrupted, exit 130/143.\n"
                        "A campaign over 8 processes:  parallel gridlock fuzz --seed 7 --count 1000000 --shard {}/8 ::: $(seq 0 7)",
                        &hidden))
     return 0;
   FuzzParams p;
-  p.seed = vm["seed"].as<uint64_t>();
-  p.min_vars = vm["min-vars"].as<int>();
-  p.max_vars = vm["max-vars"].as<int>();
+  p.seed = cli::seed_arg(vm, "seed");
+  p.min_vars = cli::int_arg(vm, "min-vars", 1, 64);
+  p.max_vars = cli::int_arg(vm, "max-vars", 1, 64);
   if (p.min_vars < 1 || p.max_vars > 64 || p.min_vars > p.max_vars)
     throw UserError("--min-vars and --max-vars: need 1 <= min <= max <= 64");
   p.kinds = parse_kinds(vm["kinds"].as<std::string>());
   uint64_t shard = 0, shards = 1;
   {
     const std::string s = vm["shard"].as<std::string>();
-    char slash = 0;
-    std::istringstream in(s);
-    if (!(in >> shard >> slash >> shards) || slash != '/' || shards == 0 || shard >= shards || !in.eof())
-      throw UserError("--shard: want K/N with 0 <= K < N, not '" + s + "'");
+    const size_t slash = s.find('/');
+    if (slash == std::string::npos) throw UserError("--shard: want K/N with 0 <= K < N, not '" + s + "'");
+    shard = cli::parse_count("shard", s.substr(0, slash), 0);
+    shards = cli::parse_count("shard", s.substr(slash + 1), 1);
+    if (shard >= shards) throw UserError("--shard: want K/N with 0 <= K < N, not '" + s + "'");
   }
   VerifyOptions vo;
-  vo.solve_seconds = vm["timeout"].as<double>();
-  vo.max_states = vm["max-states"].as<uint64_t>();
+  vo.solve_seconds = cli::seconds_arg(vm, "timeout");
+  vo.max_states = cli::count_arg(vm, "max-states", 1);
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   vo.mutation = *mutation;
   const bool json = vm.count("json") > 0;
   uint64_t first = shard, last = UINT64_MAX;  // indices first, first + N, ... < last
   if (vm.count("index")) {
-    first = vm["index"].as<uint64_t>();
+    first = cli::count_arg(vm, "index", 0, UINT64_MAX - 1);
     last = first + 1;
     shards = 1;
   } else if (vm.count("count")) {
-    last = vm["count"].as<uint64_t>();
+    last = cli::count_arg(vm, "count", 1);
   } else if (!vm.count("time")) {
     last = 1000;
   }
-  const double time_limit = vm.count("time") ? vm["time"].as<double>() : 0;
+  const double time_limit = cli::seconds_arg_opt(vm, "time").value_or(0);
+  if (vm.count("index") && (vm.count("count") || vm.count("time")))
+    throw UserError("--index replays one formula: give no --count or --time with it");
   const bool progress = !json && isatty(STDERR_FILENO);
 
   std::string header = "gridlock fuzz: seed " + std::to_string(p.seed) + ", shard " + std::to_string(shard) + "/" +
@@ -117,10 +125,13 @@ int run_fuzz(const std::vector<std::string>& args) {
       << disagreements << " disagreements, " << static_cast<uint64_t>(elapsed()) << " s";
     return s.str();
   };
-  for (uint64_t i = first; i < last; i += shards) {
+  for (uint64_t i = first; i < last && !stop_requested(); i += shards) {
     if (time_limit > 0 && elapsed() >= time_limit) break;
     Formula f = fuzz_formula(p, i);
-    VerifyResult r = verify_formula(f, "formula " + std::to_string(i), vo);
+    VerifyOptions vi = vo;  // --time bounds the campaign: the last formula's solver gets what is left
+    if (time_limit > 0) vi.solve_seconds = std::min(vo.solve_seconds, std::max(time_limit - elapsed(), 0.001));
+    VerifyResult r = verify_formula(f, "formula " + std::to_string(i), vi);
+    if (stop_requested()) break;  // answers may be cut short: the formula is not counted
     ++done;
     sat += r.sat == Tri::Yes;
     unsat += r.sat == Tri::No;
@@ -132,11 +143,12 @@ int run_fuzz(const std::vector<std::string>& args) {
       if (!json) std::cout << "c formula " << i << " disagrees: " << r.problem << "; shrinking" << std::endl;
       ShrinkStats st;
       Formula small = shrink_disagreement(f, vo, &st);
+      if (stop_requested()) break;  // shrinking cut short: no reproducer rather than a wrong one
       VerifyResult rs = verify_formula(small, "shrunk formula " + std::to_string(i), vo);
       const std::string dir = vm["out"].as<std::string>() + "/seed" + std::to_string(p.seed) + "-formula" +
                               std::to_string(i);
       write_reproducer(rs, dir, vo);
-      std::ofstream(dir + "/original.cnf") << to_dimacs(f);
+      cli::write_text_file(dir + "/original.cnf", to_dimacs(f));
       std::string replay = "gridlock fuzz --seed " + std::to_string(p.seed) + " --index " + std::to_string(i) +
                            " --min-vars " + std::to_string(p.min_vars) + " --max-vars " + std::to_string(p.max_vars) +
                            " --kinds " + vm["kinds"].as<std::string>() +
@@ -154,16 +166,18 @@ int run_fuzz(const std::vector<std::string>& args) {
                           {"shrink_tries", st.tries}, {"dimacs", to_dimacs(small)}});
       if (!vm.count("keep-going")) break;
     }
+    if (i > UINT64_MAX - shards) break;
     if (progress && elapsed() - last_print >= 0.5) {
       last_print = elapsed();
       std::cerr << "\r\033[Kfuzz: " << status_line() << std::flush;
     }
   }
   if (progress) std::cerr << "\r\033[K";
+  const bool interrupted = stop_requested();
   if (json) {
     nlohmann::json j;
     j["command"] = "fuzz";
-    j["seed"] = p.seed;
+    j["seed"] = std::to_string(p.seed);  // a string: seeds above 2^53 survive JSON readers
     j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
     j["formulas"] = done;
     j["sat"] = sat;
@@ -174,11 +188,14 @@ int run_fuzz(const std::vector<std::string>& args) {
     j["seconds"] = elapsed();
     j["findings"] = findings;
     j["status"] = disagreements ? "DISAGREE" : "AGREE";
+    j["interrupted"] = interrupted;
     std::cout << j.dump() << std::endl;
   } else {
     std::cout << "c " << status_line() << "\n";
+    if (interrupted) std::cout << "c INTERRUPTED by signal " << stop_signal().load() << ": partial campaign\n";
     std::cout << "s " << (disagreements ? "DISAGREE" : "AGREE") << std::endl;
   }
+  if (interrupted) return cli::interrupted_exit_code();
   return disagreements ? 1 : 0;
 }
 

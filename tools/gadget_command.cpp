@@ -11,6 +11,7 @@
 #include "lattice/render.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 
 namespace gridlock {
 namespace {
@@ -20,7 +21,7 @@ int run_gadget(const std::vector<std::string>& args) {
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("literals,k", po::value<int>()->default_value(3), "clause gadget: literals in the clause (1 to 16)")
+    ("literals,k", po::value<std::string>()->default_value("3"), "clause gadget: literals in the clause (1 to 16)")
     ("output,o", po::value<std::string>()->default_value("-"), "write the instance (.grid) here ('-': standard output)")
     ("svg", po::value<std::string>(), "also draw it to this SVG file")
     ("break-gadget", po::value<std::string>()->default_value("none"),
@@ -34,6 +35,18 @@ int run_gadget(const std::vector<std::string>& args) {
   const std::string kind = vm["kind"].as<std::string>();
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
+  {
+    // A mutation breaks one gadget kind; on another kind it would change
+    // nothing, and the drawing labelled broken would be the sound gadget.
+    const Mutation m = *mutation;
+    const char* applies = m == Mutation::VariableLooseY                           ? "variable"
+                          : m == Mutation::ClauseLoose || m == Mutation::ClauseTight ? "clause"
+                          : m == Mutation::None                                     ? nullptr
+                                                                                    : "order";
+    if (applies && kind != applies && (kind == "variable" || kind == "clause" || kind == "order"))
+      throw UserError("--break-gadget " + std::string(mutation_name(m)) + " breaks the " + applies +
+                      " gadget, not the " + kind + " gadget");
+  }
   Canvas canvas;
   GadgetPlacement p;
   std::string words, title;
@@ -42,8 +55,7 @@ int run_gadget(const std::vector<std::string>& args) {
     words = "variable gadget: collides iff T and F are both done before z, or y is done before T and F";
     title = "variable gadget";
   } else if (kind == "clause") {
-    const int k = vm["literals"].as<int>();
-    if (k < 1 || k > 16) throw UserError("--literals must be 1 to 16");
+    const int k = cli::int_arg(vm, "literals", 1, 16);
     std::vector<std::string> lits;
     for (int i = 1; i <= k; ++i) lits.push_back("l" + std::to_string(i));
     p = place_clause_gadget(canvas, 0, lits, "u", *mutation);
@@ -62,12 +74,14 @@ int run_gadget(const std::vector<std::string>& args) {
     comments.push_back("BROKEN GADGET (" + std::string(mutation_name(*mutation)) + "): the contract above is the broken one");
   std::ostringstream grid;
   write_instance(grid, inst, comments);
-  cli::write_text_file(vm["output"].as<std::string>(), grid.str());
+  std::vector<std::pair<std::string, std::string>> files;
   if (vm.count("svg")) {
     RenderOptions ro;
     ro.title = title;
-    cli::write_text_file(vm["svg"].as<std::string>(), render_svg(inst, ro));
+    files.emplace_back(vm["svg"].as<std::string>(), render_svg(inst, ro));
   }
+  files.emplace_back(vm["output"].as<std::string>(), grid.str());
+  cli::write_text_files(files);
   return 0;
 }
 

@@ -3,6 +3,10 @@
 // YES by a schedule the simulator has accepted, NO by CaDiCaL's UNSAT of the
 // source formula (the reduction preserves satisfiability: docs/gadgets.md,
 // and verify/fuzz test it).
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -12,6 +16,7 @@
 #include "cnf/dimacs.hpp"
 #include "cnf/generate.hpp"
 #include "cnf/sat_solver.hpp"
+#include "common/limits.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
@@ -19,11 +24,43 @@
 #include "reductions/to_lsat.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 
 namespace gridlock {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Creates out, or checks that it is empty. With force, a non-empty folder is
+// accepted after removing what a previous set left there (manifest.json and
+// top-level *.grid, *.cnf, *.schedule files, and temporary *.tmp.* files);
+// anything else in it stays.
+void prepare_output_folder(const std::string& out, bool force) {
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
+  fs::create_directories(out, ec);
+  if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder: " + ec.message()});
+  std::vector<fs::path> old;
+  bool non_empty = false;
+  for (const auto& e : fs::directory_iterator(out, ec)) {
+    non_empty = true;
+    const std::string name = e.path().filename().string();
+    const std::string ext = e.path().extension().string();
+    if (e.is_regular_file() && (name == "manifest.json" || ext == ".grid" || ext == ".cnf" || ext == ".schedule" ||
+                                name.find(".tmp.") != std::string::npos))
+      old.push_back(e.path());
+  }
+  if (ec) throw UserError(Diagnostic{out, 0, "cannot list folder: " + ec.message()});
+  if (!non_empty) return;
+  if (!force)
+    throw UserError(Diagnostic{out, 0, "folder is not empty (give --force to replace the set in it)"});
+  // The manifest first: a folder is never described by a stale manifest.
+  std::sort(old.begin(), old.end(), [](const fs::path& a, const fs::path& b) {
+    return (a.filename() == "manifest.json") > (b.filename() == "manifest.json");
+  });
+  for (const auto& p : old)
+    if (!fs::remove(p, ec) || ec) throw UserError(Diagnostic{p.string(), 0, "cannot remove: " + ec.message()});
+}
 
 struct Source {
   std::string name, origin;  // file stem, how it was made
@@ -32,18 +69,24 @@ struct Source {
 };
 
 int run_gen_instances(const std::vector<std::string>& args) {
+  cli::install_stop_handlers();  // first: a signal at any moment gives the partial summary
   namespace po = boost::program_options;
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("out,o", po::value<std::string>()->required(), "folder to write (created): instances, formulas, witnesses, manifest.json")
-    ("seed", po::value<uint64_t>()->default_value(1), "seed of the random formulas")
-    ("threshold", po::value<int>()->default_value(10), "random 3-SAT formulas at the threshold ratio 4.26")
-    ("lsat", po::value<int>()->default_value(10), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")
-    ("vars", po::value<int>()->default_value(12), "variables of each random formula (3 to 1000)")
-    ("yes", po::value<int>()->default_value(-1), "keep only this many YES instances of the random ones (-1: all)")
-    ("no", po::value<int>()->default_value(-1), "keep only this many NO instances of the random ones (-1: all); "
-                                               "with --yes/--no, formulas are drawn until both are met")
+    ("out,o", po::value<std::string>()->required(), "folder to write (created; must be empty unless --force): "
+                                                   "instances, formulas, witnesses, manifest.json")
+    ("force", "write into a non-empty folder: the files of a previous set there (manifest.json, *.grid, *.cnf, "
+              "*.schedule) are removed first")
+    ("seed", po::value<std::string>()->default_value("1"), "seed of the random formulas")
+    ("threshold", po::value<std::string>()->default_value("10"), "random 3-SAT formulas at the threshold ratio 4.26")
+    ("lsat", po::value<std::string>()->default_value("10"), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")
+    ("vars", po::value<std::string>()->default_value("12"), "variables of each random formula (3 to 1000)")
+    ("yes", po::value<std::string>(), "keep only this many YES instances of the random ones (default: all)")
+    ("no", po::value<std::string>(), "keep only this many NO instances of the random ones (default: all); "
+                                     "with --yes/--no, formulas are drawn until both are met")
+    ("timeout", po::value<std::string>()->default_value("60"),
+     "seconds CaDiCaL may spend labelling one formula; a formula not decided in time is skipped (noted)")
     ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)");
   po::positional_options_description pos;
   po::variables_map vm;
@@ -52,31 +95,53 @@ int run_gen_instances(const std::vector<std::string>& args) {
                        "random LSAT<=3, or given) goes through to-lsat and the gadget compiler. Labels are certified:\n"
                        "YES with a witness schedule (CaDiCaL's model lifted, accepted by the exact simulator, saved\n"
                        "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source.\n"
-                       "manifest.json lists every instance with its answer, certificate, sizes and seed.",
+                       "manifest.json lists every instance with its answer, certificate, sizes and seed; it is\n"
+                       "written last. Every file is written atomically. On a terminal a progress line shows the\n"
+                       "count and the formula in progress. SIGINT/SIGTERM stop between formulas: the finished\n"
+                       "ones stay, with a manifest marked \"interrupted\": true; exit 130/143.",
                        nullptr))
     return 0;
   const std::string out = vm["out"].as<std::string>();
-  const uint64_t seed = vm["seed"].as<uint64_t>();
-  const int vars = vm["vars"].as<int>();
-  if (vars < 3 || vars > 1000) throw UserError("--vars must be 3 to 1000");
-  const int want_yes = vm["yes"].as<int>(), want_no = vm["no"].as<int>();
+  const uint64_t seed = cli::seed_arg(vm, "seed");
+  const int vars = cli::int_arg(vm, "vars", 3, 1000);
+  const int threshold_count = cli::int_arg(vm, "threshold", 0, 1'000'000);
+  const int lsat_count = cli::int_arg(vm, "lsat", 0, 1'000'000);
+  const int want_yes = vm.count("yes") ? cli::int_arg(vm, "yes", 0, 1'000'000) : -1;
+  const int want_no = vm.count("no") ? cli::int_arg(vm, "no", 0, 1'000'000) : -1;
+  const double timeout = cli::seconds_arg(vm, "timeout");
   const bool mix = want_yes >= 0 || want_no >= 0;
 
   std::vector<Source> given;
   if (vm.count("formula"))
     for (const auto& path : vm["formula"].as<std::vector<std::string>>())
-      given.push_back({"given-" + fs::path(path).stem().string(), "given " + path, cli::load_formula(path), 0});
+      given.push_back({"given-" + fs::path(path).stem().string(), "given " + path,
+                       cli::load_formula(path, true, cli::FormulaUse::Compile), 0});
 
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder"});
+  prepare_output_folder(out, vm.count("force") > 0);
+  const bool progress = isatty(STDERR_FILENO);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   auto write = [&](const std::string& file, const std::string& text) { cli::write_text_file(out + "/" + file, text); };
+  int skipped = 0;
 
   nlohmann::json entries = nlohmann::json::array();
   int yes = 0, no = 0;
   // Labels one formula; returns false if --yes/--no say it is not wanted.
   auto label = [&](const Source& s, bool random) {
-    SatResult sat = solve_sat(s.formula);
+    if (progress)
+      std::cerr << "\r\033[Kgen-instances: " << entries.size() << " written (" << yes << " YES, " << no
+                << " NO), labelling " << s.name << ", " << static_cast<uint64_t>(elapsed()) << " s" << std::flush;
+    SatLimits limits;
+    limits.seconds = timeout;
+    SatResult sat = solve_sat(s.formula, limits);
+    if (progress) std::cerr << "\r\033[K" << std::flush;
+    if (stop_requested()) return false;
+    if (sat.status == SatResult::Unknown) {
+      ++skipped;
+      std::cout << "c " << s.name << ": skipped, CaDiCaL did not decide it within --timeout " << timeout << " s"
+                << std::endl;
+      return false;
+    }
     const bool is_yes = sat.status == SatResult::Sat;
     if (random && mix && ((is_yes && want_yes >= 0 && yes >= want_yes) || (!is_yes && want_no >= 0 && no >= want_no)))
       return false;
@@ -87,7 +152,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
     e["instance"] = s.name + ".grid";
     e["formula"] = s.name + ".cnf";
     e["origin"] = s.origin;
-    if (s.seed) e["seed"] = s.seed;
+    if (s.seed) e["seed"] = std::to_string(s.seed);  // a string: seeds above 2^53 survive JSON readers
     e["variables"] = s.formula.num_vars;
     e["clauses"] = s.formula.clauses.size();
     e["lsat_variables"] = red.output().num_vars;
@@ -114,20 +179,24 @@ int run_gen_instances(const std::vector<std::string>& args) {
     }
     std::ostringstream grid;
     write_instance(grid, c.instance, {s.name + ": " + s.origin, std::string("answer: ") + (is_yes ? "YES" : "NO")});
-    write(s.name + ".grid", grid.str());
+    // The instance last: a .grid on disk always has its formula (and witness).
     write(s.name + ".cnf", to_dimacs(s.formula));
+    write(s.name + ".grid", grid.str());
     entries.push_back(e);
     std::cout << "c " << s.name << ": " << (is_yes ? "YES" : "NO") << ", " << c.stats.nodes << " nodes, "
               << c.stats.couplings << " couplings" << std::endl;
     return true;
   };
 
-  for (const Source& s : given) label(s, false);
+  for (const Source& s : given) {
+    if (stop_requested()) break;
+    label(s, false);
+  }
   // Random formulas. Formula j of a kind has seed fuzz_formula_seed(seed, j).
   auto draw = [&](const std::string& kind, int count) {
     int made = 0;
     const int limit = mix ? 100 * std::max(count, 1) : count;  // attempts
-    for (int j = 0; j < limit && made < count; ++j) {
+    for (int j = 0; j < limit && made < count && !stop_requested(); ++j) {
       Source s;
       s.seed = fuzz_formula_seed(seed, static_cast<uint64_t>(j) + (kind == "lsat" ? 1'000'000'000ull : 0));
       if (kind == "threshold") {
@@ -151,20 +220,28 @@ int run_gen_instances(const std::vector<std::string>& args) {
       made += label(s, true);
     }
   };
-  draw("threshold", vm["threshold"].as<int>());
-  draw("lsat", vm["lsat"].as<int>());
+  draw("threshold", threshold_count);
+  draw("lsat", lsat_count);
+  const bool interrupted = stop_requested();
 
   nlohmann::json manifest;
   manifest["generator"] = "gridlock gen-instances";
   manifest["problem"] = "Discrete Collision-free Schedule (is there an order of the couplings with no collision?)";
-  manifest["seed"] = seed;
+  manifest["seed"] = std::to_string(seed);  // a string: seeds above 2^53 survive JSON readers
   manifest["vars"] = vars;
   manifest["yes"] = yes;
   manifest["no"] = no;
+  manifest["skipped"] = skipped;
+  manifest["interrupted"] = interrupted;
   manifest["instances"] = entries;
-  write("manifest.json", manifest.dump(2) + "\n");
+  write("manifest.json", manifest.dump(2) + "\n");  // last: it lists only files already in place
   std::cout << "c wrote " << entries.size() << " instances (" << yes << " YES, " << no << " NO) and " << out
             << "/manifest.json" << std::endl;
+  if (interrupted) {
+    std::cout << "c INTERRUPTED by signal " << stop_signal().load() << ": the manifest lists the " << entries.size()
+              << " instances finished" << std::endl;
+    return cli::interrupted_exit_code();
+  }
   if (mix && ((want_yes >= 0 && yes < want_yes) || (want_no >= 0 && no < want_no)))
     std::cout << "c note: fewer instances than asked for of one answer (random formulas of this kind rarely have it)"
               << std::endl;

@@ -19,7 +19,9 @@ int run_lift(const std::vector<std::string>& args) {
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("model", po::value<std::string>(), "an assignment ('v' lines of a SAT solver, or literals): lift it to a schedule")
+    ("model", po::value<std::string>(), "an assignment: a file holding a SAT-competition answer ('s SATISFIABLE' and "
+                                        "'v' lines ending in 0, as 'gridlock cnf solve' prints), or the literals "
+                                        "themselves (\"1 -2 3\"), every variable given: lift it to a schedule")
     ("schedule", po::value<std::string>(), "a discrete order of the couplings (e.g. 'gridlock solve' output): "
                                            "lift it to an assignment")
     ("json", "print one JSON object instead of c/s/v lines");
@@ -35,7 +37,8 @@ int run_lift(const std::vector<std::string>& args) {
     return 0;
   if (vm.count("model") + vm.count("schedule") != 1) throw UserError("give exactly one of --model, --schedule");
   const std::string path = vm["formula"].as<std::string>();
-  Formula f = cli::load_formula(path);
+  Formula f = cli::load_formula(path, true, cli::FormulaUse::Compile);
+  cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {
     c = compile_formula(f);
@@ -49,7 +52,7 @@ int run_lift(const std::vector<std::string>& args) {
   Simulator sim(inst);
   if (vm.count("model")) {
     std::vector<bool> value;
-    if (auto e = read_assignment_file(vm["model"].as<std::string>(), f.num_vars, value)) throw UserError(*e);
+    if (auto e = read_model(vm["model"].as<std::string>(), f.num_vars, value)) throw UserError(*e);
     long bad = first_falsified_clause(f, value);
     ans.comment(bad < 0 ? "the model satisfies the formula"
                         : "the model falsifies clause " + std::to_string(bad + 1) + ": expect a collision");

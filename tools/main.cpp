@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/diagnostic.hpp"
+#include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 
 namespace gridlock {
@@ -57,15 +58,16 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
+  int code = 1;
   try {
-    return it->second.run(args);
+    code = it->second.run(args);
   } catch (const gridlock::UserError& e) {
     std::cout.flush();
     std::cerr << "gridlock: error: " << e.what() << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     std::cout.flush();
-    std::cerr << "gridlock: error: out of memory\n";
+    std::cerr << "gridlock: error: " << gridlock::cli::Activity::out_of_memory_message() << '\n';
     return 1;
   } catch (const std::exception& e) {
     // Not a user error: a bug or a limit of ours. Still no crash, still exit 1.
@@ -73,4 +75,11 @@ int main(int argc, char** argv) {
     std::cerr << "gridlock: error: internal: " << e.what() << '\n';
     return 1;
   }
+  // Output lost is never a success: a failed write to standard output (a
+  // full disk, a closed pipe) turns any exit code into an error.
+  if (std::string err = gridlock::cli::stdout_error(); !err.empty()) {
+    std::cerr << "gridlock: error: " << err << '\n';
+    return 1;
+  }
+  return code;
 }

@@ -1,9 +1,15 @@
 // gridlock solve: the exact Discrete Collision-free Schedule solver.
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
+
+#include "common/limits.hpp"
 
 #include "solver/solve.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 #include "tools/output.hpp"
 
 namespace gridlock {
@@ -16,12 +22,13 @@ std::string fixed(double v, int digits) {
 }
 
 int run_solve(const std::vector<std::string>& args) {
+  const Deadline since_start;  // --timeout counts from here: reading the instance is part of it
   namespace po = boost::program_options;
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("timeout", po::value<double>(), "give up after S seconds (s UNKNOWN, exit 0)")
-    ("max-states", po::value<uint64_t>(), "give up after N search nodes (s UNKNOWN, exit 0)")
+    ("timeout", po::value<std::string>(), "give up after S seconds (s UNKNOWN, exit 0)")
+    ("max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")
     ("engine", po::value<std::string>()->default_value("auto"),
      "search: auto (precedence for horizontal-only instances, else states), states, precedence")
     ("json", "print one JSON object instead of c/s/v lines");
@@ -33,14 +40,9 @@ int run_solve(const std::vector<std::string>& args) {
                        "exhaustive search, s UNKNOWN (exit 0) when a limit is reached."))
     return 0;
   SolveOptions opt;
-  if (vm.count("timeout")) {
-    opt.seconds = vm["timeout"].as<double>();
-    if (!(opt.seconds > 0)) throw UserError("--timeout must be a positive number of seconds");
-  }
-  if (vm.count("max-states")) {
-    opt.max_states = vm["max-states"].as<uint64_t>();
-    if (opt.max_states == 0) throw UserError("--max-states must be at least 1");
-  }
+  opt.seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
+  opt.max_states = cli::count_arg_opt(vm, "max-states").value_or(0);
+  opt.progress = !vm.count("json") && isatty(STDERR_FILENO);
   const std::string engine = vm["engine"].as<std::string>();
   if (engine == "auto") opt.engine = SolveOptions::Engine::Auto;
   else if (engine == "states") opt.engine = SolveOptions::Engine::States;
@@ -48,9 +50,15 @@ int run_solve(const std::vector<std::string>& args) {
   else throw UserError("--engine must be auto, states or precedence, not '" + engine + "'");
 
   const std::string path = vm["instance"].as<std::string>();
-  Instance inst = cli::load_instance(path);
+  // Kept until the process ends (reachable, so no leak report): freeing an
+  // instance of a million nodes takes a noticeable part of a short --timeout.
+  static Instance* kept = nullptr;
+  kept = new Instance(cli::load_instance(path));
+  const Instance& inst = *kept;
+  cli::Activity act(path, "solving the instance");
   if (opt.engine == SolveOptions::Engine::Precedence && !inst.horizontal_only())
     throw UserError(path + ": --engine precedence needs a horizontal-only instance");
+  if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
   Answer ans("solve", vm.count("json") > 0);
   ans.comment("gridlock solve " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +

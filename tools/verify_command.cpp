@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
+#include "common/limits.hpp"
 #include "lattice/render.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
@@ -17,6 +18,7 @@
 #include "reductions/verify.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 
 namespace gridlock {
 namespace {
@@ -92,17 +94,18 @@ void draw(const VerifyResult& r, const std::string& dir) {
 }
 
 int run_verify(const std::vector<std::string>& args) {
+  cli::install_stop_handlers();  // first: a signal at any moment gives the partial summary
   namespace po = boost::program_options;
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
-    ("timeout", po::value<double>()->default_value(60), "seconds the exact solver may spend on one formula (then UNKNOWN)")
-    ("max-states", po::value<uint64_t>()->default_value(0), "search nodes the exact solver may visit per formula (0: no limit)")
+    ("timeout", po::value<std::string>()->default_value("60"), "seconds the exact solver may spend on one formula (then UNKNOWN)")
+    ("max-states", po::value<std::string>()->default_value("0"), "search nodes the exact solver may visit per formula (0: no limit)")
     ("reproducers", po::value<std::string>()->default_value("verify-failures"),
      "folder for reproducers of disagreements (one subfolder each)")
     ("pictures", po::value<std::string>(), "draw each compiled instance of at most --picture-nodes nodes, and its "
                                            "witness (or a collision), into this folder")
-    ("picture-nodes", po::value<size_t>()->default_value(1500), "largest instance drawn by --pictures")
+    ("picture-nodes", po::value<std::string>()->default_value("1500"), "largest instance drawn by --pictures")
     ("json", "print one JSON object instead of the table");
   po::options_description hidden;
   hidden.add_options()
@@ -119,12 +122,15 @@ int run_verify(const std::vector<std::string>& args) {
                        "and every certificate: CaDiCaL's model -> schedule -> simulator; the solver's\n"
                        "schedule -> assignment -> formula; 'all at time 0' -> simulator. One row per formula,\n"
                        "then a summary. Exit 0 iff everything agrees (UNKNOWN, a limit hit, is no disagreement);\n"
-                       "exit 1 on any disagreement, with a reproducer written for each.",
+                       "exit 1 on any disagreement, with a reproducer written for each.\n"
+                       "SIGINT/SIGTERM stop after the formula in progress is abandoned: the summary covers the\n"
+                       "formulas finished, is marked interrupted, and the exit code is 130/143.",
                        &hidden))
     return 0;
   VerifyOptions opt;
-  opt.solve_seconds = vm["timeout"].as<double>();
-  opt.max_states = vm["max-states"].as<uint64_t>();
+  opt.solve_seconds = cli::seconds_arg(vm, "timeout");
+  opt.max_states = cli::count_arg(vm, "max-states", 0);  // 0: no limit
+  const auto picture_nodes = static_cast<size_t>(cli::count_arg(vm, "picture-nodes", 1));
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   opt.mutation = *mutation;
@@ -132,7 +138,7 @@ int run_verify(const std::vector<std::string>& args) {
   std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
   // Read everything first: a bad file is reported before any work is done.
   std::vector<Formula> formulas;
-  for (const auto& f : files) formulas.push_back(cli::load_formula(f));
+  for (const auto& f : files) formulas.push_back(cli::load_formula(f, true, cli::FormulaUse::Compile));
 
   std::ostream& out = std::cout;
   const int w = 14;
@@ -145,8 +151,12 @@ int run_verify(const std::vector<std::string>& args) {
   nlohmann::json rows = nlohmann::json::array();
   size_t agree = 0, unknown = 0, disagree = 0, witnesses = 0, sat = 0, unsat = 0;
   double total_ms = 0;
-  for (size_t i = 0; i < files.size(); ++i) {
+  size_t done = 0;
+  for (size_t i = 0; i < files.size() && !stop_requested(); ++i) {
+    cli::Activity act(files[i], "verifying the formula");
     VerifyResult r = verify_formula(formulas[i], files[i], opt);
+    if (stop_requested()) break;  // its answers may be cut short: not counted
+    ++done;
     witnesses += static_cast<size_t>(r.witnesses_checked());
     sat += r.sat == Tri::Yes;
     unsat += r.sat == Tri::No;
@@ -162,7 +172,7 @@ int run_verify(const std::vector<std::string>& args) {
     } else {
       ++agree;
     }
-    if (vm.count("pictures") && r.nodes <= vm["picture-nodes"].as<size_t>()) draw(r, vm["pictures"].as<std::string>());
+    if (vm.count("pictures") && r.nodes <= picture_nodes) draw(r, vm["pictures"].as<std::string>());
     if (json) {
       rows.push_back({{"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
                       {"reduced", r.reduced}, {"nodes", r.nodes}, {"operations", r.ops}, {"couplings", r.couplings},
@@ -182,22 +192,29 @@ int run_verify(const std::vector<std::string>& args) {
           << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps) << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
     }
   }
-  std::string summary = std::to_string(files.size()) + " formulas (" + std::to_string(sat) + " SAT, " +
+  const bool interrupted = stop_requested();
+  std::string summary = std::to_string(done) + " formulas (" + std::to_string(sat) + " SAT, " +
                         std::to_string(unsat) + " UNSAT): " + std::to_string(agree) + " agree, " +
                         std::to_string(unknown) + " unknown (solver limit), " + std::to_string(disagree) +
                         " disagree; " + std::to_string(witnesses) + " certificates checked; " +
                         fmt_ms(total_ms / 1000) + " s";
+  if (interrupted)
+    summary += "; INTERRUPTED by signal " + std::to_string(stop_signal().load()) + " after " + std::to_string(done) +
+               " of " + std::to_string(files.size()) + " formulas";
   if (json) {
     nlohmann::json j;
     j["command"] = "verify";
     j["formulas"] = rows;
-    j["summary"] = {{"formulas", files.size()}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
+    j["summary"] = {{"formulas", done}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
                     {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
-    j["exit_code"] = disagree ? 1 : 0;
+    j["interrupted"] = interrupted;
+    j["formulas_given"] = files.size();
+    j["exit_code"] = interrupted ? cli::interrupted_exit_code() : disagree ? 1 : 0;
     out << j.dump() << std::endl;
   } else {
     out << "summary: " << summary << std::endl;
   }
+  if (interrupted) return cli::interrupted_exit_code();
   if (disagree) {
     std::cerr << "gridlock: error: verify: " << disagree << " disagreement" << (disagree > 1 ? "s" : "")
               << "; reproducers in " << vm["reproducers"].as<std::string>() << "\n";

@@ -86,4 +86,45 @@ CliResult run_gridlock(const std::vector<std::string>& args, const std::string& 
   return r;
 }
 
+CliProcess start_gridlock(const std::vector<std::string>& args, const std::string& stdout_path) {
+  CliProcess p;
+  p.dir = temp_dir();
+  p.out_path = stdout_path.empty() ? p.dir + "/stdout" : stdout_path;
+  p.err_path = p.dir + "/stderr";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, p.out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, p.err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> argv_s{GRIDLOCK_BINARY};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  int rc = posix_spawn(&pid, GRIDLOCK_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw std::runtime_error("cannot start " GRIDLOCK_BINARY);
+  p.pid = pid;
+  return p;
+}
+
+CliResult finish_gridlock(CliProcess& p) {
+  int status = 0;
+  waitpid(p.pid, &status, 0);
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  if (p.out_path == p.dir + "/stdout") r.out = slurp(p.out_path);
+  r.err = slurp(p.err_path);
+  std::error_code ec;
+  std::filesystem::remove_all(p.dir, ec);
+  p.pid = -1;
+  return r;
+}
+
+CliResult run_gridlock_stdout_to(const std::vector<std::string>& args, const std::string& stdout_path) {
+  CliProcess p = start_gridlock(args, stdout_path);
+  return finish_gridlock(p);
+}
+
 }  // namespace gridlock::test

@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# Chaos test of the interruption guarantees (docs/errors.md): interrupts
+# `gridlock fuzz`, `gridlock verify` and `gridlock gen-instances` with SIGINT
+# or SIGTERM at random moments and checks what is left behind:
+#   - the exit code is 130 (SIGINT) / 143 (SIGTERM), or 0/1 if the run had
+#     already finished;
+#   - --json output is one valid JSON object whose "interrupted" matches;
+#   - no temporary file (*.tmp.*) is left anywhere;
+#   - every .grid parses (gridlock render), every .cnf parses (gridlock cnf
+#     check), every .svg is complete, every YES instance's schedule is
+#     collision-free (gridlock check);
+#   - gen-instances: manifest.json lists exactly the .grid files in the folder.
+#
+# usage: tests/chaos.sh GRIDLOCK [ROUNDS]   (ctest runs it: see tests/CMakeLists.txt)
+# CHAOS_SEED fixes the random choices (printed first, so a failure replays).
+# Bounded: each round waits at most 2.5 s before its signal and 60 s after.
+set -uo pipefail
+GRIDLOCK=${1:?usage: chaos.sh GRIDLOCK [ROUNDS]}
+ROUNDS=${2:-${CHAOS_ROUNDS:-6}}
+SEED=${CHAOS_SEED:-$(( $(date +%s) % 100000 ))}
+DATA=$(cd "$(dirname "$0")" && pwd)/data/satlib
+echo "chaos: seed $SEED, $ROUNDS rounds (replay: CHAOS_SEED=$SEED $0 $GRIDLOCK $ROUNDS)"
+RANDOM=$SEED
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/gridlock-chaos.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT
+failures=0
+
+fail() {
+  echo "chaos: FAIL (seed $SEED, round $round, $what): $*" >&2
+  failures=$((failures + 1))
+}
+
+# Every file under $1 must be whole and parse.
+check_files() {
+  local dir=$1 f
+  [ -d "$dir" ] || return 0
+  while IFS= read -r f; do fail "temporary file left behind: $f"; done < <(find "$dir" -name '*.tmp.*')
+  while IFS= read -r f; do
+    "$GRIDLOCK" render --ascii "$f" -o /dev/null 2>/dev/null || fail "does not parse: $f"
+    local sched="${f%.grid}.schedule"
+    if [ -f "$sched" ]; then
+      "$GRIDLOCK" check "$f" --order-file "$sched" >/dev/null 2>&1
+      [ $? -eq 10 ] || fail "schedule not collision-free: $sched"
+    fi
+  done < <(find "$dir" -name '*.grid')
+  while IFS= read -r f; do
+    "$GRIDLOCK" cnf check "$f" >/dev/null 2>&1
+    local rc=$?
+    [ $rc -eq 10 ] || [ $rc -eq 20 ] || fail "does not parse: $f"
+  done < <(find "$dir" -name '*.cnf')
+  while IFS= read -r f; do
+    tail -c 16 "$f" | grep -q '</svg>' || fail "incomplete picture: $f"
+  done < <(find "$dir" -name '*.svg')
+}
+
+for round in $(seq 1 "$ROUNDS"); do
+  dir="$WORK/r$round"
+  mkdir -p "$dir"
+  kind=$((RANDOM % 3))
+  sig=$([ $((RANDOM % 2)) -eq 0 ] && echo INT || echo TERM)
+  delay_ms=$((50 + RANDOM % 2450))
+  json=$([ $((RANDOM % 2)) -eq 0 ] && echo --json || echo "")
+  broken=$([ $((RANDOM % 2)) -eq 0 ] && echo "--break-gadget clause-loose" || echo "")
+  case $kind in
+    0) what="fuzz $json $broken"
+       cmd=("$GRIDLOCK" fuzz --seed "$RANDOM" --count 100000 --keep-going --out "$dir/out" $json $broken) ;;
+    1) what="verify $json $broken"
+       cmd=("$GRIDLOCK" verify "$DATA/uf20-91" --pictures "$dir/out/pictures" --reproducers "$dir/out/repro" $json $broken) ;;
+    2) what="gen-instances"
+       json=""
+       cmd=("$GRIDLOCK" gen-instances -o "$dir/out" --vars $((8 + RANDOM % 40)) --threshold 30 --lsat 30 --seed "$RANDOM") ;;
+  esac
+  what="$what, SIG$sig after $delay_ms ms"
+  "${cmd[@]}" >"$dir/stdout" 2>"$dir/stderr" &
+  pid=$!
+  sleep "$(printf '%d.%03d' $((delay_ms / 1000)) $((delay_ms % 1000)))"
+  kill -s "$sig" "$pid" 2>/dev/null
+  # Bounded wait: a run that ignores the signal for 60 s is a failure.
+  for _ in $(seq 1 600); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+  if kill -0 "$pid" 2>/dev/null; then
+    fail "still running 60 s after the signal"
+    kill -KILL "$pid"
+  fi
+  wait "$pid"
+  rc=$?
+  want=$([ "$sig" = INT ] && echo 130 || echo 143)
+  interrupted=false
+  if [ $rc -eq "$want" ]; then
+    interrupted=true
+  elif [ $rc -ne 0 ] && [ $rc -ne 1 ]; then
+    fail "exit code $rc (want $want, or 0/1 if it had finished); stderr: $(head -c 300 "$dir/stderr")"
+  fi
+  if [ -n "$json" ]; then
+    got=$(jq -e '.interrupted' "$dir/stdout" 2>/dev/null) || fail "stdout is not one JSON object with \"interrupted\""
+    [ "${got:-}" = "$interrupted" ] || fail "\"interrupted\": ${got:-missing}, exit code $rc"
+  fi
+  check_files "$dir/out"
+  if [ $kind -eq 2 ] && [ -d "$dir/out" ] && { [ -f "$dir/out/manifest.json" ] || [ $rc -eq 0 ]; }; then
+    listed=$(jq -r '.instances[].instance' "$dir/out/manifest.json" 2>/dev/null | sort)
+    present=$(cd "$dir/out" && ls -- *.grid 2>/dev/null | sort)
+    [ "$listed" = "$present" ] || fail "manifest lists [$listed], folder holds [$present]"
+    [ "$(jq -r .interrupted "$dir/out/manifest.json")" = "$interrupted" ] || fail "manifest \"interrupted\" vs exit $rc"
+  fi
+  echo "chaos: round $round: $what: exit $rc$([ "$interrupted" = true ] && echo ' (interrupted)')"
+done
+if [ $failures -gt 0 ]; then
+  echo "chaos: $failures failure(s); replay with CHAOS_SEED=$SEED" >&2
+  exit 1
+fi
+echo "chaos: all $ROUNDS rounds left only whole, parseable files"
