@@ -53,7 +53,7 @@ MaybeError read_dimacs_string(const std::string& text, const std::string& name, 
 // several lines), then "p cnf V C", then one clause per line ending in " 0".
 // read_dimacs gives back an equal Formula when the comments hold no control
 // bytes other than tab (and do not end in CR). Requires validate(f) to be
-// empty. O(size of f).
+// empty (GRIDLOCK_ASSERT). O(size of f).
 void write_dimacs(std::ostream& out, const Formula& f);
 
 // write_dimacs into a string.

@@ -4,9 +4,12 @@
 // reduction can be handed to any checker or solver unchanged.
 #pragma once
 
+#include <climits>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "common/assert.hpp"
 
 namespace gridlock {
 
@@ -19,8 +22,11 @@ struct Formula {
 };
 
 // The variable of a literal. Requires lit != 0 and lit != INT_MIN (the reader
-// and every generator guarantee both).
-inline int var_of(int lit) { return lit < 0 ? -lit : lit; }
+// and every generator guarantee both; GRIDLOCK_ASSERT).
+inline int var_of(int lit) {
+  GRIDLOCK_ASSERT(lit != 0 && lit != INT_MIN, "var_of needs a non-zero literal other than INT_MIN");
+  return lit < 0 ? -lit : lit;
+}
 
 // The value of a literal under value (indexed by variable, 1-based).
 inline bool literal_value(int lit, const std::vector<bool>& value) {

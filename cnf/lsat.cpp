@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "common/assert.hpp"
+
 namespace gridlock {
 
 namespace {
@@ -43,6 +45,7 @@ const char* rule_name(LsatRule rule) {
 }
 
 LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
+  GRIDLOCK_ASSERT(validate(f).empty(), "check_lsat needs a valid formula");
   LsatReport rep;
   // Occurrences sorted by literal: each literal's clauses form one run.
   // Sorting instead of indexing by variable keeps memory independent of

@@ -64,7 +64,7 @@ struct LsatReport {
 // reports the first rule it breaks, in the order of LsatRule (a pair of
 // clauses sharing two literals is reported once, at the first of the two);
 // the first max_violations are kept (0 = just the verdict). Requires
-// validate(f) empty. Time O(L log L) for L literal occurrences, memory O(L),
+// validate(f) empty (GRIDLOCK_ASSERT). Time O(L log L) for L literal occurrences, memory O(L),
 // independent of num_vars.
 LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations = 1);
 

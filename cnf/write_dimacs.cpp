@@ -5,10 +5,12 @@
 #include <string_view>
 
 #include "cnf/dimacs.hpp"
+#include "common/assert.hpp"
 
 namespace gridlock {
 
 void write_dimacs(std::ostream& out, const Formula& f) {
+  GRIDLOCK_ASSERT(validate(f).empty(), "write_dimacs needs a valid formula");
   for (const auto& comment : f.comments) {
     // One "c" line per line of the comment, so that a multi-line comment
     // cannot smuggle a clause or a header into the file.

@@ -1,19 +1,7 @@
-// The .grid instance format (documented in docs/grid-format.md).
-//
-//   c any comment                       comment lines anywhere
-//   p grid NODES EDGES OPS COUPLINGS    header, before every other line;
-//                                       COUPLINGS counts the q lines
-//   n X Y                               a node in cell (X, Y)
-//   e X1 Y1 X2 Y2                       an edge between two adjacent nodes
-//   o NAME expand|grow|contract X Y DIR an operation of the node in (X, Y)
-//                                       toward DIR in {+x, -x, +y, -y};
-//                                       contract X Y DIR is "v into u" with
-//                                       u = (X, Y) and v = (X, Y) + DIR
-//   q NAME OP...                        a coupling of named operations
-//   a X Y                               the anchor (optional; default: first node)
-//
-// A line may refer only to what lines above it defined. Operations named in no
-// q line are singleton couplings named after the operation.
+// Reading and writing the .grid instance format. The format is specified in
+// one place only, docs/grid-format.md (lines, names, bounds, every error
+// message); this reader and writer implement that page, and
+// tests/lattice_format_test.cpp checks them against it.
 #pragma once
 
 #include <iosfwd>

@@ -1,10 +1,11 @@
 #include "lattice/random_instance.hpp"
 
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
 #include <vector>
+
+#include "common/assert.hpp"
 
 namespace gridlock {
 
@@ -19,6 +20,7 @@ uint64_t next(uint64_t& s) {
 }  // namespace
 
 uint64_t draw_below(uint64_t& state, uint64_t n) {
+  GRIDLOCK_ASSERT(n > 0, "draw_below needs n > 0");
   // Rejection sampling: no modulo bias.
   uint64_t limit = UINT64_MAX - UINT64_MAX % n;
   uint64_t x;

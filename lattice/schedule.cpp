@@ -6,9 +6,25 @@
 #include <numeric>
 #include <sstream>
 
+#include "common/assert.hpp"
+
 namespace gridlock {
 
+namespace {
+
+bool is_permutation_of_ids(const std::vector<CouplingId>& order) {
+  std::vector<char> seen(order.size(), 0);
+  for (CouplingId q : order) {
+    if (q >= order.size() || seen[q]) return false;
+    seen[q] = 1;
+  }
+  return true;
+}
+
+}  // namespace
+
 Schedule schedule_from_order(const std::vector<CouplingId>& order) {
+  GRIDLOCK_ASSERT(is_permutation_of_ids(order), "schedule_from_order needs a permutation of all coupling ids");
   Schedule s;
   s.order = order;
   s.start.assign(order.size(), Rational(0));

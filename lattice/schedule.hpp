@@ -1,4 +1,4 @@
-// Schedules: when each coupling runs (MODEL.md, "Couplings and schedules").
+// Schedules: when each coupling runs (docs/model.md, "Couplings and schedules").
 //
 // Discrete: an order of all couplings; the i-th (from 0) runs over [i, i+1].
 // Continuous: a rational start time t_q per coupling; q runs over [t_q, t_q+1].
@@ -24,7 +24,7 @@ struct Schedule {
   bool discrete() const { return !order.empty() || start.empty(); }
 };
 
-// Requires order to be a permutation of all coupling ids.
+// Requires order to be a permutation of all coupling ids (GRIDLOCK_ASSERT).
 Schedule schedule_from_order(const std::vector<CouplingId>& order);
 
 // Turns coupling names into an order. Every coupling must be named exactly

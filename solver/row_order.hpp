@@ -2,8 +2,8 @@
 //
 // Both gap checkers (the continuous one in solver/gaps.hpp and the discrete
 // gap constraints in solver/constraints.hpp) need, for every row, its nodes
-// from left to right. A comparison sort would cost O(n log n); the issue asks
-// for linear time, so this is an LSD radix sort on the key (y, x) shifted to
+// from left to right. A comparison sort would cost O(n log n); the gap checker
+// is promised linear time (solver/gaps.hpp), so this is an LSD radix sort on the key (y, x) shifted to
 // be non-negative: coordinates are bounded by kMaxCoordinate < 2^30, so the
 // key fits 62 bits and four passes of 16 bits sort it.
 #pragma once

@@ -105,7 +105,7 @@ TEST(LiftCli, BadModelCollidesAndBadScheduleIsRefused) {
 }
 
 TEST(LiftCli, EverySatlibUf20SampleLiftsThroughToLsat) {
-  // The acceptance check: compile every uf20-91 sample through
+  // End to end: compile every uf20-91 sample through
   // to-lsat; its lifted witness is accepted by the simulator.
   std::string dir = test::temp_dir();
   int done = 0;

@@ -1,5 +1,5 @@
 // How many random cases a randomized test runs: base * GRIDLOCK_TEST_SCALE
-// (default 1; the sanitizer run in CI uses 0.2), at least 1.
+// (default 1; the sanitizer run in CI, scripts/test.sh, uses 0.3), at least 1.
 #pragma once
 
 #include <cstdlib>
