@@ -111,11 +111,12 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
   return lo_n * hi_d < hi_n * lo_d;
 }
 
-ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree) {
+namespace {
+
+ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Gaps;
   sys.num_couplings = inst.couplings().size();
-  const Regions regions = Regions::build(inst);
   const OpTree ot(inst, tree);
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
@@ -147,17 +148,12 @@ ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree&
   return sys;
 }
 
-namespace {
-
 int axis_of_face(int f) { return f < 2 ? 0 : 1; }
 
-}  // namespace
-
-ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree) {
+ConstraintSystem pair_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Pairs;
   sys.num_couplings = inst.couplings().size();
-  const Regions regions = Regions::build(inst);
   const OpTree ot(inst, tree);
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
@@ -243,6 +239,21 @@ ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree
   }
   sys.index();
   return sys;
+}
+
+}  // namespace
+
+ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree) {
+  return gap_constraints(inst, tree, Regions::build(inst));
+}
+ConstraintSystem build_gap_constraints(const PreparedInstance& prep) {
+  return gap_constraints(prep.inst, prep.tree, prep.regions);
+}
+ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree) {
+  return pair_constraints(inst, tree, Regions::build(inst));
+}
+ConstraintSystem build_pair_constraints(const PreparedInstance& prep) {
+  return pair_constraints(prep.inst, prep.tree, prep.regions);
 }
 
 std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c) {

@@ -32,6 +32,7 @@
 
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
+#include "lattice/prepared.hpp"
 
 namespace gridlock {
 
@@ -69,6 +70,8 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf);
 // does not describe the instance). O(n + sum over gaps of the operations on
 // the tree path between the gap's two nodes); O(n) time for the rows.
 ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree);
+// The same from prepared tables (no tree or regions rebuilt).
+ConstraintSystem build_gap_constraints(const PreparedInstance& prep);
 
 // Pair constraints of any instance. Requires no coupling breaking a cycle.
 // A pair (A, B) is kept iff it passes the distance test (each region stays in
@@ -79,6 +82,8 @@ ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree&
 // path walks of the candidates: quadratic in the worst case (long rows of
 // operations), near linear when operations are sparse.
 ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree);
+// The same from prepared tables (no tree or regions rebuilt).
+ConstraintSystem build_pair_constraints(const PreparedInstance& prep);
 
 // "gap between (1,0) and (3,0)" / "node (1,1) and node inserted by a".
 std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c);

@@ -1,5 +1,6 @@
 #include "solver/solve.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "lattice/motion.hpp"
@@ -19,6 +20,12 @@ const char* solve_status_name(SolveResult::Status s) {
 }
 
 SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
+  const PreparedInstance prep(inst);
+  return solve_discrete(prep, opt);
+}
+
+SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay) {
+  const Instance& inst = prep.inst;
   SearchBudget budget(opt);
   SolveResult res;
   const bool horizontal = inst.horizontal_only();
@@ -26,7 +33,7 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
     throw std::invalid_argument("the precedence search needs a horizontal-only instance");
 
   // A coupling that breaks a cycle collides whenever it runs.
-  const FaceNets faces = FaceNets::build(inst);
+  const FaceNets& faces = prep.faces;
   for (CouplingId q = 0; q < inst.couplings().size(); ++q)
     if (faces.coupling_breaks_cycle[q]) {
       res.status = SolveResult::Status::No;
@@ -36,8 +43,7 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
       return res;
     }
 
-  const SpanningTree tree = SpanningTree::build(inst);
-  const ConstraintSystem sys = horizontal ? build_gap_constraints(inst, tree) : build_pair_constraints(inst, tree);
+  const ConstraintSystem sys = horizontal ? build_gap_constraints(prep) : build_pair_constraints(prep);
   res.stats.constraints = sys.constraints.size();
   const bool precedence = opt.engine == SolveOptions::Engine::Precedence ||
                           (opt.engine == SolveOptions::Engine::Auto && horizontal);
@@ -62,7 +68,9 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
     }
     if (replay_order(sys, res.order).failed_step != res.order.size())
       throw std::logic_error("solver returned an order its own constraints reject");
-    Simulator sim(inst);
+    std::optional<Simulator> own;
+    if (!replay || &replay->prepared() != &prep) replay = &own.emplace(prep);
+    Simulator& sim = *replay;
     SimResult check = sim.run_order(res.order);
     if (check.collision)
       throw std::logic_error("solver returned an order that collides in the simulator: " +
