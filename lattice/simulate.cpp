@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
 
@@ -74,21 +76,30 @@ int axis_of(size_t face) { return face < 2 ? 0 : 1; }
 
 namespace {
 
-// Regions by the cell of their lower-left corner: an open-addressing table
-// from cell key to the head of an intrusive doubly linked list of regions.
-// Copy-assigning a table of the same capacity allocates nothing, so each run
-// starts from the simulator's initial table at the cost of a copy.
+// Regions by the cell of their lower-left corner, each cell holding the head
+// of an intrusive doubly linked list of regions. Cells inside a box around
+// the initial shape (given when it is at most a few times larger than the
+// number of regions, as for compiled formulas) are an array indexed by
+// position, so the 3 x 3 neighbourhood queries touch few cache lines; other
+// cells go to an open-addressing hash table. Copy-assigning a table of the
+// same capacity allocates nothing, so each run starts from the simulator's
+// initial table at the cost of a copy.
 class CellLists {
  public:
-  explicit CellLists(size_t num_regions = 0) {
+  CellLists() = default;
+  // Box: cells x0 .. x0 + w - 1, y0 .. y0 + h - 1 (w = 0: none).
+  CellLists(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h)
+      : x0_(x0), y0_(y0), w_(w), h_(h) {
     size_t cap = 16;
-    while (cap < 4 * num_regions + 16) cap <<= 1;
+    while (cap < (w > 0 ? 64 : 4 * num_regions + 16)) cap <<= 1;
     slots_.assign(cap, Slot{});
+    dense_.assign(static_cast<size_t>(w * h), kNone);
     next_.assign(num_regions, kNone);
     prev_.assign(num_regions, kNone);
   }
   // The first region of the cell, kNone if none; then next(r) until kNone.
   uint32_t head(uint64_t key) const {
+    if (size_t d = dense_index(key); d != kNoDense) return dense_[d];
     const size_t mask = slots_.size() - 1;
     for (size_t i = hash(key) & mask;; i = (i + 1) & mask) {
       if (!slots_[i].full) return kNone;
@@ -97,7 +108,7 @@ class CellLists {
   }
   uint32_t next(uint32_t r) const { return next_[r]; }
   void insert(uint32_t r, uint64_t key) {
-    uint32_t& h = slot(key).head;
+    uint32_t& h = head_ref(key);
     next_[r] = h;
     prev_[r] = kNone;
     if (h != kNone) prev_[h] = r;
@@ -106,7 +117,7 @@ class CellLists {
   // Requires r to be in key's list.
   void remove(uint32_t r, uint64_t key) {
     if (prev_[r] != kNone) next_[prev_[r]] = next_[r];
-    else slot(key).head = next_[r];
+    else head_ref(key) = next_[r];
     if (next_[r] != kNone) prev_[next_[r]] = prev_[r];
   }
 
@@ -116,12 +127,25 @@ class CellLists {
     uint32_t head = kNone;
     bool full = false;
   };
-  static size_t hash(uint64_t key) { return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 20); }
-  Slot& slot(uint64_t key) {
+  static constexpr size_t kNoDense = SIZE_MAX;
+  size_t dense_index(uint64_t key) const {
+    const int64_t x = static_cast<int32_t>(static_cast<uint32_t>(key >> 32)) - x0_;
+    const int64_t y = static_cast<int32_t>(static_cast<uint32_t>(key)) - y0_;
+    if (x < 0 || y < 0 || x >= w_ || y >= h_) return kNoDense;
+    return static_cast<size_t>(y * w_ + x);
+  }
+  static size_t hash(uint64_t key) {  // both coordinates reach the low bits
+    key ^= key >> 33;
+    key *= 0xFF51AFD7ED558CCDull;
+    key ^= key >> 33;
+    return static_cast<size_t>(key);
+  }
+  uint32_t& head_ref(uint64_t key) {
+    if (size_t d = dense_index(key); d != kNoDense) return dense_[d];
     size_t mask = slots_.size() - 1;
     size_t i = hash(key) & mask;
     for (; slots_[i].full; i = (i + 1) & mask)
-      if (slots_[i].key == key) return slots_[i];
+      if (slots_[i].key == key) return slots_[i].head;
     if (2 * (used_ + 1) > slots_.size()) {  // keep the load at most 1/2
       std::vector<Slot> old(slots_.size() * 2);
       old.swap(slots_);
@@ -138,12 +162,30 @@ class CellLists {
     ++used_;
     slots_[i].full = true;
     slots_[i].key = key;
-    return slots_[i];
+    return slots_[i].head;
   }
+  int64_t x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   std::vector<Slot> slots_;
+  std::vector<uint32_t> dense_;
   std::vector<uint32_t> next_, prev_;
   size_t used_ = 0;
 };
+
+// The initial table of the regions' cells: a dense box of margin 2 around
+// them when its area is at most 16 cells per region (plus a constant).
+CellLists make_cell_lists(const Regions& regions) {
+  const size_t nr = regions.size();
+  if (nr == 0) return CellLists(0, 0, 0, 0, 0);
+  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
+  for (const RegionShape& sh : regions.shapes) {
+    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
+    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
+  }
+  constexpr int64_t margin = 2;
+  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + 2 * margin, h = static_cast<__int128>(yhi) - ylo + 1 + 2 * margin;
+  if (w * h > static_cast<__int128>(16 * nr + 4096)) return CellLists(nr, 0, 0, 0, 0);
+  return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
+}
 
 }  // namespace
 
@@ -176,7 +218,7 @@ struct Simulator::Scratch {
   std::vector<std::pair<uint64_t, uint32_t>> cell_hits;  // (cell, moving index) in one sub-step
   std::vector<uint64_t> moving_pairs;                    // (i << 32) | j, i < j
 
-  explicit Scratch(const PreparedInstance& p) : initial_grid(p.regions.size()) {
+  explicit Scratch(const PreparedInstance& p) : initial_grid(make_cell_lists(p.regions)) {
     const size_t nr = p.regions.size();
     initial_key.resize(nr);
     for (uint32_t r = 0; r < nr; ++r) {
