@@ -107,6 +107,15 @@ class CellLists {
     }
   }
   uint32_t next(uint32_t r) const { return next_[r]; }
+  // The cell's index in the dense box, or kNoDense; the box has dense_size() cells.
+  static constexpr size_t kNoDense = SIZE_MAX;
+  size_t dense_index(uint64_t key) const {
+    const int64_t x = static_cast<int32_t>(static_cast<uint32_t>(key >> 32)) - x0_;
+    const int64_t y = static_cast<int32_t>(static_cast<uint32_t>(key)) - y0_;
+    if (x < 0 || y < 0 || x >= w_ || y >= h_) return kNoDense;
+    return static_cast<size_t>(y * w_ + x);
+  }
+  size_t dense_size() const { return dense_.size(); }
   void insert(uint32_t r, uint64_t key) {
     uint32_t& h = head_ref(key);
     next_[r] = h;
@@ -127,13 +136,6 @@ class CellLists {
     uint32_t head = kNone;
     bool full = false;
   };
-  static constexpr size_t kNoDense = SIZE_MAX;
-  size_t dense_index(uint64_t key) const {
-    const int64_t x = static_cast<int32_t>(static_cast<uint32_t>(key >> 32)) - x0_;
-    const int64_t y = static_cast<int32_t>(static_cast<uint32_t>(key)) - y0_;
-    if (x < 0 || y < 0 || x >= w_ || y >= h_) return kNoDense;
-    return static_cast<size_t>(y * w_ + x);
-  }
   static size_t hash(uint64_t key) {  // both coordinates reach the low bits
     key ^= key >> 33;
     key *= 0xFF51AFD7ED558CCDull;
@@ -217,6 +219,10 @@ struct Simulator::Scratch {
   std::vector<std::pair<uint32_t, Vec2>> vel_stack;
   std::vector<std::pair<uint64_t, uint32_t>> cell_hits;  // (cell, moving index) in one sub-step
   std::vector<uint64_t> moving_pairs;                    // (i << 32) | j, i < j
+  // Moving regions by cell in one sub-step, for cells of the dense box: the
+  // latest hit of each cell, and per hit its moving index and the previous hit.
+  std::vector<uint32_t> hit_head, hit_index, hit_prev;
+  std::vector<size_t> hit_cells;
 
   explicit Scratch(const PreparedInstance& p) : initial_grid(make_cell_lists(p.regions)) {
     const size_t nr = p.regions.size();
@@ -225,6 +231,7 @@ struct Simulator::Scratch {
       const RegionShape& sh = p.regions.shapes[r];
       initial_grid.insert(r, initial_key[r] = cell_key(Vec2{sh.base[0], sh.base[2]}));
     }
+    hit_head.assign(initial_grid.dense_size(), kNone);
     node_stamp.assign(p.inst.num_nodes(), 0);
     region_stamp.assign(nr, 0);
     node_vel.resize(p.inst.num_nodes());
@@ -502,9 +509,28 @@ SimResult Simulator::run(const Schedule& s) {
         auto cx0 = static_cast<int64_t>(floor128(box[0], unit)), cx1 = static_cast<int64_t>(floor128(box[1] - 1, unit));
         auto cy0 = static_cast<int64_t>(floor128(box[2], unit)), cy1 = static_cast<int64_t>(floor128(box[3] - 1, unit));
         for (int64_t cx = cx0; cx <= cx1; ++cx)
-          for (int64_t cy = cy0; cy <= cy1; ++cy) cell_hits.push_back({cell_key(Vec2{cx, cy}), static_cast<uint32_t>(i)});
+          for (int64_t cy = cy0; cy <= cy1; ++cy) {
+            const uint64_t key = cell_key(Vec2{cx, cy});
+            const size_t d = grid.dense_index(key);
+            if (d == CellLists::kNoDense) {
+              cell_hits.push_back({key, static_cast<uint32_t>(i)});
+              continue;
+            }
+            // Pair i with every earlier region of the cell (all of smaller index).
+            for (uint32_t h = sc.hit_head[d]; h != kNone; h = sc.hit_prev[h])
+              moving_pairs.push_back((static_cast<uint64_t>(sc.hit_index[h]) << 32) | i);
+            if (sc.hit_head[d] == kNone) sc.hit_cells.push_back(d);
+            sc.hit_prev.push_back(sc.hit_head[d]);
+            sc.hit_index.push_back(static_cast<uint32_t>(i));
+            sc.hit_head[d] = static_cast<uint32_t>(sc.hit_index.size() - 1);
+          }
       }
-      // Regions sharing a cell in this sub-step: runs of equal keys, indices increasing.
+      for (size_t d : sc.hit_cells) sc.hit_head[d] = kNone;
+      sc.hit_cells.clear();
+      sc.hit_index.clear();
+      sc.hit_prev.clear();
+      // Regions sharing a cell outside the box in this sub-step: runs of equal
+      // keys, indices increasing.
       std::sort(cell_hits.begin(), cell_hits.end());
       for (size_t x = 0; x < cell_hits.size();) {
         size_t y = x + 1;
