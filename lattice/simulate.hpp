@@ -12,8 +12,9 @@
 //    only the regions of the other components, plus the regions whose width
 //    changes, move;
 //  - a broad phase finds the pairs whose swept boxes overlap: moving regions
-//    query a hash of all regions by grid cell, and moving regions meet each
-//    other in a second hash of their swept boxes;
+//    query a table of all regions by grid cell (a dense array over the
+//    shape's box, a hash table elsewhere), and moving regions meet each
+//    other in per-cell lists of their swept boxes;
 //  - the exact test solves eight strict linear inequalities in time.
 // Cycle collisions are found up front from the face walks (FaceNets): the
 // mismatch around a face is piecewise linear in time, so the first moment it
