@@ -30,8 +30,14 @@ bool all_singletons(const Instance& inst) {
 }  // namespace
 
 CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method) {
+  const PreparedInstance prep(inst);
+  return find_collision(prep, model, method);
+}
+
+CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method) {
+  const Instance& inst = prep.inst;
   CollideResult res;
-  Simulator sim(inst);
+  Simulator sim(prep);
   const size_t nq = inst.couplings().size();
 
   auto finish_with = [&](Schedule s) {

@@ -61,5 +61,7 @@ struct CollideResult {
 };
 
 CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method = CollideMethod::Auto);
+// The same on prepared tables (lattice/prepared.hpp): nothing is rebuilt.
+CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method = CollideMethod::Auto);
 
 }  // namespace gridlock

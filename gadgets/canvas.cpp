@@ -31,6 +31,7 @@ Instance Canvas::build() const {
   auto must = [](const std::optional<std::string>& e) {
     if (e) throw std::logic_error("gadget drawing is not a valid instance: " + *e);
   };
+  b.reserve(nodes_.size(), edges_.size(), ops_.size(), couplings_.size() + ops_.size());
   for (Vec2 c : nodes_) must(b.add_node(c));
   for (const auto& [a, c] : edges_) must(b.add_edge(a, c));
   for (const Op& op : ops_) must(b.add_op(op.name, OpKind::Expand, op.u, op.d));

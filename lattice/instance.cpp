@@ -64,6 +64,19 @@ bool in_range(Vec2 c) {
 }
 }  // namespace
 
+void InstanceBuilder::reserve(size_t nodes, size_t edges, size_t ops, size_t couplings) {
+  inst_.cells_.reserve(nodes);
+  inst_.cell_index_.reserve(nodes);
+  inst_.adj_.reserve(4 * nodes);
+  inst_.adj_edge_.reserve(4 * nodes);
+  inst_.op_of_node_.reserve(nodes);
+  inst_.edges_.reserve(edges);
+  inst_.ops_.reserve(ops);
+  inst_.op_index_.reserve(ops);
+  inst_.couplings_.reserve(couplings);
+  inst_.coupling_index_.reserve(couplings);
+}
+
 std::optional<std::string> InstanceBuilder::add_node(Vec2 cell) {
   if (!in_range(cell)) return "coordinate out of range (|x|, |y| <= " + std::to_string(kMaxCoordinate) + ")";
   if (static_cast<int64_t>(inst_.cells_.size()) >= kMaxNodes)

@@ -115,6 +115,9 @@ bool valid_name(const std::string& s);
 class InstanceBuilder {
  public:
   // Each returns an error message, or nullopt on success.
+  // Optional: room for this many of each (no rehashing of the cell index
+  // while nodes are added). Changes nothing else.
+  void reserve(size_t nodes, size_t edges, size_t ops, size_t couplings);
   std::optional<std::string> add_node(Vec2 cell);
   std::optional<std::string> add_edge(Vec2 a, Vec2 b);
   // kind Expand/Contract: c = u + dir must hold a node joined to u by an edge.

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace gridlock {
 
@@ -74,16 +74,192 @@ int axis_of(size_t face) { return face < 2 ? 0 : 1; }
 
 }  // namespace
 
+namespace {
+
+// Regions by the cell of their lower-left corner, each cell holding the head
+// of an intrusive doubly linked list of regions. Cells inside a box around
+// the initial shape (given when it is at most a few times larger than the
+// number of regions, as for compiled formulas) are an array indexed by
+// position, so the 3 x 3 neighbourhood queries touch few cache lines; other
+// cells go to an open-addressing hash table. Copy-assigning a table of the
+// same capacity allocates nothing, so each run starts from the simulator's
+// initial table at the cost of a copy.
+class CellLists {
+ public:
+  CellLists() = default;
+  // Box: cells x0 .. x0 + w - 1, y0 .. y0 + h - 1 (w = 0: none).
+  CellLists(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h)
+      : x0_(x0), y0_(y0), w_(w), h_(h) {
+    size_t cap = 16;
+    while (cap < (w > 0 ? 64 : 4 * num_regions + 16)) cap <<= 1;
+    slots_.assign(cap, Slot{});
+    dense_.assign(static_cast<size_t>(w * h), kNone);
+    next_.assign(num_regions, kNone);
+    prev_.assign(num_regions, kNone);
+  }
+  // The first region of the cell, kNone if none; then next(r) until kNone.
+  uint32_t head(uint64_t key) const {
+    if (size_t d = dense_index(key); d != kNoDense) return dense_[d];
+    const size_t mask = slots_.size() - 1;
+    for (size_t i = hash(key) & mask;; i = (i + 1) & mask) {
+      if (!slots_[i].full) return kNone;
+      if (slots_[i].key == key) return slots_[i].head;
+    }
+  }
+  uint32_t next(uint32_t r) const { return next_[r]; }
+  // The cell's index in the dense box, or kNoDense; the box has dense_size() cells.
+  static constexpr size_t kNoDense = SIZE_MAX;
+  size_t dense_index(uint64_t key) const {
+    const int64_t x = static_cast<int32_t>(static_cast<uint32_t>(key >> 32)) - x0_;
+    const int64_t y = static_cast<int32_t>(static_cast<uint32_t>(key)) - y0_;
+    if (x < 0 || y < 0 || x >= w_ || y >= h_) return kNoDense;
+    return static_cast<size_t>(y * w_ + x);
+  }
+  size_t dense_size() const { return dense_.size(); }
+  void insert(uint32_t r, uint64_t key) {
+    uint32_t& h = head_ref(key);
+    next_[r] = h;
+    prev_[r] = kNone;
+    if (h != kNone) prev_[h] = r;
+    h = r;
+  }
+  // Requires r to be in key's list.
+  void remove(uint32_t r, uint64_t key) {
+    if (prev_[r] != kNone) next_[prev_[r]] = next_[r];
+    else head_ref(key) = next_[r];
+    if (next_[r] != kNone) prev_[next_[r]] = prev_[r];
+  }
+
+ private:
+  struct Slot {
+    uint64_t key = 0;
+    uint32_t head = kNone;
+    bool full = false;
+  };
+  static size_t hash(uint64_t key) {  // both coordinates reach the low bits
+    key ^= key >> 33;
+    key *= 0xFF51AFD7ED558CCDull;
+    key ^= key >> 33;
+    return static_cast<size_t>(key);
+  }
+  uint32_t& head_ref(uint64_t key) {
+    if (size_t d = dense_index(key); d != kNoDense) return dense_[d];
+    size_t mask = slots_.size() - 1;
+    size_t i = hash(key) & mask;
+    for (; slots_[i].full; i = (i + 1) & mask)
+      if (slots_[i].key == key) return slots_[i].head;
+    if (2 * (used_ + 1) > slots_.size()) {  // keep the load at most 1/2
+      std::vector<Slot> old(slots_.size() * 2);
+      old.swap(slots_);
+      mask = slots_.size() - 1;
+      for (const Slot& o : old)
+        if (o.full) {
+          size_t j = hash(o.key) & mask;
+          while (slots_[j].full) j = (j + 1) & mask;
+          slots_[j] = o;
+        }
+      i = hash(key) & mask;
+      while (slots_[i].full) i = (i + 1) & mask;
+    }
+    ++used_;
+    slots_[i].full = true;
+    slots_[i].key = key;
+    return slots_[i].head;
+  }
+  int64_t x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
+  std::vector<Slot> slots_;
+  std::vector<uint32_t> dense_;
+  std::vector<uint32_t> next_, prev_;
+  size_t used_ = 0;
+};
+
+// The initial table of the regions' cells: a dense box of margin 2 around
+// them when its area is at most 16 cells per region (plus a constant).
+CellLists make_cell_lists(const Regions& regions) {
+  const size_t nr = regions.size();
+  if (nr == 0) return CellLists(0, 0, 0, 0, 0);
+  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
+  for (const RegionShape& sh : regions.shapes) {
+    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
+    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
+  }
+  constexpr int64_t margin = 2;
+  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + 2 * margin, h = static_cast<__int128>(yhi) - ylo + 1 + 2 * margin;
+  if (w * h > static_cast<__int128>(16 * nr + 4096)) return CellLists(nr, 0, 0, 0, 0);
+  return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
+}
+
+}  // namespace
+
+// Everything run() needs besides the prepared tables, kept between runs.
+struct Simulator::Scratch {
+  struct Event {
+    int64_t time;
+    CouplingId q;
+    bool start;
+  };
+  CellLists initial_grid;  // every region at its base cell (independent of D)
+  std::vector<uint64_t> initial_key;
+  CellLists grid;
+  std::vector<uint64_t> region_key;
+  std::vector<int64_t> T, ev;
+  std::vector<std::array<int64_t, 4>> rect, rvel, swept;
+  std::vector<Event> events;
+  std::vector<char> running;
+  std::vector<CouplingId> run_list;
+  std::vector<uint32_t> node_stamp, region_stamp;
+  uint32_t stamp = 0;
+  std::vector<Vec2> node_vel;
+  std::vector<NodeId> cuts;
+  std::vector<OpId> running_ops;
+  std::vector<int64_t> comp_size;
+  std::vector<size_t> up, cut_stack;
+  std::vector<std::pair<uint32_t, uint32_t>> ranges;
+  std::vector<uint32_t> moving;
+  std::vector<std::pair<uint32_t, Vec2>> vel_stack;
+  std::vector<std::pair<uint64_t, uint32_t>> cell_hits;  // (cell, moving index) in one sub-step
+  std::vector<uint64_t> moving_pairs;                    // (i << 32) | j, i < j
+  // Moving regions by cell in one sub-step, for cells of the dense box: the
+  // latest hit of each cell, and per hit its moving index and the previous hit.
+  std::vector<uint32_t> hit_head, hit_index, hit_prev;
+  std::vector<size_t> hit_cells;
+
+  explicit Scratch(const PreparedInstance& p) : initial_grid(make_cell_lists(p.regions)) {
+    const size_t nr = p.regions.size();
+    initial_key.resize(nr);
+    for (uint32_t r = 0; r < nr; ++r) {
+      const RegionShape& sh = p.regions.shapes[r];
+      initial_grid.insert(r, initial_key[r] = cell_key(Vec2{sh.base[0], sh.base[2]}));
+    }
+    hit_head.assign(initial_grid.dense_size(), kNone);
+    node_stamp.assign(p.inst.num_nodes(), 0);
+    region_stamp.assign(nr, 0);
+    node_vel.resize(p.inst.num_nodes());
+    rect.resize(nr);
+    rvel.resize(nr);
+  }
+};
+
 Simulator::Simulator(const Instance& inst)
-    : inst_(inst), tree_(SpanningTree::build(inst)), regions_(Regions::build(inst)), faces_(FaceNets::build(inst)) {}
+    : owned_(std::make_unique<PreparedInstance>(inst)), prep_(owned_.get()) {}
+Simulator::Simulator(const PreparedInstance& prep) : prep_(&prep) {}
+Simulator::~Simulator() = default;
+Simulator::Simulator(Simulator&&) noexcept = default;
 
 SimResult Simulator::run(const Schedule& s) {
+  const Instance& inst_ = prep_->inst;
+  const SpanningTree& tree_ = prep_->tree;
+  const Regions& regions_ = prep_->regions;
+  const FaceNets& faces_ = prep_->faces;
   if (auto problem = check_schedule_bounds(inst_, s)) throw std::invalid_argument(*problem);
+  if (!scratch_) scratch_ = std::make_unique<Scratch>(*prep_);
+  Scratch& sc = *scratch_;
   SimResult result;
   const size_t n = inst_.num_nodes(), nq = inst_.couplings().size(), nr = regions_.size();
   int64_t D = 1;
   for (const auto& t : s.start) D = std::lcm(D, t.den());
-  std::vector<int64_t> T(nq);
+  std::vector<int64_t>& T = sc.T;
+  T.resize(nq);
   for (size_t q = 0; q < nq; ++q) T[q] = s.start[q].num() * (D / s.start[q].den());
 
   // --- Cycle collisions: the earliest over all faces (an event time). ---
@@ -92,7 +268,8 @@ SimResult Simulator::run(const Schedule& s) {
   size_t cycle_face = 0;
   for (size_t f = 0; f < faces_.faces.size(); ++f) {
     const auto& nets = faces_.faces[f].nets;
-    std::vector<int64_t> ev;
+    std::vector<int64_t>& ev = sc.ev;
+    ev.clear();
     for (auto& [q, v] : nets) ev.push_back(T[q]), ev.push_back(T[q] + D);
     std::sort(ev.begin(), ev.end());
     ev.erase(std::unique(ev.begin(), ev.end()), ev.end());
@@ -107,33 +284,32 @@ SimResult Simulator::run(const Schedule& s) {
   }
 
   // --- Node collisions: sweep the intervals between events. ---
-  std::vector<std::array<int64_t, 4>> rect(nr);
+  auto& rect = sc.rect;
   for (size_t r = 0; r < nr; ++r)
     for (int f = 0; f < 4; ++f) rect[r][f] = regions_.shapes[r].base[f] * D;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> grid;
-  grid.reserve(nr * 2);
+  CellLists& grid = sc.grid;
+  grid = sc.initial_grid;
+  std::vector<uint64_t>& region_key = sc.region_key;
+  region_key = sc.initial_key;
   auto key_of = [&](uint32_t r) { return cell_key(Vec2{floor_div(rect[r][0], D), floor_div(rect[r][2], D)}); };
-  std::vector<uint64_t> region_key(nr);
-  for (uint32_t r = 0; r < nr; ++r) grid[region_key[r] = key_of(r)].push_back(r);
 
-  struct Event {
-    int64_t time;
-    CouplingId q;
-    bool start;
-  };
-  std::vector<Event> events;
-  events.reserve(2 * nq);
+  using Event = Scratch::Event;
+  std::vector<Event>& events = sc.events;
+  events.clear();
   for (CouplingId q = 0; q < nq; ++q) events.push_back({T[q], q, true}), events.push_back({T[q] + D, q, false});
   std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
     return a.time != b.time ? a.time < b.time : a.start < b.start;
   });
 
-  std::vector<char> running(nq, 0);
-  std::vector<CouplingId> run_list;
-  std::vector<uint32_t> node_stamp(n, 0), region_stamp(nr, 0);
-  std::vector<Vec2> node_vel(n);
-  std::vector<std::array<int64_t, 4>> rvel(nr);
-  uint32_t stamp = 0;
+  std::vector<char>& running = sc.running;
+  running.assign(nq, 0);
+  std::vector<CouplingId>& run_list = sc.run_list;
+  run_list.clear();
+  std::vector<uint32_t>& node_stamp = sc.node_stamp;
+  std::vector<uint32_t>& region_stamp = sc.region_stamp;
+  std::vector<Vec2>& node_vel = sc.node_vel;
+  auto& rvel = sc.rvel;
+  uint32_t& stamp = sc.stamp;
 
   auto report_cycle = [&]() {
     Collision c;
@@ -162,11 +338,17 @@ SimResult Simulator::run(const Schedule& s) {
     if (run_list.empty() || ei == events.size()) continue;
     const int64_t span = events[ei].time - now;
     ++result.stats.intervals;
-    ++stamp;
+    if (++stamp == 0) {  // the stamps wrapped around: start them afresh
+      std::fill(node_stamp.begin(), node_stamp.end(), 0);
+      std::fill(region_stamp.begin(), region_stamp.end(), 0);
+      stamp = 1;
+    }
 
     // Cut the tree at the running operations' tree edges.
-    std::vector<NodeId> cuts;
-    std::vector<OpId> running_ops;
+    std::vector<NodeId>& cuts = sc.cuts;
+    std::vector<OpId>& running_ops = sc.running_ops;
+    cuts.clear();
+    running_ops.clear();
     for (CouplingId q : run_list)
       for (OpId k : inst_.couplings()[q].ops) {
         running_ops.push_back(k);
@@ -178,11 +360,14 @@ SimResult Simulator::run(const Schedule& s) {
     std::sort(cuts.begin(), cuts.end(), [&](NodeId a, NodeId b) { return tree_.tin[a] < tree_.tin[b]; });
     const size_t nc = cuts.size();
     const size_t ROOT = nc;
-    std::vector<int64_t> comp_size(nc + 1);
-    std::vector<size_t> up(nc, ROOT);
+    std::vector<int64_t>& comp_size = sc.comp_size;
+    std::vector<size_t>& up = sc.up;
+    comp_size.assign(nc + 1, 0);
+    up.assign(nc, ROOT);
     comp_size[ROOT] = static_cast<int64_t>(n);
     {
-      std::vector<size_t> st;
+      std::vector<size_t>& st = sc.cut_stack;
+      st.clear();
       for (size_t i = 0; i < nc; ++i) {
         comp_size[i] = tree_.subtree[cuts[i]];
         while (!st.empty() && tree_.tout[cuts[st.back()]] <= tree_.tin[cuts[i]]) st.pop_back();
@@ -201,7 +386,8 @@ SimResult Simulator::run(const Schedule& s) {
         if (up[i] == ROOT) break;
       }
     // Ranges of Euler positions that move, in increasing order.
-    std::vector<std::pair<uint32_t, uint32_t>> ranges;
+    std::vector<std::pair<uint32_t, uint32_t>>& ranges = sc.ranges;
+    ranges.clear();
     if (L == ROOT) {
       for (size_t i = 0; i < nc; ++i)
         if (up[i] == ROOT) ranges.push_back({tree_.tin[cuts[i]], tree_.tout[cuts[i]]});
@@ -211,12 +397,14 @@ SimResult Simulator::run(const Schedule& s) {
         if (up[i] == L) ranges.push_back({tree_.tin[cuts[i]], tree_.tout[cuts[i]]});
       ranges.push_back({tree_.tout[cuts[L]], static_cast<uint32_t>(n)});
     }
-    std::vector<uint32_t> moving;
+    std::vector<uint32_t>& moving = sc.moving;
+    moving.clear();
     auto add_region = [&](uint32_t r) {
       if (r != kNone && region_stamp[r] != stamp) region_stamp[r] = stamp, moving.push_back(r);
     };
     {
-      std::vector<std::pair<uint32_t, Vec2>> st;  // (tout, velocity) of enclosing cuts
+      std::vector<std::pair<uint32_t, Vec2>>& st = sc.vel_stack;  // (tout, velocity) of enclosing cuts
+      st.clear();
       size_t ptr = 0;
       for (auto [b, e] : ranges)
         for (uint32_t p = b; p < e; ++p) {
@@ -248,7 +436,8 @@ SimResult Simulator::run(const Schedule& s) {
 
     // Velocities and swept boxes of the moving regions.
     auto vel_of = [&](NodeId w) { return node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0}; };
-    std::vector<std::array<int64_t, 4>> swept(moving.size());
+    auto& swept = sc.swept;
+    swept.resize(moving.size());
     for (size_t i = 0; i < moving.size(); ++i) {
       uint32_t r = moving[i];
       const RegionShape& sh = regions_.shapes[r];
@@ -266,7 +455,8 @@ SimResult Simulator::run(const Schedule& s) {
       }
     }
 
-    // Broad phase, then the exact test; keep the earliest.
+    // Broad phase, then the exact test; keep the earliest (the smallest
+    // pair on ties), so the order of the tests does not matter.
     Frac best{};
     uint32_t best_a = kNone, best_b = kNone;
     static const int64_t zero4[4] = {0, 0, 0, 0};
@@ -289,12 +479,9 @@ SimResult Simulator::run(const Schedule& s) {
       int64_t cx0 = floor_div(sw[0], D), cx1 = floor_div(sw[1] - 1, D);
       int64_t cy0 = floor_div(sw[2], D), cy1 = floor_div(sw[3] - 1, D);
       for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
-        for (int64_t cy = cy0 - 1; cy <= cy1; ++cy) {
-          auto it = grid.find(cell_key(Vec2{cx, cy}));
-          if (it == grid.end()) continue;
-          for (uint32_t x : it->second)
+        for (int64_t cy = cy0 - 1; cy <= cy1; ++cy)
+          for (uint32_t x = grid.head(cell_key(Vec2{cx, cy})); x != kNone; x = grid.next(x))
             if (region_stamp[x] != stamp) test(r, x, false);
-        }
     }
     // Moving against moving: split the interval into S = max speed sub-steps
     // (for the broad phase only), so that in each sub-step every region
@@ -305,10 +492,11 @@ SimResult Simulator::run(const Schedule& s) {
     const int64_t S = vmax;
     const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
     auto floor128 = [](__int128 a, __int128 b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); };
-    std::unordered_set<uint64_t> tested;
-    std::unordered_map<uint64_t, std::vector<uint32_t>> moving_grid;
+    auto& cell_hits = sc.cell_hits;
+    auto& moving_pairs = sc.moving_pairs;
+    moving_pairs.clear();
     for (int64_t step = 0; step < S; ++step) {
-      moving_grid.clear();
+      cell_hits.clear();
       for (size_t i = 0; i < moving.size(); ++i) {
         uint32_t r = moving[i];
         __int128 box[4];
@@ -321,15 +509,42 @@ SimResult Simulator::run(const Schedule& s) {
         auto cx0 = static_cast<int64_t>(floor128(box[0], unit)), cx1 = static_cast<int64_t>(floor128(box[1] - 1, unit));
         auto cy0 = static_cast<int64_t>(floor128(box[2], unit)), cy1 = static_cast<int64_t>(floor128(box[3] - 1, unit));
         for (int64_t cx = cx0; cx <= cx1; ++cx)
-          for (int64_t cy = cy0; cy <= cy1; ++cy) moving_grid[cell_key(Vec2{cx, cy})].push_back(static_cast<uint32_t>(i));
-      }
-      for (auto& [key, list] : moving_grid)
-        for (size_t x = 0; x < list.size(); ++x)
-          for (size_t y = x + 1; y < list.size(); ++y) {
-            uint32_t i = std::min(list[x], list[y]), j = std::max(list[x], list[y]);
-            if (tested.insert((static_cast<uint64_t>(i) << 32) | j).second) test(moving[i], moving[j], true);
+          for (int64_t cy = cy0; cy <= cy1; ++cy) {
+            const uint64_t key = cell_key(Vec2{cx, cy});
+            const size_t d = grid.dense_index(key);
+            if (d == CellLists::kNoDense) {
+              cell_hits.push_back({key, static_cast<uint32_t>(i)});
+              continue;
+            }
+            // Pair i with every earlier region of the cell (all of smaller index).
+            for (uint32_t h = sc.hit_head[d]; h != kNone; h = sc.hit_prev[h])
+              moving_pairs.push_back((static_cast<uint64_t>(sc.hit_index[h]) << 32) | i);
+            if (sc.hit_head[d] == kNone) sc.hit_cells.push_back(d);
+            sc.hit_prev.push_back(sc.hit_head[d]);
+            sc.hit_index.push_back(static_cast<uint32_t>(i));
+            sc.hit_head[d] = static_cast<uint32_t>(sc.hit_index.size() - 1);
           }
+      }
+      for (size_t d : sc.hit_cells) sc.hit_head[d] = kNone;
+      sc.hit_cells.clear();
+      sc.hit_index.clear();
+      sc.hit_prev.clear();
+      // Regions sharing a cell outside the box in this sub-step: runs of equal
+      // keys, indices increasing.
+      std::sort(cell_hits.begin(), cell_hits.end());
+      for (size_t x = 0; x < cell_hits.size();) {
+        size_t y = x + 1;
+        while (y < cell_hits.size() && cell_hits[y].first == cell_hits[x].first) ++y;
+        for (size_t a = x; a < y; ++a)
+          for (size_t b = a + 1; b < y; ++b)
+            moving_pairs.push_back((static_cast<uint64_t>(cell_hits[a].second) << 32) | cell_hits[b].second);
+        x = y;
+      }
     }
+    std::sort(moving_pairs.begin(), moving_pairs.end());
+    moving_pairs.erase(std::unique(moving_pairs.begin(), moving_pairs.end()), moving_pairs.end());
+    for (uint64_t ij : moving_pairs)
+      test(moving[static_cast<uint32_t>(ij >> 32)], moving[static_cast<uint32_t>(ij & 0xffffffffu)], true);
     if (!best.none()) {
       Collision c;
       c.kind = Collision::Kind::Node;
@@ -346,9 +561,8 @@ SimResult Simulator::run(const Schedule& s) {
       for (int f = 0; f < 4; ++f) rect[r][f] += rvel[r][f] * span;
       uint64_t k = key_of(r);
       if (k != region_key[r]) {
-        auto& old = grid[region_key[r]];
-        old.erase(std::find(old.begin(), old.end(), r));
-        grid[k].push_back(r);
+        grid.remove(r, region_key[r]);
+        grid.insert(r, k);
         region_key[r] = k;
       }
     }

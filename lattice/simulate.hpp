@@ -12,8 +12,9 @@
 //    only the regions of the other components, plus the regions whose width
 //    changes, move;
 //  - a broad phase finds the pairs whose swept boxes overlap: moving regions
-//    query a hash of all regions by grid cell, and moving regions meet each
-//    other in a second hash of their swept boxes;
+//    query a table of all regions by grid cell (a dense array over the
+//    shape's box, a hash table elsewhere), and moving regions meet each
+//    other in per-cell lists of their swept boxes;
 //  - the exact test solves eight strict linear inequalities in time.
 // Cycle collisions are found up front from the face walks (FaceNets): the
 // mismatch around a face is piecewise linear in time, so the first moment it
@@ -24,12 +25,14 @@
 // schedules m is small (see docs/performance.md).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
+#include "lattice/prepared.hpp"
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
 
@@ -57,24 +60,34 @@ struct SimResult {
 
 class Simulator {
  public:
-  // O(n + e log e). Keeps a reference to inst, which must outlive it.
+  // O(n + e log e): builds the instance's motion tables (a PreparedInstance).
+  // Keeps a reference to inst, which must outlive it.
   explicit Simulator(const Instance& inst);
+  // O(1): uses prep's tables, which must outlive the simulator.
+  explicit Simulator(const PreparedInstance& prep);
+  ~Simulator();
+  Simulator(Simulator&&) noexcept;
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+  Simulator& operator=(Simulator&&) = delete;
 
-  // Runs schedule s. Requires check_schedule_bounds(inst, s) to pass.
+  // Runs schedule s. Requires check_schedule_bounds(inst, s) to pass. Work
+  // arrays are kept between runs: after the first run of a simulator, runs
+  // allocate only for what they return.
   SimResult run(const Schedule& s);
   SimResult run_order(const std::vector<CouplingId>& order) { return run(schedule_from_order(order)); }
 
-  const Instance& instance() const { return inst_; }
-  const Regions& regions() const { return regions_; }
-  const SpanningTree& tree() const { return tree_; }
-  const FaceNets& faces() const { return faces_; }
+  const Instance& instance() const { return prep_->inst; }
+  const PreparedInstance& prepared() const { return *prep_; }
+  const Regions& regions() const { return prep_->regions; }
+  const SpanningTree& tree() const { return prep_->tree; }
+  const FaceNets& faces() const { return prep_->faces; }
 
  private:
-  struct CutInfo;
-  const Instance& inst_;
-  SpanningTree tree_;
-  Regions regions_;
-  FaceNets faces_;
+  struct Scratch;
+  std::unique_ptr<PreparedInstance> owned_;  // when built from an Instance
+  const PreparedInstance* prep_;
+  std::unique_ptr<Scratch> scratch_;
 };
 
 // An exact rectangle, for drawing the configuration at a moment.

@@ -2,6 +2,7 @@
 // proved in docs/formulas.md.
 #include "reductions/to_lsat.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <stdexcept>
 #include <string>
@@ -137,34 +138,42 @@ LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt) {
   }
   const int n1 = static_cast<int>(next_var - 1);  // n + A
 
-  // Step 2/3: occurrence counts, the variables that need copies, and where
-  // their copies are numbered.
+  // Step 2/3: occurrence counts, the variables that need a path, and where
+  // their path variables are numbered.
   const size_t N = static_cast<size_t>(n1) + 1;
   std::vector<int> pos(N, 0), neg(N, 0);
   for (const auto& c : norm)
     for (int lit : c) ++(lit > 0 ? pos : neg)[static_cast<size_t>(var_of(lit))];
   auto cycled = [&](size_t x) { return pos[x] >= 2 || neg[x] >= 2; };
-  auto copies_of = [&](size_t x) { return pos[x] + neg[x] + (pos[x] > 0 && neg[x] > 0 ? 1 : 0); };
-  std::vector<int> base(N, 0);  // copy z_i (i >= 1) of x is variable base[x] + i - 1
+  // Path w_1 .. w_k of x: positives take w_1 .. w_p, negatives -w_s .. -w_k
+  // with s = max(p, 1) the pivot (w_s is x itself).
+  auto pivot = [&](size_t x) { return std::max(pos[x], 1); };
+  auto path_len = [&](size_t x) { return neg[x] > 0 ? pivot(x) + neg[x] - 1 : pos[x]; };
+  std::vector<int> base(N, 0);  // w_i (i != s) of x is variable base[x] + i - 1 (i < s) or base[x] + i - 2 (i > s)
   for (size_t x = 1; x < N; ++x) {
     if (!cycled(x)) continue;
     ++st.cycle_vars;
-    const int c = copies_of(x);
-    st.copies += static_cast<size_t>(c);
+    const int k = path_len(x);
+    st.copies += static_cast<size_t>(k);
     base[x] = static_cast<int>(next_var);
-    for (int i = 1; i < c; ++i) fresh();
+    for (int i = 1; i < k; ++i) fresh();
   }
-  auto copy_var = [&](size_t x, int i) { return i == 0 ? static_cast<int>(x) : base[x] + i - 1; };
+  auto path_var = [&](size_t x, int i) {
+    const int s = pivot(x);
+    return i == s ? static_cast<int>(x) : base[x] + (i < s ? i - 1 : i - 2);
+  };
 
   red.recipe_.assign(static_cast<size_t>(next_var), {});
   for (size_t x = 1; x < N; ++x)
-    for (int i = 1; cycled(x) && i < copies_of(x); ++i)
-      red.recipe_[static_cast<size_t>(copy_var(x, i))] = {LsatReduction::Recipe::Copy, static_cast<int>(x)};
+    for (int i = 1; cycled(x) && i <= path_len(x); ++i)
+      if (i != pivot(x))
+        red.recipe_[static_cast<size_t>(path_var(x, i))] = {LsatReduction::Recipe::Copy, static_cast<int>(x)};
   for (size_t v = static_cast<size_t>(in.num_vars) + 1; v <= static_cast<size_t>(n1); ++v)
     red.recipe_[v] = {LsatReduction::Recipe::Chain, 0};
 
   // Step 4: the clauses, each followed by its links.
   Formula& out = red.out_;
+  out.clauses.reserve(norm.size() * 3 + 2 * st.empty_clauses + st.copies);
   std::vector<int> pos_seen(N, 0), neg_seen(N, 0);
   auto add_recipe = [&](int v, LsatReduction::Recipe r) {
     if (red.recipe_.size() <= static_cast<size_t>(v)) red.recipe_.resize(static_cast<size_t>(v) + 1);
@@ -188,16 +197,18 @@ LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt) {
         oc.push_back(lit);
         continue;
       }
-      // This occurrence's copy: positives take z1..zp (z0..z_{p-1} if x never
-      // occurs negatively), negatives the copies after them. Copy z_i's
-      // positive literal is in cycle clause i-1, its negative in clause i, so
-      // every cycle clause is met by at most one occurrence.
-      const bool mixed = pos[x] > 0 && neg[x] > 0;
-      int i = lit > 0 ? pos_seen[x]++ + (mixed ? 1 : 0) : neg_seen[x]++ + (mixed ? pos[x] + 1 : 0);
-      int z = copy_var(x, i);
-      int zlit = lit > 0 ? z : -z;
-      if (!direct_used) {
-        direct_used = true;
+      // This occurrence's path literal: the j-th positive one is w_{j+1},
+      // the j-th negative one -w_{s+j}. w_i's positive literal is in path
+      // clause i-1 (none for w_1), its negative literal in path clause i
+      // (none for w_k), so the two ends are free and every path clause is
+      // met by at most one occurrence.
+      const int k = path_len(x);
+      const int i = lit > 0 ? ++pos_seen[x] : pivot(x) + neg_seen[x]++;
+      const int z = path_var(x, i);
+      const int zlit = lit > 0 ? z : -z;
+      const bool free_end = lit > 0 ? i == 1 : i == k;
+      if (free_end || !direct_used) {
+        direct_used = direct_used || !free_end;
         oc.push_back(zlit);
         continue;
       }
@@ -212,8 +223,8 @@ LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt) {
   }
   for (size_t x = 1; x < N; ++x) {
     if (!cycled(x)) continue;
-    const int c = copies_of(x);
-    for (int i = 0; i < c; ++i) out.clauses.push_back({-copy_var(x, i), copy_var(x, (i + 1) % c)});
+    const int k = path_len(x);
+    for (int i = 1; i < k; ++i) out.clauses.push_back({-path_var(x, i), path_var(x, i + 1)});
   }
   out.num_vars = static_cast<int>(next_var - 1);
   red.recipe_.resize(static_cast<size_t>(out.num_vars) + 1);
@@ -224,7 +235,7 @@ LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt) {
           " chain, " + std::to_string(st.copies - st.cycle_vars) + " copy, " + std::to_string(st.links) +
           " occurrence and " + std::to_string(st.empty_clauses) + " false variables follow",
       "to-lsat: " + std::to_string(st.cycle_vars) + " variables occur with a literal more than once: " +
-          std::to_string(st.copies) + " cycle clauses, " + std::to_string(st.links) + " links; " +
+          std::to_string(st.copies - st.cycle_vars) + " path clauses, " + std::to_string(st.links) + " links; " +
           std::to_string(st.tautologies) + " tautologies dropped, " + std::to_string(st.split_clauses) +
           " long clauses split"};
   return red;

@@ -65,7 +65,10 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   r.couplings = c.stats.couplings;
   r.max_coupling = c.stats.max_coupling;
   const Instance& inst = c.instance;
-  Simulator sim(inst);
+  // The motion tables, built once for every check below (and the simulator's
+  // work arrays, reused by its three runs).
+  const PreparedInstance prep(inst);
+  Simulator sim(prep);
 
   // Certificate: the SAT model, lifted to a schedule, through the simulator.
   if (r.sat == Tri::Yes) {
@@ -79,7 +82,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   SolveOptions so;
   so.seconds = opt.solve_seconds;
   so.max_states = opt.max_states;
-  SolveResult sr = solve_discrete(inst, so);
+  SolveResult sr = solve_discrete(prep, so, &sim);
   r.ms_solve = ms_since(t0);
   r.solver_states = sr.stats.states;
   r.discrete = sr.status == SolveResult::Status::Yes  ? Tri::Yes

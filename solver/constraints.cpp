@@ -111,11 +111,13 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
   return lo_n * hi_d < hi_n * lo_d;
 }
 
-ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
+namespace {
+
+ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                 const Deadline* deadline) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Gaps;
   sys.num_couplings = inst.couplings().size();
-  const Regions regions = Regions::build(inst);
   const OpTree ot(inst, tree);
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
@@ -148,17 +150,13 @@ ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree&
   return sys;
 }
 
-namespace {
-
 int axis_of_face(int f) { return f < 2 ? 0 : 1; }
 
-}  // namespace
-
-ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
+ConstraintSystem pair_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                  const Deadline* deadline) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Pairs;
   sys.num_couplings = inst.couplings().size();
-  const Regions regions = Regions::build(inst);
   const OpTree ot(inst, tree);
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
@@ -246,6 +244,21 @@ ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree
   }
   sys.index();
   return sys;
+}
+
+}  // namespace
+
+ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
+  return gap_constraints(inst, tree, Regions::build(inst), deadline);
+}
+ConstraintSystem build_gap_constraints(const PreparedInstance& prep, const Deadline* deadline) {
+  return gap_constraints(prep.inst, prep.tree, prep.regions, deadline);
+}
+ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
+  return pair_constraints(inst, tree, Regions::build(inst), deadline);
+}
+ConstraintSystem build_pair_constraints(const PreparedInstance& prep, const Deadline* deadline) {
+  return pair_constraints(prep.inst, prep.tree, prep.regions, deadline);
 }
 
 std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c) {

@@ -34,6 +34,7 @@
 
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
+#include "lattice/prepared.hpp"
 
 namespace gridlock {
 
@@ -73,6 +74,8 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf);
 // deadline (optional) is checked every few pairs: LimitReached ends the build.
 ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree,
                                        const Deadline* deadline = nullptr);
+// The same from prepared tables (no tree or regions rebuilt).
+ConstraintSystem build_gap_constraints(const PreparedInstance& prep, const Deadline* deadline = nullptr);
 
 // Pair constraints of any instance. Requires no coupling breaking a cycle.
 // A pair (A, B) is kept iff it passes the distance test (each region stays in
@@ -85,6 +88,8 @@ ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree&
 // deadline (optional) is checked every few pairs: LimitReached ends the build.
 ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree,
                                         const Deadline* deadline = nullptr);
+// The same from prepared tables (no tree or regions rebuilt).
+ConstraintSystem build_pair_constraints(const PreparedInstance& prep, const Deadline* deadline = nullptr);
 
 // "gap between (1,0) and (3,0)" / "node (1,1) and node inserted by a".
 std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c);

@@ -1,5 +1,6 @@
 #include "solver/solve.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "lattice/motion.hpp"
@@ -19,38 +20,37 @@ const char* solve_status_name(SolveResult::Status s) {
 }
 
 SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
+  const PreparedInstance prep(inst);
+  return solve_discrete(prep, opt);
+}
+
+SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay) {
+  const Instance& inst = prep.inst;
   SearchBudget budget(opt);
   SolveResult res;
   const bool horizontal = inst.horizontal_only();
   if (opt.engine == SolveOptions::Engine::Precedence && !horizontal)
     throw std::invalid_argument("the precedence search needs a horizontal-only instance");
 
-  try {
-    // A coupling that breaks a cycle collides whenever it runs.
-    const FaceNets faces = FaceNets::build(inst);
-    budget.check();
-    for (CouplingId q = 0; q < inst.couplings().size(); ++q)
-      if (faces.coupling_breaks_cycle[q]) {
-        res.status = SolveResult::Status::No;
-        res.cycle_breaker = q;
-        res.stats.engine = "cycle";
-        res.stats.seconds = budget.elapsed();
-        return res;
-      }
-  } catch (const LimitReached&) {
-    res.stats.seconds = budget.elapsed();
-    return res;  // Unknown
-  }
+  // A coupling that breaks a cycle collides whenever it runs.
+  const FaceNets& faces = prep.faces;
+  for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+    if (faces.coupling_breaks_cycle[q]) {
+      res.status = SolveResult::Status::No;
+      res.cycle_breaker = q;
+      res.stats.engine = "cycle";
+      res.stats.seconds = budget.elapsed();
+      return res;
+    }
 
   const bool precedence = opt.engine == SolveOptions::Engine::Precedence ||
                           (opt.engine == SolveOptions::Engine::Auto && horizontal);
   res.stats.engine = precedence ? "precedence" : "states";
   ConstraintSystem sys;
   try {
-    const SpanningTree tree = SpanningTree::build(inst);
     budget.check();
-    sys = horizontal ? build_gap_constraints(inst, tree, &budget.deadline())
-                     : build_pair_constraints(inst, tree, &budget.deadline());
+    sys = horizontal ? build_gap_constraints(prep, &budget.deadline())
+                     : build_pair_constraints(prep, &budget.deadline());
     res.stats.constraints = sys.constraints.size();
     SearchOutcome out = precedence ? search_precedence(sys, budget, res.stats) : search_states(sys, budget, res.stats);
     res.status = out.status;
@@ -72,7 +72,9 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
     }
     if (replay_order(sys, res.order).failed_step != res.order.size())
       throw std::logic_error("solver returned an order its own constraints reject");
-    Simulator sim(inst);
+    std::optional<Simulator> own;
+    if (!replay || &replay->prepared() != &prep) replay = &own.emplace(prep);
+    Simulator& sim = *replay;
     SimResult check = sim.run_order(res.order);
     if (check.collision)
       throw std::logic_error("solver returned an order that collides in the simulator: " +

@@ -41,6 +41,8 @@
 #include <vector>
 
 #include "lattice/instance.hpp"
+#include "lattice/prepared.hpp"
+#include "lattice/simulate.hpp"
 
 namespace gridlock {
 
@@ -80,6 +82,11 @@ struct SolveResult {
 // time limit covers the set-up too (cycle check, constraint building). See
 // the contract above.
 SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt = {});
+
+// The same on prepared tables (lattice/prepared.hpp): nothing is rebuilt.
+// The YES replay runs on `replay` if it is given and simulates prep (its
+// work arrays are then reused), else on a simulator of its own.
+SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay = nullptr);
 
 const char* solve_status_name(SolveResult::Status s);  // "YES", "NO", "UNKNOWN"
 

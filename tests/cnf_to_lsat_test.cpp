@@ -57,20 +57,28 @@ Size documented_size(const Formula& in) {
   for (const auto& g : groups)
     for (int lit : g) ++(lit > 0 ? p : q)[var_of(lit)];
   std::set<int> X;
-  int64_t sum_c = 0;
+  int64_t sum_k = 0;
   for (int x = 1; x <= in.num_vars; ++x)
     if (p[x] >= 2 || q[x] >= 2) {
       X.insert(x);
-      sum_c += p[x] + q[x] + (p[x] > 0 && q[x] > 0 ? 1 : 0);
+      sum_k += p[x] + q[x] - (p[x] > 0 && q[x] > 0 ? 1 : 0);
     }
+  // Free ends: the first positive and the last negative occurrence of each
+  // variable of X (in clause order) need no link.
+  std::map<int, int> pos_seen, neg_seen;
   int64_t d = 0;
   for (const auto& g : groups) {
     int64_t r = 0;
-    for (int lit : g) r += X.count(var_of(lit));
+    for (int lit : g) {
+      const int x = var_of(lit);
+      if (!X.count(x)) continue;
+      const bool free_end = lit > 0 ? pos_seen[x]++ == 0 : ++neg_seen[x] == q[x];
+      r += free_end ? 0 : 1;
+    }
     d += std::max<int64_t>(0, r - 1);
   }
   const int64_t n = in.num_vars, cx = static_cast<int64_t>(X.size());
-  return {n + A + (sum_c - cx) + d + e, mprime + sum_c + d + 2 * e};
+  return {n + A + (sum_k - cx) + d + e, mprime + (sum_k - cx) + d + 2 * e};
 }
 
 struct Tally {
@@ -202,13 +210,28 @@ TEST(ToLsat, SmallCasesByHand) {
   f.clauses = {{1, 2}, {}};
   LsatReduction red = reduce_to_lsat(f);
   EXPECT_EQ(red.output().clauses, (std::vector<std::vector<int>>{{1, 2}, {3}, {-3}}));
-  // x in three clauses: 3 copies x=z0, 4, 5 in a cycle; no links (one cycle
-  // variable per clause), each clause takes its own copy.
+  // x in three clauses, positively: the path w1 = 4 -> w2 = 5 -> w3 = x (the
+  // pivot); no links (one path variable per clause), each clause takes its
+  // own path variable, the first one the free end w1.
   f.num_vars = 3;
   f.clauses = {{1, 2}, {1, -2}, {1, 3}};
   red = reduce_to_lsat(f);
-  EXPECT_EQ(red.output().clauses, (std::vector<std::vector<int>>{{1, 2}, {4, -2}, {5, 3}, {-1, 4}, {-4, 5}, {-5, 1}}));
+  EXPECT_EQ(red.output().clauses, (std::vector<std::vector<int>>{{4, 2}, {5, -2}, {1, 3}, {-4, 5}, {-5, 1}}));
   EXPECT_EQ(red.lift_to_target({false, true, false, true}), (std::vector<bool>{false, true, false, true, true, true}));
+  // Both signs and a link: x = 1 occurs +,+,- ; y = 2 occurs +,+. Path of x:
+  // w1 = 3 (free), w2 = x (pivot: the second positive and the negative
+  // occurrence, the negative one -w2 = -1 being the free end); path of y:
+  // w1 = 4 (free), w2 = y. Clause 1 holds two free ends; clause 2 holds x's
+  // w2 and y's w2, so y's occurrence becomes the link variable 5.
+  {
+    Formula g;
+    g.num_vars = 2;
+    g.clauses = {{1, 2}, {1, 2}, {-1}};
+    LsatReduction r2 = reduce_to_lsat(g);
+    EXPECT_EQ(r2.output().clauses,
+              (std::vector<std::vector<int>>{{3, 4}, {1, 5}, {-5, 2}, {-1}, {-3, 1}, {-4, 2}}));
+    EXPECT_EQ(r2.stats().links, 1u);
+  }
   // Tautologies vanish; a formula of tautologies becomes empty (when built:
   // as it stands it is LSAT<=3 and would pass through).
   f.clauses = {{1, -1}, {2, 3, -2}};

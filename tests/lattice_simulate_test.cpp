@@ -2,6 +2,7 @@
 // anchor independence, and the fast simulator against the all-pairs twin.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "lattice/grid_format.hpp"
@@ -239,6 +240,91 @@ TEST(SimulatorTwin, FastAgreesWithAllPairsReference) {
   EXPECT_GT(collisions, cases / 5);
   EXPECT_LT(collisions, 2 * cases - cases / 5);
   EXPECT_GT(cycles, 0);
+}
+
+// Everything about one run, to compare runs exactly.
+std::string run_summary(const SimResult& r) {
+  std::ostringstream o;
+  o << r.stats.intervals << "/" << r.stats.moved_regions << "/" << r.stats.candidate_pairs;
+  if (!r.collision) return o.str() + " none";
+  const Collision& c = *r.collision;
+  o << (c.kind == Collision::Kind::Node ? " node " : " cycle ") << c.time.str() << " " << c.a << " " << c.b << " |";
+  for (NodeId w : c.cycle) o << " " << w;
+  o << " |";
+  for (CouplingId q : c.moving) o << " " << q;
+  return o.str();
+}
+
+// A simulator keeps its work arrays and cell table between runs, and may
+// share a PreparedInstance: many runs on one simulator must give exactly what
+// a fresh simulator gives for each schedule.
+TEST(SimulatorTwin, ReusedSimulatorMatchesFreshOnes) {
+  const int cases = test::scaled(600);
+  const uint64_t seed0 = test::base_seed(5);
+  int collisions = 0, clean = 0;
+  for (int i = 0; i < cases; ++i) {
+    uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
+    Instance inst = random_instance(small_params(seed), seed);
+    const PreparedInstance prep(inst);
+    Simulator reused(prep), owning(inst);
+    for (uint64_t j = 0; j < 8; ++j) {
+      Schedule s = random_schedule(inst, seed * 16 + j, j % 2 == 0);
+      const std::string fresh = run_summary(Simulator(inst).run(s));
+      ASSERT_EQ(run_summary(reused.run(s)), fresh) << "schedule " << j;
+      ASSERT_EQ(run_summary(owning.run(s)), fresh) << "schedule " << j;
+      (fresh.find("none") != std::string::npos ? clean : collisions)++;
+    }
+  }
+  EXPECT_GT(collisions, cases);
+  EXPECT_GT(clean, cases);
+}
+
+// A sparse shape (an L of two long arms: its box has far more cells than
+// regions) keeps its cells in the hash table instead of the dense box; moving
+// far in one run (everything at once) also leaves the dense box of compact
+// shapes. Both against the all-pairs reference.
+TEST(SimulatorTwin, SparseShapesAndLongMovesAgreeWithReference) {
+  for (int64_t arm : {40, 110}) {  // 110: a box of 114^2 cells > 16 per region + 4096
+    SCOPED_TRACE("arm " + std::to_string(arm));
+    InstanceBuilder b;
+    for (int64_t x = 0; x < arm; ++x) ASSERT_FALSE(b.add_node({x, 0}));
+    for (int64_t y = 1; y < arm; ++y) ASSERT_FALSE(b.add_node({0, y}));
+    for (int64_t x = 0; x + 1 < arm; ++x) ASSERT_FALSE(b.add_edge({x, 0}, {x + 1, 0}));
+    for (int64_t y = 0; y + 1 < arm; ++y) ASSERT_FALSE(b.add_edge({0, y}, {0, y + 1}));
+    // Expansions along the horizontal arm (pushing its end outward) and a
+    // contraction pair on the vertical one, plus a growth back into the arm.
+    int id = 0;
+    for (int64_t x = 2; x + 2 < arm; x += 5)
+      ASSERT_FALSE(b.add_op("e" + std::to_string(id++), OpKind::Expand, {x, 0}, Dir::PosX));
+    ASSERT_FALSE(b.add_op("c", OpKind::Contract, {0, 3}, Dir::PosY));
+    ASSERT_FALSE(b.add_op("g", OpKind::Grow, {0, arm - 1}, Dir::PosX));
+    Instance inst;
+    if (auto e = b.finish(inst)) FAIL() << e->message;
+    Simulator sim(inst);
+    const size_t k = inst.couplings().size();
+    std::vector<Schedule> schedules;
+    Schedule all;
+    all.start.assign(k, Rational(0));
+    schedules.push_back(all);
+    std::vector<CouplingId> order(k);
+    for (CouplingId q = 0; q < k; ++q) order[q] = q;
+    schedules.push_back(schedule_from_order(order));
+    std::reverse(order.begin(), order.end());
+    schedules.push_back(schedule_from_order(order));
+    Schedule halves;
+    for (CouplingId q = 0; q < k; ++q) halves.start.push_back(Rational(static_cast<int64_t>(q % 3), 2));
+    schedules.push_back(halves);
+    for (const Schedule& s : schedules) {
+      auto fast = sim.run(s).collision;
+      auto ref = test::reference_simulate(inst, s, 0);
+      ASSERT_EQ(fast.has_value(), ref.has_value());
+      if (fast) {
+        EXPECT_EQ(fast->time, ref->time);
+      }
+      EXPECT_EQ(run_summary(sim.run(s)), run_summary(Simulator(inst).run(s)));
+    }
+  }
 }
 
 TEST(SimulatorTwin, VerdictIndependentOfAnchor) {

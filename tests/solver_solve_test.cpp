@@ -133,6 +133,16 @@ void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally&
       Simulator sim(inst);
       ASSERT_FALSE(sim.run_order(r.order).collision) << family << " seed " << seed;
     }
+    // The prepared entry point (tables built once, the caller's simulator
+    // replaying the YES order) gives the same answer and order.
+    const PreparedInstance prep(inst);
+    Simulator shared(prep);
+    SolveOptions o;
+    o.engine = e;
+    SolveResult rp = solve_discrete(prep, o, &shared);
+    EXPECT_EQ(rp.status, r.status) << family << " seed " << seed;
+    EXPECT_EQ(rp.order, r.order) << family << " seed " << seed;
+    EXPECT_EQ(rp.stats.states, r.stats.states) << family << " seed " << seed;
   }
   (ref ? t.yes : t.no) += 1;
   if (inst.couplings().size() >= 5) ++t.big;

@@ -1,6 +1,7 @@
 // gridlock fuzz: hunt for a formula on which the reduction, the solvers or a
 // certificate disagree (reductions/fuzz.hpp, docs/verify.md). Deterministic
 // from --seed; --shard K/N splits a campaign across processes or machines.
+#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -113,6 +114,11 @@ int run_fuzz(const std::vector<std::string>& args) {
   if (*mutation != Mutation::None) header += ", BROKEN GADGET " + std::string(mutation_name(*mutation));
   if (!json) std::cout << "c " << header << std::endl;
 
+  // Each formula allocates and frees the same few large tables (instance,
+  // motion tables, simulator arrays); keep them in the heap instead of
+  // mapping and unmapping fresh pages per formula (about 7% of the time).
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   uint64_t done = 0, sat = 0, unsat = 0, unknown = 0, disagreements = 0, certificates = 0;
