@@ -482,6 +482,7 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
     size_t gen = 0;  // else: index into S.gens
   };
   std::vector<Choice> choices;
+  choices.reserve(static_cast<size_t>(S.nv) + S.gens.size());
   for (int j = 0; j < S.nv; ++j) choices.push_back({j, 0});
   {
     std::vector<Vec2> seen;
@@ -520,7 +521,7 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
       for (int i = 0; i < 8; ++i) {
         cst[i] = S.c[i];
         for (int j = 0; j < S.nv; ++j)
-          if (j != ch.var) cst[i] += S.e[i][j] * val[j];
+          if (j != ch.var) cst[i] += static_cast<i128>(S.e[i][j]) * val[j];
         if (ch.var >= 0) ks[i] = S.e[i][ch.var];
         else ks[i] = S.axis[i] >= 0 ? S.sign[i] * comp(S.gens[ch.gen].second, S.axis[i]) : 0;
       }

@@ -1,0 +1,47 @@
+// GRIDLOCK_ASSERT: in builds that check assertions (Debug, sanitizers), a
+// broken "Requires" stops the program with a message naming the contract;
+// elsewhere the condition is not evaluated at all.
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <cstdint>
+#include <vector>
+
+#include "cnf/formula.hpp"
+#include "common/assert.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/schedule.hpp"
+
+namespace gridlock {
+namespace {
+
+#ifdef GRIDLOCK_ENABLE_ASSERT
+
+TEST(AssertDeathTest, BrokenRequiresStopsWithTheContract) {
+  uint64_t state = 1;
+  EXPECT_DEATH(draw_below(state, 0), "assertion failed: .*draw_below needs n > 0");
+  EXPECT_DEATH(var_of(0), "var_of needs a non-zero literal");
+  EXPECT_DEATH(var_of(INT_MIN), "var_of needs a non-zero literal");
+  EXPECT_DEATH(schedule_from_order({0, 0}), "needs a permutation of all coupling ids");
+  EXPECT_DEATH(schedule_from_order({1}), "needs a permutation of all coupling ids");
+}
+
+TEST(AssertDeathTest, KeptContractsPass) {
+  uint64_t state = 1;
+  EXPECT_LT(draw_below(state, 3), 3U);
+  EXPECT_EQ(var_of(-4), 4);
+  EXPECT_EQ(schedule_from_order({1, 0}).start.size(), 2U);
+}
+
+#else
+
+TEST(AssertDeathTest, ConditionIsNotEvaluatedWhenOff) {
+  int evaluated = 0;
+  GRIDLOCK_ASSERT(++evaluated > 0, "never evaluated");
+  EXPECT_EQ(evaluated, 0);
+}
+
+#endif
+
+}  // namespace
+}  // namespace gridlock
