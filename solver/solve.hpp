@@ -47,10 +47,11 @@ namespace gridlock {
 struct SolveOptions {
   double seconds = 0;       // wall-clock limit; 0 = no limit
   uint64_t max_states = 0;  // limit on search nodes; 0 = none
-  // Which search to run. Auto: Precedence for horizontal-only instances,
-  // States otherwise. Precedence on a non-horizontal instance throws
-  // std::invalid_argument. (Tests run both on the same instances.)
-  enum class Engine { Auto, States, Precedence } engine = Engine::Auto;
+  // Which search to run. Auto: Sat for horizontal-only instances (measured
+  // fastest, docs/performance.md), States otherwise. Precedence or Sat on a
+  // non-horizontal instance throws std::invalid_argument. (Tests run every
+  // engine on the same instances.)
+  enum class Engine { Auto, States, Precedence, Sat } engine = Engine::Auto;
 };
 
 struct SolveStats {
@@ -62,7 +63,7 @@ struct SolveStats {
   uint64_t safe_moves = 0;    // couplings performed without branching
   uint64_t memo_hits = 0;     // states search: revisits of a refuted state
   uint64_t constraints = 0;   // collision constraints built
-  std::string engine;         // "cycle" (a coupling breaks a cycle), "states", "precedence", "trivial"
+  std::string engine;         // "cycle" (a coupling breaks a cycle), "states", "precedence", "sat"
 };
 
 struct SolveResult {
