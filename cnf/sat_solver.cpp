@@ -1,4 +1,4 @@
-// The CaDiCaL adapter: the only file of gridlock that includes cadical.hpp.
+// The CaDiCaL adapter (with cnf/incremental_sat.cpp, the only files that include cadical.hpp).
 #include "cnf/sat_solver.hpp"
 
 #include <cadical.hpp>

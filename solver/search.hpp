@@ -49,6 +49,17 @@ class SearchBudget {
     if (drawn_) std::fputs("\r\033[K", stderr);
     drawn_ = false;
   }
+  // True when a limit is already exceeded (time, stop request, or nodes,
+  // counting `extra` nodes not yet ticked). For loops that cannot tick per
+  // node: an external solver's callback.
+  bool exhausted(const SolveStats& st, uint64_t extra = 0) const {
+    if (opt_.max_states != 0 && st.states + extra > opt_.max_states) return true;
+    return deadline_.expired();
+  }
+  // check() that also counts the node limit.
+  void check(const SolveStats& st) const {
+    if (exhausted(st)) throw LimitReached{};
+  }
 
  private:
   void show_progress(const SolveStats& st) {
@@ -85,5 +96,15 @@ SearchOutcome search_states(const ConstraintSystem& sys, SearchBudget& budget, S
 // step collides iff the state after it has a positive form, so only states
 // matter). Throws std::invalid_argument for a system with more forms.
 SearchOutcome search_precedence(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
+
+// SAT back end, gap systems only: the system as clauses over order literals
+// "a before b" for couplings sharing a gap (one weighted at-most-K counter per
+// narrower and gap), solved by CaDiCaL incrementally; cycles among the order
+// literals of a model are excluded lazily, one clause per cycle found, until
+// a model is acyclic (its topological order is the answer) or the clauses are
+// unsatisfiable (NO). Statistics: decisions = solve calls, refuted =
+// conflicts, propagations = cycle clauses, states = both.
+// Throws std::invalid_argument for a system with more forms.
+SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
 
 }  // namespace gridlock

@@ -29,8 +29,11 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
   SearchBudget budget(opt);
   SolveResult res;
   const bool horizontal = inst.horizontal_only();
-  if (opt.engine == SolveOptions::Engine::Precedence && !horizontal)
+  using Engine = SolveOptions::Engine;
+  if (opt.engine == Engine::Precedence && !horizontal)
     throw std::invalid_argument("the precedence search needs a horizontal-only instance");
+  if (opt.engine == Engine::Sat && !horizontal)
+    throw std::invalid_argument("the SAT engine needs a horizontal-only instance");
 
   // A coupling that breaks a cycle collides whenever it runs.
   const FaceNets& faces = prep.faces;
@@ -43,16 +46,17 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
       return res;
     }
 
-  const bool precedence = opt.engine == SolveOptions::Engine::Precedence ||
-                          (opt.engine == SolveOptions::Engine::Auto && horizontal);
-  res.stats.engine = precedence ? "precedence" : "states";
+  const Engine engine = opt.engine != Engine::Auto ? opt.engine : horizontal ? Engine::Sat : Engine::States;
+  res.stats.engine = engine == Engine::Precedence ? "precedence" : engine == Engine::Sat ? "sat" : "states";
   ConstraintSystem sys;
   try {
     budget.check();
     sys = horizontal ? build_gap_constraints(prep, &budget.deadline())
                      : build_pair_constraints(prep, &budget.deadline());
     res.stats.constraints = sys.constraints.size();
-    SearchOutcome out = precedence ? search_precedence(sys, budget, res.stats) : search_states(sys, budget, res.stats);
+    SearchOutcome out = engine == Engine::Precedence ? search_precedence(sys, budget, res.stats)
+                        : engine == Engine::Sat      ? search_sat(sys, budget, res.stats)
+                                                     : search_states(sys, budget, res.stats);
     res.status = out.status;
     res.order = std::move(out.order);
   } catch (const LimitReached&) {

@@ -65,6 +65,12 @@ TEST(SolveCommand, JsonAndLimits) {
   EXPECT_EQ(j["status"], "YES");
   EXPECT_EQ(j["witness"], nlohmann::json::array({"a", "b"}));
   EXPECT_GE(j["stats"]["states"].get<uint64_t>(), 1u);
+  EXPECT_EQ(j["engine"], "sat");  // the default for horizontal-only instances
+  for (std::string e : {"precedence", "sat", "states"}) {
+    auto o = run_gridlock({"solve", kExamples + "model-case2-order-gadget.grid", "--engine", e, "--json"});
+    EXPECT_EQ(o.exit_code, 10) << e << o.err;
+    EXPECT_EQ(nlohmann::json::parse(o.out)["witness"], nlohmann::json::array({"a", "b"})) << e;
+  }
   auto u = run_gridlock({"solve", kExamples + "model-case2-order-gadget.grid", "--max-states", "1", "--engine",
                          "states"});
   EXPECT_EQ(u.exit_code, 0) << u.out << u.err;
@@ -91,9 +97,11 @@ TEST(SolveCommand, Errors) {
     EXPECT_NE(e.err.find("gridlock: error: "), std::string::npos) << e.err;
   }
   std::string vertical = test::write_file(dir + "/v.grid", "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no a expand 0 0 +y\n");
-  auto pv = run_gridlock({"solve", vertical, "--engine", "precedence"});
-  EXPECT_EQ(pv.exit_code, 1);
-  EXPECT_NE(pv.err.find("horizontal-only"), std::string::npos) << pv.err;
+  for (std::string e : {"precedence", "sat"}) {
+    auto pv = run_gridlock({"solve", vertical, "--engine", e});
+    EXPECT_EQ(pv.exit_code, 1) << e;
+    EXPECT_NE(pv.err.find("horizontal-only"), std::string::npos) << pv.err;
+  }
   auto sv = run_gridlock({"solve", vertical});
   EXPECT_EQ(sv.exit_code, 10) << sv.out << sv.err;
 }

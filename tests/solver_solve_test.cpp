@@ -55,7 +55,8 @@ TEST(SolveModelCases, Case1TwoGrowthsNo) {
 
 TEST(SolveModelCases, Case2OrderGadgetAThenB) {
   Instance inst = load("model-case2-order-gadget.grid");
-  for (auto e : {SolveOptions::Engine::Auto, SolveOptions::Engine::States, SolveOptions::Engine::Precedence}) {
+  for (auto e : {SolveOptions::Engine::Auto, SolveOptions::Engine::States, SolveOptions::Engine::Precedence,
+                 SolveOptions::Engine::Sat}) {
     SolveResult r = solve_with(inst, e);
     ASSERT_EQ(r.status, Status::Yes);
     EXPECT_EQ(names(inst, r.order), " a b");
@@ -105,6 +106,8 @@ TEST(SolveLimits, PrecedenceOnVerticalInstanceThrows) {
     SolveOptions o;
     o.engine = SolveOptions::Engine::Precedence;
     EXPECT_THROW(solve_discrete(inst, o), std::invalid_argument);
+    o.engine = SolveOptions::Engine::Sat;
+    EXPECT_THROW(solve_discrete(inst, o), std::invalid_argument);
     return;
   }
   FAIL() << "no random instance with a vertical operation among seeds 1..49: the test checked nothing";
@@ -122,7 +125,10 @@ struct Tally {
 void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally& t) {
   auto ref = test::reference_solve(inst);
   std::vector<SolveOptions::Engine> engines = {SolveOptions::Engine::States};
-  if (inst.horizontal_only()) engines.push_back(SolveOptions::Engine::Precedence);
+  if (inst.horizontal_only()) {
+    engines.push_back(SolveOptions::Engine::Precedence);
+    engines.push_back(SolveOptions::Engine::Sat);
+  }
   for (auto e : engines) {
     SolveResult r = solve_with(inst, e);
     ASSERT_EQ(r.status == Status::Yes, ref.has_value())

@@ -30,7 +30,7 @@ int run_solve(const std::vector<std::string>& args) {
     ("timeout", po::value<std::string>(), "give up after S seconds (s UNKNOWN, exit 0)")
     ("max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")
     ("engine", po::value<std::string>()->default_value("auto"),
-     "search: auto (precedence for horizontal-only instances, else states), states, precedence")
+     "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")
     ("json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
   if (!cli::parse_args_one_input(args, opts, "instance", vm, "solve INSTANCE.grid [--timeout S] [--max-states N] [--json]",
@@ -47,7 +47,8 @@ int run_solve(const std::vector<std::string>& args) {
   if (engine == "auto") opt.engine = SolveOptions::Engine::Auto;
   else if (engine == "states") opt.engine = SolveOptions::Engine::States;
   else if (engine == "precedence") opt.engine = SolveOptions::Engine::Precedence;
-  else throw UserError("--engine must be auto, states or precedence, not '" + engine + "'");
+  else if (engine == "sat") opt.engine = SolveOptions::Engine::Sat;
+  else throw UserError("--engine must be auto, states, precedence or sat, not '" + engine + "'");
 
   const std::string path = vm["instance"].as<std::string>();
   // Kept until the process ends (reachable, so no leak report): freeing an
@@ -56,8 +57,9 @@ int run_solve(const std::vector<std::string>& args) {
   kept = new Instance(cli::load_instance(path));
   const Instance& inst = *kept;
   cli::Activity act(path, "solving the instance");
-  if (opt.engine == SolveOptions::Engine::Precedence && !inst.horizontal_only())
-    throw UserError(path + ": --engine precedence needs a horizontal-only instance");
+  if ((opt.engine == SolveOptions::Engine::Precedence || opt.engine == SolveOptions::Engine::Sat) &&
+      !inst.horizontal_only())
+    throw UserError(path + ": --engine " + engine + " needs a horizontal-only instance");
   if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
   Answer ans("solve", vm.count("json") > 0);
   ans.comment("gridlock solve " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +

@@ -1,0 +1,56 @@
+#include "cnf/incremental_sat.hpp"
+
+#include <cadical.hpp>
+
+#include <stdexcept>
+
+namespace gridlock {
+
+// The learner only counts conflicts (CaDiCaL 1.5 has no public counter):
+// it is asked about every learned clause and declines to receive it.
+struct IncrementalSat::Impl : CaDiCaL::Terminator, CaDiCaL::Learner {
+  CaDiCaL::Solver solver;
+  const std::function<bool(uint64_t)>* stop = nullptr;
+  uint64_t conflicts = 0;
+  bool terminate() override { return stop && (*stop)(conflicts); }
+  bool learning(int) override {
+    ++conflicts;
+    return false;
+  }
+  void learn(int) override {}
+};
+
+IncrementalSat::IncrementalSat() : impl_(std::make_unique<Impl>()) {
+  impl_->solver.set("quiet", 1);
+  impl_->solver.connect_learner(impl_.get());
+}
+
+IncrementalSat::~IncrementalSat() {
+  impl_->solver.disconnect_learner();
+}
+
+int IncrementalSat::new_var() { return ++vars_; }
+
+void IncrementalSat::add_clause(const std::vector<int>& lits) {
+  for (int l : lits) {
+    if (l == 0 || l > vars_ || -l > vars_) throw std::invalid_argument("IncrementalSat: literal out of range");
+    impl_->solver.add(l);
+  }
+  impl_->solver.add(0);
+}
+
+SatResult::Status IncrementalSat::solve(const std::function<bool(uint64_t)>& stop) {
+  if (vars_ > 0) impl_->solver.reserve(vars_);
+  impl_->stop = &stop;
+  impl_->solver.connect_terminator(impl_.get());
+  const int code = impl_->solver.solve();
+  impl_->solver.disconnect_terminator();
+  impl_->stop = nullptr;
+  return code == 10 ? SatResult::Sat : code == 20 ? SatResult::Unsat : SatResult::Unknown;
+}
+
+bool IncrementalSat::value(int var) const { return impl_->solver.val(var) > 0; }
+
+uint64_t IncrementalSat::conflicts() const { return impl_->conflicts; }
+
+}  // namespace gridlock

@@ -1,0 +1,43 @@
+// An incremental SAT solver (CaDiCaL behind a small interface) for engines
+// that add clauses between solve calls: the solver keeps everything it has
+// learned, so refining a formula and solving again is cheap. Only
+// cnf/incremental_sat.cpp and cnf/sat_solver.cpp include cadical.hpp.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "cnf/sat_solver.hpp"
+
+namespace gridlock {
+
+class IncrementalSat {
+ public:
+  IncrementalSat();
+  ~IncrementalSat();
+  IncrementalSat(const IncrementalSat&) = delete;
+  IncrementalSat& operator=(const IncrementalSat&) = delete;
+
+  // A fresh variable (1, 2, ...). O(1).
+  int new_var();
+  int num_vars() const { return vars_; }
+  // Adds the clause (non-zero literals over variables from new_var). An
+  // empty clause makes the formula unsatisfiable. O(size).
+  void add_clause(const std::vector<int>& lits);
+  // Solves the clauses added so far. `stop` is polled during the search
+  // with the number of conflicts so far (over all calls); returning true
+  // ends the call with Unknown. Sat: value() reads the model until the next
+  // add_clause or solve.
+  SatResult::Status solve(const std::function<bool(uint64_t conflicts)>& stop);
+  bool value(int var) const;
+  uint64_t conflicts() const;  // over all solve calls
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int vars_ = 0;
+};
+
+}  // namespace gridlock
