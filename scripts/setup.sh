@@ -14,6 +14,7 @@ PACKAGES=(
   ccache                                    # shared objects between the builds
   libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
   chromium                                  # headless browser for the viewer's page tests
+  parallel                                  # GNU parallel: the sharded-campaign recipe test
 )
 
 missing=()

@@ -79,6 +79,13 @@ bool parse_args_one_input(const std::vector<std::string>& args, const po::option
   return parse_args(args, visible, pos, vm, usage, description, &hidden);
 }
 
+void parse_shard(const std::string& text, uint64_t& k, uint64_t& n) {
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> k >> slash >> n) || slash != '/' || n == 0 || k >= n || !in.eof() || text.find('-') != std::string::npos)
+    throw UserError("--shard: want K/N with 0 <= K < N, not '" + text + "'");
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   if (path == "-") {
     std::cout << text;

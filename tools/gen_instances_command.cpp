@@ -44,7 +44,11 @@ int run_gen_instances(const std::vector<std::string>& args) {
     ("yes", po::value<int>()->default_value(-1), "keep only this many YES instances of the random ones (-1: all)")
     ("no", po::value<int>()->default_value(-1), "keep only this many NO instances of the random ones (-1: all); "
                                                "with --yes/--no, formulas are drawn until both are met")
-    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)");
+    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)")
+    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: make only the instances i (given ones first, then "
+                                                             "threshold, then lsat) with i % N == K; the manifest is then "
+                                                             "manifest-shard-K-of-N.json (not with --yes/--no)")
+    ("json-out", po::value<std::string>(), "also write the manifest to this file ('gridlock merge' combines shards)");
   po::positional_options_description pos;
   po::variables_map vm;
   if (!cli::parse_args(args, opts, pos, vm, "gen-instances -o DIR [--threshold N] [--lsat N] [--vars V] [--formula F]...",
@@ -61,6 +65,9 @@ int run_gen_instances(const std::vector<std::string>& args) {
   if (vars < 3 || vars > 1000) throw UserError("--vars must be 3 to 1000");
   const int want_yes = vm["yes"].as<int>(), want_no = vm["no"].as<int>();
   const bool mix = want_yes >= 0 || want_no >= 0;
+  uint64_t shard = 0, shards = 1;
+  cli::parse_shard(vm["shard"].as<std::string>(), shard, shards);
+  if (mix && shards > 1) throw UserError("--shard cannot be combined with --yes/--no (they draw until counts are met)");
 
   std::vector<Source> given;
   if (vm.count("formula"))
@@ -75,7 +82,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
   nlohmann::json entries = nlohmann::json::array();
   int yes = 0, no = 0;
   // Labels one formula; returns false if --yes/--no say it is not wanted.
-  auto label = [&](const Source& s, bool random) {
+  auto label = [&](const Source& s, bool random, uint64_t index) {
     SatResult sat = solve_sat(s.formula);
     const bool is_yes = sat.status == SatResult::Sat;
     if (random && mix && ((is_yes && want_yes >= 0 && yes >= want_yes) || (!is_yes && want_no >= 0 && no >= want_no)))
@@ -83,6 +90,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
     LsatReduction red = reduce_to_lsat(s.formula);
     CompiledFormula c = compile_formula(red.output());
     nlohmann::json e;
+    e["index"] = index;  // position in the unsharded set
     e["name"] = s.name;
     e["instance"] = s.name + ".grid";
     e["formula"] = s.name + ".cnf";
@@ -122,12 +130,14 @@ int run_gen_instances(const std::vector<std::string>& args) {
     return true;
   };
 
-  for (const Source& s : given) label(s, false);
+  for (size_t i = 0; i < given.size(); ++i)
+    if (i % shards == shard) label(given[i], false, i);
   // Random formulas. Formula j of a kind has seed fuzz_formula_seed(seed, j).
-  auto draw = [&](const std::string& kind, int count) {
+  auto draw = [&](const std::string& kind, int count, uint64_t offset) {
     int made = 0;
     const int limit = mix ? 100 * std::max(count, 1) : count;  // attempts
     for (int j = 0; j < limit && made < count; ++j) {
+      if ((offset + static_cast<uint64_t>(j)) % shards != shard) continue;
       Source s;
       s.seed = fuzz_formula_seed(seed, static_cast<uint64_t>(j) + (kind == "lsat" ? 1'000'000'000ull : 0));
       if (kind == "threshold") {
@@ -148,11 +158,12 @@ int run_gen_instances(const std::vector<std::string>& args) {
         s.origin = "random LSAT<=3, n=" + std::to_string(vars) + ", m=" + std::to_string(l.m);
       }
       s.name = kind + "-" + std::to_string(j + 1);
-      made += label(s, true);
+      made += label(s, true, offset + static_cast<uint64_t>(j));
     }
   };
-  draw("threshold", vm["threshold"].as<int>());
-  draw("lsat", vm["lsat"].as<int>());
+  const int n_threshold = std::max(vm["threshold"].as<int>(), 0), n_lsat = std::max(vm["lsat"].as<int>(), 0);
+  draw("threshold", n_threshold, given.size());
+  draw("lsat", n_lsat, given.size() + static_cast<uint64_t>(n_threshold));
 
   nlohmann::json manifest;
   manifest["generator"] = "gridlock gen-instances";
@@ -161,10 +172,16 @@ int run_gen_instances(const std::vector<std::string>& args) {
   manifest["vars"] = vars;
   manifest["yes"] = yes;
   manifest["no"] = no;
+  manifest["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
+  if (!mix) manifest["planned"] = given.size() + static_cast<size_t>(n_threshold) + static_cast<size_t>(n_lsat);
   manifest["instances"] = entries;
-  write("manifest.json", manifest.dump(2) + "\n");
+  const std::string manifest_name = shards == 1 ? "manifest.json"
+                                                : "manifest-shard-" + std::to_string(shard) + "-of-" +
+                                                      std::to_string(shards) + ".json";
+  write(manifest_name, manifest.dump(2) + "\n");
+  if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), manifest.dump(2) + "\n");
   std::cout << "c wrote " << entries.size() << " instances (" << yes << " YES, " << no << " NO) and " << out
-            << "/manifest.json" << std::endl;
+            << "/" << manifest_name << std::endl;
   if (mix && ((want_yes >= 0 && yes < want_yes) || (want_no >= 0 && no < want_no)))
     std::cout << "c note: fewer instances than asked for of one answer (random formulas of this kind rarely have it)"
               << std::endl;

@@ -15,6 +15,7 @@
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/verify.hpp"
+#include "tools/animate_page.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 
@@ -84,10 +85,12 @@ void draw(const VerifyResult& r, const std::string& dir) {
     wo.collision = &*res.collision;
     wo.title = stem(r.name) + ": UNSAT; the all-false schedule collides";
     cli::write_text_file(base + "-collision.svg", render_svg(inst, wo));
+    write_animation(base + "-collision.html", inst, s, wo.title);
   } else {
     wo.time = Rational(static_cast<int64_t>(order.size()));
     wo.title = stem(r.name) + ": witness schedule, done";
     cli::write_text_file(base + "-witness.svg", render_svg(inst, wo));
+    write_animation(base + "-witness.html", inst, s, stem(r.name) + ": witness schedule");
   }
 }
 
@@ -103,7 +106,9 @@ int run_verify(const std::vector<std::string>& args) {
     ("pictures", po::value<std::string>(), "draw each compiled instance of at most --picture-nodes nodes, and its "
                                            "witness (or a collision), into this folder")
     ("picture-nodes", po::value<size_t>()->default_value(1500), "largest instance drawn by --pictures")
-    ("json", "print one JSON object instead of the table");
+    ("json", "print one JSON object instead of the table")
+    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: check only the formulas i (in input order) with i % N == K")
+    ("json-out", po::value<std::string>(), "also write the JSON object to this file ('gridlock merge' combines shards)");
   po::options_description hidden;
   hidden.add_options()
     ("inputs", po::value<std::vector<std::string>>()->required(), "formulas")
@@ -130,6 +135,8 @@ int run_verify(const std::vector<std::string>& args) {
   opt.mutation = *mutation;
   const bool json = vm.count("json") > 0;
   std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
+  uint64_t shard = 0, shards = 1;
+  cli::parse_shard(vm["shard"].as<std::string>(), shard, shards);
   // Read everything first: a bad file is reported before any work is done.
   std::vector<Formula> formulas;
   for (const auto& f : files) formulas.push_back(cli::load_formula(f));
@@ -145,7 +152,10 @@ int run_verify(const std::vector<std::string>& args) {
   nlohmann::json rows = nlohmann::json::array();
   size_t agree = 0, unknown = 0, disagree = 0, witnesses = 0, sat = 0, unsat = 0;
   double total_ms = 0;
+  size_t checked = 0;
   for (size_t i = 0; i < files.size(); ++i) {
+    if (i % shards != shard) continue;
+    ++checked;
     VerifyResult r = verify_formula(formulas[i], files[i], opt);
     witnesses += static_cast<size_t>(r.witnesses_checked());
     sat += r.sat == Tri::Yes;
@@ -163,14 +173,15 @@ int run_verify(const std::vector<std::string>& args) {
       ++agree;
     }
     if (vm.count("pictures") && r.nodes <= vm["picture-nodes"].as<size_t>()) draw(r, vm["pictures"].as<std::string>());
-    if (json) {
-      rows.push_back({{"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
+    if (json || vm.count("json-out")) {
+      rows.push_back({{"index", i}, {"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
                       {"reduced", r.reduced}, {"nodes", r.nodes}, {"operations", r.ops}, {"couplings", r.couplings},
                       {"max_coupling", r.max_coupling}, {"sat", tri_name(r.sat)}, {"discrete", tri_name(r.discrete)},
                       {"continuous", tri_name(r.continuous)}, {"witnesses_checked", r.witnesses_checked()},
                       {"solver_states", r.solver_states}, {"ms_sat", r.ms_sat}, {"ms_compile", r.ms_compile},
                       {"ms_solve", r.ms_solve}, {"ms_gaps", r.ms_gaps}, {"status", status}, {"problem", r.problem}});
-    } else {
+    }
+    if (!json) {
       std::string name = stem(files[i]);
       if (name.size() > static_cast<size_t>(w - 1)) name = name.substr(0, static_cast<size_t>(w - 2)) + "~";
       out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(8)
@@ -182,18 +193,21 @@ int run_verify(const std::vector<std::string>& args) {
           << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps) << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
     }
   }
-  std::string summary = std::to_string(files.size()) + " formulas (" + std::to_string(sat) + " SAT, " +
+  std::string summary = std::to_string(checked) + " formulas (" + std::to_string(sat) + " SAT, " +
                         std::to_string(unsat) + " UNSAT): " + std::to_string(agree) + " agree, " +
                         std::to_string(unknown) + " unknown (solver limit), " + std::to_string(disagree) +
                         " disagree; " + std::to_string(witnesses) + " certificates checked; " +
                         fmt_ms(total_ms / 1000) + " s";
+  nlohmann::json j;
+  j["command"] = "verify";
+  j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
+  j["inputs"] = files.size();
+  j["formulas"] = rows;
+  j["summary"] = {{"formulas", checked}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
+                  {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
+  j["exit_code"] = disagree ? 1 : 0;
+  if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), j.dump(2) + "\n");
   if (json) {
-    nlohmann::json j;
-    j["command"] = "verify";
-    j["formulas"] = rows;
-    j["summary"] = {{"formulas", files.size()}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
-                    {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
-    j["exit_code"] = disagree ? 1 : 0;
     out << j.dump() << std::endl;
   } else {
     out << "summary: " << summary << std::endl;
