@@ -178,6 +178,8 @@ for (const z of resizing.values()) { z.el = el('rect', { class: z.r < N ? 'n' : 
 const anchorDot = el('circle', { r: .13, cx: cellX(G.anchor) + .25, cy: cellY(G.anchor) + .75, fill: '#000' }, parts[partOf[G.anchor]].g);
 const overlap = el('rect', { id: 'overlap', visibility: 'hidden' }, world);
 let ALL = null, VB = null, lastOv = null;
+const T0 = EV[0], TSTOP = parseQ(G.stop), TC = G.collision ? parseQ(G.collision.time) : null;
+
 // View box: the cells, the growth targets and everything the keyframes reach.
 {
   let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
@@ -205,6 +207,13 @@ function fit(initial) {
   if (initial && s < 6 && Math.max(W / ALL[2], H / ALL[3]) >= 6) {
     if (W / ALL[2] > H / ALL[3]) setView([ALL[0], ALL[1], ALL[2], ALL[2] * H / W]);
     else setView([ALL[0], ALL[1], ALL[3] * W / H, ALL[3]]);
+    // With a collision, centre it.
+    if (G.collision) {
+      const c = regionRect(G.collision.kind === 'node' ? G.collision.a : G.collision.cycle[0], TSTOP);
+      const cx = (c[0] + c[1]) / 2, cy = -(c[2] + c[3]) / 2;
+      setView([Math.min(Math.max(cx - VB[2] / 2, ALL[0]), ALL[0] + ALL[2] - VB[2]),
+               Math.min(Math.max(cy - VB[3] / 2, ALL[1]), ALL[1] + ALL[3] - VB[3]), VB[2], VB[3]]);
+    }
   } else setView(ALL.slice());
 }
 function zoomAt(cx, cy, k) {  // cx, cy in grid units (y negated)
@@ -234,7 +243,6 @@ function follow() {  // keep the running operations in view
     setView([cx - VB[2] / 2, cy - VB[3] / 2, VB[2], VB[3]]);
 }
 // --- time ---
-const T0 = EV[0], TSTOP = parseQ(G.stop), TC = G.collision ? parseQ(G.collision.time) : null;
 let T = T0, exact = fracStr(T0), playing = false, last = null, runKey = '', runNow = [];
 const slider = $('slider');
 function running(Tn) {
@@ -253,7 +261,7 @@ function setRect(e, c, minw) {
   e.setAttribute('x', c[0] + (w - ww) / 2); e.setAttribute('y', c[2] + (h - hh) / 2);
   e.setAttribute('width', ww); e.setAttribute('height', hh);
 }
-let drawMs = 0, curInterval = -1, moverParts = [], moverRegions = [];
+let loadMs = null, drawMs = 0, curInterval = -1, moverParts = [], moverRegions = [];
 function draw() {
   const t0 = performance.now();
   // Within one interval between events only the parts and regions that move
@@ -317,7 +325,7 @@ function boxOf(c) {  // grid box -> CSS pixel box [left, top, right, bottom]
   return [Math.min(p.x, q.x), Math.min(p.y, q.y), Math.max(p.x, q.x), Math.max(p.y, q.y)];
 }
 function writeState(ov) {
-  const s = { t: exact, T: T / D, stop: G.stop, running: runNow.map(q => G.couplings[q]), errors: errors, draw_ms: drawMs, bench: bench };
+  const s = { t: exact, T: T / D, stop: G.stop, running: runNow.map(q => G.couplings[q]), errors: errors, draw_ms: drawMs, bench: bench, load_ms: loadMs };
   if (G.collision && G.collision.kind === 'node') {
     const a = regionRect(G.collision.a, T), b = regionRect(G.collision.b, T);
     s.a = { label: label(G.collision.a), grid: a, px: boxOf(a) };
@@ -391,9 +399,15 @@ function runBench(k) {
   const t0 = performance.now();
   // Playback at speed 1 and 60 frames a second, from 40% of the way on.
   const from = T0 + (TSTOP - T0) * 0.4;
-  for (let i = 0; i < k; ++i) { T = Math.min(TSTOP, from + i * D / 60); exact = null; draw(); void document.body.offsetWidth; }
+  // #bench=K&full: the same with every part and region recomputed each frame
+  // (the baseline without the per-interval lists of movers).
+  const full = /full/.test(location.hash);
+  for (let i = 0; i < k; ++i) {
+    if (full) curInterval = -1;
+    T = Math.min(TSTOP, from + i * D / 60); exact = null; draw(); void document.body.offsetWidth;
+  }
   benching = false;
-  bench = { frames: k, ms_per_frame: (performance.now() - t0) / k, parts: parts.length, moving_parts: parts.filter(p => p.moves).length };
+  bench = { full: full, frames: k, ms_per_frame: (performance.now() - t0) / k, parts: parts.length, moving_parts: parts.filter(p => p.moves).length };
 }
 function fromHash() {
   const b = /[#&]bench=(\d+)/.exec(location.hash);
@@ -408,6 +422,8 @@ function fromHash() {
 window.addEventListener('hashchange', fromHash);
 window.addEventListener('resize', () => { if (!playing) draw(); });
 if (!fromHash()) { setT(T0); if (!/nostart/.test(location.hash)) play(true); }
+loadMs = performance.now();  // from navigation start to a drawn page (script side)
+if (!playing) writeState(lastOv);
 </script></body></html>
 )HTML";
 
