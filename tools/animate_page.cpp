@@ -382,7 +382,8 @@ $('info').textContent = N + ' nodes, ' + G.ops.length + ' operations, ' + NQ + '
   ' rigid parts; ' + G.model + ' schedule, events 0..' + (EV.length - 1) + ' from t = ' + fracStr(EV[0]) + ' to ' + fracStr(EV[EV.length - 1]);
 if (G.collision) {
   $('collision').textContent = G.collision.text + '; moving then: ' + G.collision.moving.map(q => G.couplings[q]).join(' ') +
-    '. The player stops at t = ' + G.stop + ', half way to the next event, where the overlap shows.';
+    '. The player stops at t = ' + G.stop + ', half way to the next event, ' +
+    (G.collision.kind === 'node' ? 'where the overlap shows.' : 'where the cycle is visibly torn apart.');
   const tick = $('ctick');
   tick.hidden = false;
   tick.style.left = (TSTOP > T0 ? 100 * (TC - T0) / (TSTOP - T0) : 0) + '%';
