@@ -13,6 +13,9 @@
 #include "lattice/animation.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
+#include "cnf/dimacs.hpp"
+#include "reductions/compile.hpp"
+#include "reductions/verify.hpp"
 #include "support/cli.hpp"
 
 namespace gridlock {
@@ -91,81 +94,98 @@ nlohmann::json page_state(const std::string& dom) {
   return nlohmann::json::parse(text, nullptr, false);
 }
 
-struct Case {
-  std::string name, instance;
-  std::vector<std::string> schedule_args;  // for gridlock animate
-  Schedule schedule;
-};
+// Opens page (written for inst and schedule s) at the collision's stop
+// moment and checks that the collision is drawn where the simulator says.
+void expect_collision_drawn(const std::string& chromium, const std::string& page, const Instance& inst,
+                            const Schedule& s, const std::string& png) {
+  // What the simulator says, by its own path: the collision, the moment the
+  // page stops at, and both regions' exact rectangles then.
+  Simulator sim(inst);
+  auto col = sim.run(s).collision;
+  ASSERT_TRUE(col.has_value());
+  ASSERT_EQ(col->kind, Collision::Kind::Node);
+  Rational stop = collision_draw_time(s, *col);
+  std::vector<RectQ> conf = configuration_at(inst, s, stop);
+  const std::string url = "file://" + page + "#t=" + stop.str();
+  run_chromium(chromium, "--screenshot=" + png, url);
+  EXPECT_TRUE(std::filesystem::exists(png) && std::filesystem::file_size(png) > 1000) << "no screenshot " << png;
+  nlohmann::json st = page_state(run_chromium(chromium, "--dump-dom", url));
+  ASSERT_TRUE(st.is_object()) << "the page wrote no state";
+  EXPECT_TRUE(st["errors"].empty()) << st["errors"].dump();
+  EXPECT_EQ(st["t"], stop.str());
+  // The colliding regions and their overlap, in grid units: as the simulator says.
+  for (auto [key, reg] : {std::pair<const char*, uint32_t>{"a", col->a}, {"b", col->b}}) {
+    const RectQ& q = conf[reg];
+    const auto& g = st[key]["grid"];
+    EXPECT_NEAR(g[0].get<double>(), q.xlo.approx(), 1e-9) << key;
+    EXPECT_NEAR(g[1].get<double>(), q.xhi.approx(), 1e-9) << key;
+    EXPECT_NEAR(g[2].get<double>(), q.ylo.approx(), 1e-9) << key;
+    EXPECT_NEAR(g[3].get<double>(), q.yhi.approx(), 1e-9) << key;
+    EXPECT_EQ(st[key]["label"].get<std::string>().rfind(region_label(inst, sim.regions(), reg), 0), 0u)
+        << st[key]["label"];
+  }
+  const RectQ &A = conf[col->a], &B = conf[col->b];
+  Rational ox0 = std::max(A.xlo, B.xlo), ox1 = std::min(A.xhi, B.xhi), oy0 = std::max(A.ylo, B.ylo),
+           oy1 = std::min(A.yhi, B.yhi);
+  ASSERT_TRUE(ox0 < ox1 && oy0 < oy1) << "the simulator's regions do not overlap at the stop moment";
+  ASSERT_TRUE(st["overlap"].is_object()) << "the page draws no overlap";
+  const auto& og = st["overlap"]["grid"];
+  EXPECT_NEAR(og[0].get<double>(), ox0.approx(), 1e-9);
+  EXPECT_NEAR(og[1].get<double>(), ox1.approx(), 1e-9);
+  EXPECT_NEAR(og[2].get<double>(), oy0.approx(), 1e-9);
+  EXPECT_NEAR(og[3].get<double>(), oy1.approx(), 1e-9);
+  // In pixels: the shaded element's rendered box is the overlap's box under
+  // the page's transform, it lies in the window (the page centres the
+  // collision), and it is what the browser hits there.
+  const auto& want = st["overlap"]["px"];
+  const auto& drawn = st["overlap"]["drawn"];
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(drawn[i].get<double>(), want[i].get<double>(), 1.0) << i;
+  EXPECT_GT(want[2].get<double>() - want[0].get<double>(), 5.0);
+  EXPECT_GE(want[0].get<double>(), 0.0);
+  EXPECT_LE(want[3].get<double>(), 700.0);
+  EXPECT_EQ(st["overlap"]["at_centre"], "overlap");
+}
 
 TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
   const std::string chromium = chromium_path();
   if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
   std::string dir = test::temp_dir();
-  test::write_file(dir + "/t1", "g1 0\ng2 1/2\n");
-  test::write_file(dir + "/t2", "a 0\nb 1/3\n");
-  std::vector<Case> cases = {
-      {"two growths, continuous", "model-case1-two-growths.grid", {"--times", dir + "/t1"}, {}},
-      {"order gadget, discrete b a", "model-case2-order-gadget.grid", {"--order", "b a"}, {}},
-  };
-  for (auto& c : cases) {
-    SCOPED_TRACE(c.name);
+  {
+    SCOPED_TRACE("two growths, continuous");
+    test::write_file(dir + "/t1", "g1 0\ng2 1/2\n");
     Instance inst;
-    ASSERT_FALSE(read_instance_file(kExamples + c.instance, inst));
-    if (c.schedule_args[0] == "--times") {
-      ASSERT_FALSE(read_times_file(inst, c.schedule_args[1], c.schedule));
-    } else {
-      c.schedule = schedule_from_order({inst.find_coupling("b"), inst.find_coupling("a")});
-    }
-    // What the simulator says, by its own path: the collision, the moment the
-    // page stops at, and both regions' exact rectangles then.
-    Simulator sim(inst);
-    auto col = sim.run(c.schedule).collision;
-    ASSERT_TRUE(col.has_value());
-    ASSERT_EQ(col->kind, Collision::Kind::Node);
-    Rational stop = collision_draw_time(c.schedule, *col);
-    std::vector<RectQ> conf = configuration_at(inst, c.schedule, stop);
-
-    std::vector<std::string> args = {"animate", kExamples + c.instance};
-    args.insert(args.end(), c.schedule_args.begin(), c.schedule_args.end());
-    args.insert(args.end(), {"-o", dir + "/view.html"});
-    auto r = run_gridlock(args);
+    ASSERT_FALSE(read_instance_file(kExamples + "model-case1-two-growths.grid", inst));
+    Schedule s;
+    ASSERT_FALSE(read_times_file(inst, dir + "/t1", s));
+    auto r = run_gridlock({"animate", kExamples + "model-case1-two-growths.grid", "--times", dir + "/t1", "-o",
+                           dir + "/case1.html"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const std::string url = "file://" + dir + "/view.html#t=" + stop.str();
-    const std::string png = dir + "/" + c.instance + ".png";
-    run_chromium(chromium, "--screenshot=" + png, url);
-    EXPECT_TRUE(std::filesystem::exists(png) && std::filesystem::file_size(png) > 1000) << "no screenshot " << png;
-    nlohmann::json st = page_state(run_chromium(chromium, "--dump-dom", url));
-    ASSERT_TRUE(st.is_object()) << "the page wrote no state";
-    EXPECT_TRUE(st["errors"].empty()) << st["errors"].dump();
-    EXPECT_EQ(st["t"], stop.str());
-    // The colliding regions and their overlap, in grid units: as the simulator says.
-    for (auto [key, reg] : {std::pair<const char*, uint32_t>{"a", col->a}, {"b", col->b}}) {
-      const RectQ& q = conf[reg];
-      const auto& g = st[key]["grid"];
-      EXPECT_NEAR(g[0].get<double>(), q.xlo.approx(), 1e-9) << key;
-      EXPECT_NEAR(g[1].get<double>(), q.xhi.approx(), 1e-9) << key;
-      EXPECT_NEAR(g[2].get<double>(), q.ylo.approx(), 1e-9) << key;
-      EXPECT_NEAR(g[3].get<double>(), q.yhi.approx(), 1e-9) << key;
-      EXPECT_EQ(st[key]["label"].get<std::string>().rfind(region_label(inst, sim.regions(), reg), 0), 0u)
-          << st[key]["label"];
-    }
-    const RectQ &A = conf[col->a], &B = conf[col->b];
-    Rational ox0 = std::max(A.xlo, B.xlo), ox1 = std::min(A.xhi, B.xhi), oy0 = std::max(A.ylo, B.ylo),
-             oy1 = std::min(A.yhi, B.yhi);
-    ASSERT_TRUE(ox0 < ox1 && oy0 < oy1) << "the simulator's regions do not overlap at the stop moment";
-    ASSERT_TRUE(st["overlap"].is_object()) << "the page draws no overlap";
-    const auto& og = st["overlap"]["grid"];
-    EXPECT_NEAR(og[0].get<double>(), ox0.approx(), 1e-9);
-    EXPECT_NEAR(og[1].get<double>(), ox1.approx(), 1e-9);
-    EXPECT_NEAR(og[2].get<double>(), oy0.approx(), 1e-9);
-    EXPECT_NEAR(og[3].get<double>(), oy1.approx(), 1e-9);
-    // In pixels: the shaded element's rendered box is the overlap's box under
-    // the page's transform, and it is what the browser hits there.
-    const auto& want = st["overlap"]["px"];
-    const auto& drawn = st["overlap"]["drawn"];
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(drawn[i].get<double>(), want[i].get<double>(), 1.0) << i;
-    EXPECT_GT(want[2].get<double>() - want[0].get<double>(), 5.0);
-    EXPECT_EQ(st["overlap"]["at_centre"], "overlap");
+    expect_collision_drawn(chromium, dir + "/case1.html", inst, s, dir + "/case1.png");
+  }
+  {
+    SCOPED_TRACE("order gadget, discrete b a");
+    Instance inst;
+    ASSERT_FALSE(read_instance_file(kExamples + "model-case2-order-gadget.grid", inst));
+    Schedule s = schedule_from_order({inst.find_coupling("b"), inst.find_coupling("a")});
+    auto r = run_gridlock({"animate", kExamples + "model-case2-order-gadget.grid", "--order", "b a", "-o",
+                           dir + "/case2.html"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    expect_collision_drawn(chromium, dir + "/case2.html", inst, s, dir + "/case2.png");
+  }
+  {
+    // A compiled formula (1 041 nodes): the page verify --pictures writes
+    // beside its still picture, for the all-false schedule of tiny-unsat.
+    SCOPED_TRACE("verify --pictures, tiny-unsat");
+    const std::string cnf = std::string(GRIDLOCK_SOURCE_DIR) + "/examples/formulas/tiny-unsat.cnf";
+    auto r = run_gridlock({"verify", cnf, "--pictures", dir + "/pics"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Formula f;
+    ASSERT_FALSE(read_dimacs_file(cnf, f, {}));
+    VerifyResult v = verify_formula(f, cnf, VerifyOptions{});
+    ASSERT_EQ(v.sat, Tri::No);
+    Schedule s = schedule_from_order(
+        schedule_from_assignment(v.compiled, std::vector<bool>(static_cast<size_t>(v.lsat.num_vars) + 1, false)));
+    expect_collision_drawn(chromium, dir + "/pics/tiny-unsat-collision.html", v.instance(), s, dir + "/unsat.png");
   }
 }
 
