@@ -8,25 +8,6 @@ namespace gridlock {
 
 namespace {
 
-// Exact division of a value that is known to be an integer multiple.
-int64_t exact_div(__int128 a, int64_t b) {
-  if (a % b != 0) throw std::logic_error("animation: keyframe interpolation is not exact");
-  return static_cast<int64_t>(a / b);
-}
-
-// The displacement * D of part p at event index e (any event, not only a key).
-Vec2 disp_at_event(const Animation& a, const Animation::Part& p, uint32_t e) {
-  auto it = std::lower_bound(p.key_event.begin(), p.key_event.end(), e);
-  size_t j = static_cast<size_t>(it - p.key_event.begin());
-  if (j < p.key_event.size() && p.key_event[j] == e) return p.key_disp[j];
-  if (j == 0) return p.key_disp.front();
-  if (j == p.key_event.size()) return p.key_disp.back();
-  const int64_t ta = a.events[p.key_event[j - 1]], tb = a.events[p.key_event[j]], t = a.events[e];
-  const Vec2 va = p.key_disp[j - 1], vb = p.key_disp[j];
-  return {va.x + exact_div(static_cast<__int128>(vb.x - va.x) * (t - ta), tb - ta),
-          va.y + exact_div(static_cast<__int128>(vb.y - va.y) * (t - ta), tb - ta)};
-}
-
 Rational clamp01(const Rational& p) { return p < Rational(0) ? Rational(0) : p > Rational(1) ? Rational(1) : p; }
 
 }  // namespace
@@ -65,7 +46,6 @@ Animation build_animation(const Instance& inst, const Schedule& s) {
   auto event_index = [&](int64_t t) {
     return static_cast<uint32_t>(std::lower_bound(a.events.begin(), a.events.end(), t) - a.events.begin());
   };
-  const uint32_t last = static_cast<uint32_t>(a.events.size() - 1);
 
   // Parts: preorder over the tree, a new part below every cut edge.
   a.part_of_node.assign(inst.num_nodes(), kNone);
@@ -83,38 +63,17 @@ Animation build_animation(const Instance& inst, const Schedule& s) {
       a.part_of_node[w] = a.part_of_node[tree.parent[w]];
     }
   }
-  // Keyframes: the root part stands still; a child part adds its cut edge's
-  // motion to its parent's, so its keys are the parent's plus the start and
-  // end of its own coupling (collinear keys dropped).
-  a.parts[0].key_event = {0, last};
-  a.parts[0].key_disp = {Vec2{0, 0}, Vec2{0, 0}};
-  if (last == 0) a.parts[0].key_event.pop_back(), a.parts[0].key_disp.pop_back();
+  // Keyframes, relative to the parent part: the root part stands still; a
+  // child part moves by its cut edge's vector v while that edge's coupling
+  // runs: 0 at its start, v at its end, linear in between (no other event
+  // changes that velocity).
+  a.parts[0].key_event = {0};
+  a.parts[0].key_disp = {Vec2{0, 0}};
   for (size_t i = 1; i < a.parts.size(); ++i) {
     Animation::Part& p = a.parts[i];
-    const Animation::Part& up = a.parts[p.parent];
     const int64_t Tq = a.start[p.coupling];
-    const Vec2 v = op_child_vector(inst, tree, p.top);
-    std::vector<uint32_t> keys = up.key_event;
-    keys.push_back(event_index(Tq));
-    keys.push_back(event_index(Tq + D));
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    std::vector<Vec2> vals(keys.size());
-    for (size_t j = 0; j < keys.size(); ++j)
-      vals[j] = disp_at_event(a, up, keys[j]) + std::clamp<int64_t>(a.events[keys[j]] - Tq, 0, D) * v;
-    for (size_t j = 0; j < keys.size(); ++j) {
-      if (j > 0 && j + 1 < keys.size()) {
-        // Drop a key that lies on the line through its neighbours.
-        const int64_t t0 = a.events[p.key_event.back()], t1 = a.events[keys[j]], t2 = a.events[keys[j + 1]];
-        const Vec2 v0 = p.key_disp.back(), v1 = vals[j], v2 = vals[j + 1];
-        auto coll = [&](int64_t y0, int64_t y1, int64_t y2) {
-          return static_cast<__int128>(y1 - y0) * (t2 - t1) == static_cast<__int128>(y2 - y1) * (t1 - t0);
-        };
-        if (coll(v0.x, v1.x, v2.x) && coll(v0.y, v1.y, v2.y)) continue;
-      }
-      p.key_event.push_back(keys[j]);
-      p.key_disp.push_back(vals[j]);
-    }
+    p.key_event = {event_index(Tq), event_index(Tq + D)};
+    p.key_disp = {Vec2{0, 0}, D * op_child_vector(inst, tree, p.top)};
   }
   if (a.collision) {
     a.stop = collision_draw_time(s, *a.collision);
@@ -126,8 +85,8 @@ Animation build_animation(const Instance& inst, const Schedule& s) {
 
 RectQ animation_rect(const Instance& inst, const Regions& regions, const Animation& a, uint32_t r, const Rational& t) {
   const Rational T = t * Rational(a.den);  // in units of 1/D
-  auto disp = [&](NodeId w) -> std::pair<Rational, Rational> {
-    const Animation::Part& p = a.parts[a.part_of_node[w]];
+  // A part's displacement relative to its parent at T, from its keys.
+  auto rel = [&](const Animation::Part& p) -> std::pair<Rational, Rational> {
     // j: the last key at or before T (or the first key).
     auto it = std::upper_bound(p.key_event.begin(), p.key_event.end(), T,
                                [&](const Rational& x, uint32_t e) { return x < Rational(a.events[e]); });
@@ -138,6 +97,15 @@ RectQ animation_rect(const Instance& inst, const Regions& regions, const Animati
       Rational f = (T - Rational(ta)) / Rational(tb - ta);
       dx = dx + f * Rational(p.key_disp[j + 1].x - p.key_disp[j].x);
       dy = dy + f * Rational(p.key_disp[j + 1].y - p.key_disp[j].y);
+    }
+    return {dx, dy};
+  };
+  // The absolute displacement: the sum along the chain of parts to the root.
+  auto disp = [&](NodeId w) -> std::pair<Rational, Rational> {
+    Rational dx, dy;
+    for (uint32_t p = a.part_of_node[w]; p != kNone; p = a.parts[p].parent) {
+      auto [rx, ry] = rel(a.parts[p]);
+      dx = dx + rx, dy = dy + ry;
     }
     return {dx / Rational(a.den), dy / Rational(a.den)};
   };

@@ -6,10 +6,13 @@
 // (lattice/simulate.hpp). Cutting the spanning tree (lattice/motion.hpp) at
 // every edge operation's tree edge leaves the rigid parts: the nodes of one
 // part keep their relative positions for the whole schedule, so a player
-// moves parts, not nodes. A part's displacement is piecewise linear; its
-// keyframes are the events where its velocity may change (the starts and
-// ends of the couplings on its path to the root), plus the first and last
-// event. The regions whose width changes (inserted, grown and contracting
+// moves parts, not nodes. Parts form a tree (the part above each cut edge is
+// the parent); a part moves relative to its parent by the cut edge's vector
+// v times its coupling's progress, so its keyframes are two: displacement 0
+// at its coupling's start, v at its end, linear in between. A part's position
+// is the sum along its chain to the root part (which stands still), exactly
+// what nested SVG groups compute; the data stays O(parts) however deep the
+// tree. The regions whose width changes (inserted, grown and contracting
 // nodes) take each face from the part of the node that face follows
 // (RegionShape::ref), plus the growth's progress for a grown node's far face.
 //
@@ -39,8 +42,11 @@ struct Animation {
     NodeId top = kNone;                  // the node just below the cut edge (the root for part 0)
     uint32_t parent = kNone;             // the part above the cut edge (kNone for part 0)
     CouplingId coupling = kNone;         // the cut edge operation's coupling (kNone for part 0)
-    std::vector<uint32_t> key_event;     // indices into events, increasing; first and last event included
-    std::vector<Vec2> key_disp;          // displacement * D at those events
+    // Displacement relative to the parent part, * D, at these events (indices
+    // into events, increasing), linear in between and constant outside:
+    // part 0 {0: (0,0)}; others {start: (0,0), end: D * v}.
+    std::vector<uint32_t> key_event;
+    std::vector<Vec2> key_disp;
   };
   std::vector<Part> parts;               // parents before children
   std::optional<Collision> collision;    // the simulator's first collision
@@ -48,12 +54,11 @@ struct Animation {
   // still pictures draw it (half way from its start to the next event, where
   // the overlap shows and motion is still linear).
   Rational stop;
-  size_t keyframes() const;              // total over the parts
+  size_t keyframes() const;              // total over the parts (at most 2 per part)
 };
 
 // Runs the simulator on s and builds the keyframes. Requires
-// check_schedule_bounds(inst, s) to pass. O(n + e log e + K) for K keyframes
-// (K <= sum over parts of 2 * (cut edges above it) + 2).
+// check_schedule_bounds(inst, s) to pass. O(n + e log e) plus the simulator.
 Animation build_animation(const Instance& inst, const Schedule& s);
 
 // The moment at which a collision is drawn: half way from c.time to the next
@@ -61,8 +66,9 @@ Animation build_animation(const Instance& inst, const Schedule& s);
 Rational collision_draw_time(const Schedule& s, const Collision& c);
 
 // Region r's exact rectangle at time t computed from the keyframes alone
-// (what the player draws, in exact arithmetic). t is clamped to the events.
-// O(log K) per face. Tests compare it with configuration_at.
+// (what the player draws, in exact arithmetic): relative displacements
+// summed along the chain of parts. O(depth) per face. Tests compare it with
+// configuration_at.
 RectQ animation_rect(const Instance& inst, const Regions& regions, const Animation& a, uint32_t r, const Rational& t);
 
 }  // namespace gridlock

@@ -173,6 +173,38 @@ TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
     expect_collision_drawn(chromium, dir + "/case2.html", inst, s, dir + "/case2.png");
   }
   {
+    // A deep part tree: a row of 2k+1 nodes with an expansion on every
+    // other edge (k nested parts), hanging from a second row at its left
+    // end; a node hangs from the second row just past the first row's right
+    // end. Two expansions push the row into it.
+    SCOPED_TRACE("chain of 150 nested parts");
+    const int k = 150, N = 2 * k;
+    std::string g = "p grid " + std::to_string((N + 1) + (N + 3) + 1) + " " + std::to_string(N + (N + 2) + 2) + " " +
+                    std::to_string(k) + " 0\n";
+    for (int x = 0; x <= N; ++x) g += "n " + std::to_string(x) + " 0\n";
+    for (int x = 0; x <= N + 2; ++x) g += "n " + std::to_string(x) + " 1\n";
+    g += "n " + std::to_string(N + 2) + " 0\n";
+    for (int x = 0; x < N; ++x) g += "e " + std::to_string(x) + " 0 " + std::to_string(x + 1) + " 0\n";
+    for (int x = 0; x < N + 2; ++x) g += "e " + std::to_string(x) + " 1 " + std::to_string(x + 1) + " 1\n";
+    g += "e 0 0 0 1\ne " + std::to_string(N + 2) + " 1 " + std::to_string(N + 2) + " 0\n";
+    for (int i = 0; i < k; ++i) g += "o a" + std::to_string(i) + " expand " + std::to_string(2 * i) + " 0 +x\n";
+    test::write_file(dir + "/chain.grid", g);
+    Instance inst;
+    ASSERT_FALSE(read_instance_file(dir + "/chain.grid", inst));
+    std::vector<CouplingId> order;
+    std::string names;
+    for (int i = k - 1; i >= 0; --i) {
+      order.push_back(inst.find_coupling("a" + std::to_string(i)));
+      names += "a" + std::to_string(i) + " ";
+    }
+    Schedule s = schedule_from_order(order);
+    Animation a = build_animation(inst, s);
+    EXPECT_EQ(a.parts.size(), static_cast<size_t>(k) + 1);
+    auto r = run_gridlock({"animate", dir + "/chain.grid", "--order", names, "-o", dir + "/chain.html"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    expect_collision_drawn(chromium, dir + "/chain.html", inst, s, dir + "/chain.png");
+  }
+  {
     // A compiled formula (1 041 nodes): the page verify --pictures writes
     // beside its still picture, for the all-false schedule of tiny-unsat.
     SCOPED_TRACE("verify --pictures, tiny-unsat");

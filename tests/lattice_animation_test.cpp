@@ -95,10 +95,10 @@ TEST(AnimationTwin, KeyframesAgreeWithConfigurationAt) {
   EXPECT_GT(compared, static_cast<size_t>(cases) * 20);
 }
 
-// Parts are the components of the tree cut at the edge operations, each a
-// whole subtree minus sub-parts; keyframes are at most 2 per cut above a part
-// plus 2, and consecutive keys are distinct events.
-TEST(AnimationParts, PartitionAndKeyframeBound) {
+// Parts are the components of the tree cut at the edge operations; each
+// part but the root has two keyframes, relative to its parent: 0 at its
+// coupling's start, its cut edge's vector at its end.
+TEST(AnimationParts, PartitionAndRelativeKeyframes) {
   const int cases = test::scaled(500);
   const uint64_t seed0 = test::base_seed(1);
   for (int i = 0; i < cases; ++i) {
@@ -119,16 +119,15 @@ TEST(AnimationParts, PartitionAndKeyframeBound) {
         EXPECT_EQ(a.part_of_node[w], a.part_of_node[t.parent[w]]);
       }
     }
-    for (size_t p = 0; p < a.parts.size(); ++p) {
+    EXPECT_LE(a.keyframes(), 2 * a.parts.size());
+    for (size_t p = 1; p < a.parts.size(); ++p) {
       const auto& part = a.parts[p];
-      size_t depth = 0;
-      for (uint32_t q = static_cast<uint32_t>(p); a.parts[q].parent != kNone; q = a.parts[q].parent) ++depth;
-      EXPECT_LE(part.key_event.size(), 2 * depth + 2);
-      EXPECT_TRUE(std::is_sorted(part.key_event.begin(), part.key_event.end()));
-      EXPECT_EQ(std::adjacent_find(part.key_event.begin(), part.key_event.end()), part.key_event.end());
-      if (p > 0) {
-        EXPECT_LT(part.parent, p);
-      }
+      EXPECT_LT(part.parent, p);
+      ASSERT_EQ(part.key_event.size(), 2u);
+      EXPECT_EQ(a.events[part.key_event[0]], a.start[part.coupling]);
+      EXPECT_EQ(a.events[part.key_event[1]], a.start[part.coupling] + a.den);
+      EXPECT_EQ(part.key_disp[0], (Vec2{0, 0}));
+      EXPECT_EQ(part.key_disp[1], a.den * op_child_vector(inst, t, part.top));
     }
   }
 }

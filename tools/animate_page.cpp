@@ -95,7 +95,9 @@ function fracStr(T) {  // an event time T (in 1/D units) as a reduced fraction
   a /= k; b /= k;
   return b === 1 ? String(a) : a + '/' + b;
 }
-// Rigid parts: keyframes (event time, displacement), linear in between.
+// Rigid parts: keyframes (event time, displacement relative to the parent
+// part), linear in between; a part's position is the sum along its chain,
+// which nested SVG groups compute for the drawing.
 const parts = G.parts.map(a => {
   const p = { parent: a[0], q: a[1], ke: [], kx: [], ky: [], g: null, dx: NaN, dy: NaN };
   for (let i = 2; i < a.length; i += 3) { p.ke.push(EV[a[i]]); p.kx.push(a[i + 1] / D); p.ky.push(a[i + 2] / D); }
@@ -112,18 +114,35 @@ function disp(p, T) {
   return [p.kx[lo] + f * (p.kx[hi] - p.kx[lo]), p.ky[lo] + f * (p.ky[hi] - p.ky[lo])];
 }
 const partOf = G.part_of_node;
+// Absolute displacements of all parts at T (parents come before children);
+// a few recent times are kept.
+const absCache = new Map();
+function absAt(T) {
+  let v = absCache.get(T);
+  if (v) return v;
+  const ax = new Float64Array(parts.length), ay = new Float64Array(parts.length);
+  parts.forEach((p, i) => {
+    const d = disp(p, T);
+    ax[i] = d[0] + (p.parent >= 0 ? ax[p.parent] : 0);
+    ay[i] = d[1] + (p.parent >= 0 ? ay[p.parent] : 0);
+  });
+  if (absCache.size >= 4) absCache.clear();
+  v = [ax, ay];
+  absCache.set(T, v);
+  return v;
+}
 const cellX = i => G.cells[2 * i], cellY = i => G.cells[2 * i + 1];
 // Resizing regions: [r, kind, op, base0..3, ref0..3, growFace, growSign].
 const resizing = new Map();
 for (const a of G.resizing) resizing.set(a[0], { r: a[0], kind: a[1], op: a[2], base: a.slice(3, 7), ref: a.slice(7, 11), gf: a[11], gs: a[12], el: null });
 const progress = (q, T) => Math.min(1, Math.max(0, (T - G.start[q]) / D));
 function regionRect(r, T) {  // [xlo, xhi, ylo, yhi] in grid units
-  const z = resizing.get(r);
-  if (!z) { const d = disp(parts[partOf[r]], T); return [cellX(r) + d[0], cellX(r) + 1 + d[0], cellY(r) + d[1], cellY(r) + 1 + d[1]]; }
+  const z = resizing.get(r), A = absAt(T);
+  if (!z) { const dx = A[0][partOf[r]], dy = A[1][partOf[r]]; return [cellX(r) + dx, cellX(r) + 1 + dx, cellY(r) + dy, cellY(r) + 1 + dy]; }
   const c = [0, 0, 0, 0];
   for (let f = 0; f < 4; ++f) {
-    const d = disp(parts[partOf[z.ref[f]]], T);
-    c[f] = z.base[f] + (f < 2 ? d[0] : d[1]);
+    const q = partOf[z.ref[f]];
+    c[f] = z.base[f] + (f < 2 ? A[0][q] : A[1][q]);
     if (z.kind === 2 && f === z.gf) c[f] += z.gs * progress(G.ops[z.op][4], T);
   }
   return c;
@@ -164,7 +183,7 @@ for (let i = 0; i < G.edges.length; i += 2) {
 const nodesOf = parts.map(() => []);
 for (let w = 0; w < N; ++w) if (!resizing.has(w)) nodesOf[partOf[w]].push(w);
 parts.forEach((p, i) => {
-  p.g = el('g', {}, world);
+  p.g = el('g', {}, p.parent >= 0 ? parts[p.parent].g : world);
   const E = edgesOf[i];
   for (let j = 0; j < E.length; j += 2)
     el('line', { class: 'e', x1: cellX(E[j]) + .5, y1: cellY(E[j]) + .5, x2: cellX(E[j + 1]) + .5, y2: cellY(E[j + 1]) + .5 }, p.g);
@@ -175,7 +194,7 @@ parts.forEach((p, i) => {
 });
 const zg = el('g', {}, world);
 for (const z of resizing.values()) { z.el = el('rect', { class: z.r < N ? 'n' : 'z', rx: .05 }, zg); styleRegion(z.el, z.r); }
-const anchorDot = el('circle', { r: .13, cx: cellX(G.anchor) + .25, cy: cellY(G.anchor) + .75, fill: '#000' }, parts[partOf[G.anchor]].g);
+el('circle', { r: .13, cx: cellX(G.anchor) + .25, cy: cellY(G.anchor) + .75, fill: '#000' }, parts[partOf[G.anchor]].g);
 const overlap = el('rect', { id: 'overlap', visibility: 'hidden' }, world);
 let ALL = null, VB = null, lastOv = null;
 const T0 = EV[0], TSTOP = parseQ(G.stop), TC = G.collision ? parseQ(G.collision.time) : null;
@@ -185,13 +204,23 @@ const T0 = EV[0], TSTOP = parseQ(G.stop), TC = G.collision ? parseQ(G.collision.
   let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
   const pb = parts.map(() => [Infinity, -Infinity, Infinity, -Infinity]);
   for (let w = 0; w < N; ++w) { const b = pb[partOf[w]]; b[0] = Math.min(b[0], cellX(w)); b[1] = Math.max(b[1], cellX(w) + 1); b[2] = Math.min(b[2], cellY(w)); b[3] = Math.max(b[3], cellY(w) + 1); }
+  // A part's offset lies between its chain's sums of the smallest and of the
+  // largest relative keyframe.
+  const lo = parts.map(() => [0, 0]), hi = parts.map(() => [0, 0]);
   parts.forEach((p, i) => {
+    const up = p.parent >= 0 ? p.parent : -1;
+    lo[i] = [(up >= 0 ? lo[up][0] : 0) + Math.min(...p.kx), (up >= 0 ? lo[up][1] : 0) + Math.min(...p.ky)];
+    hi[i] = [(up >= 0 ? hi[up][0] : 0) + Math.max(...p.kx), (up >= 0 ? hi[up][1] : 0) + Math.max(...p.ky)];
     const b = pb[i];
     if (b[0] === Infinity) return;
-    x0 = Math.min(x0, b[0] + Math.min(...p.kx)); x1 = Math.max(x1, b[1] + Math.max(...p.kx));
-    y0 = Math.min(y0, b[2] + Math.min(...p.ky)); y1 = Math.max(y1, b[3] + Math.max(...p.ky));
+    x0 = Math.min(x0, b[0] + lo[i][0]); x1 = Math.max(x1, b[1] + hi[i][0]);
+    y0 = Math.min(y0, b[2] + lo[i][1]); y1 = Math.max(y1, b[3] + hi[i][1]);
   });
-  for (const z of resizing.values()) { x0 = Math.min(x0, z.base[0] - 1); x1 = Math.max(x1, z.base[1] + 1); y0 = Math.min(y0, z.base[2] - 1); y1 = Math.max(y1, z.base[3] + 1); }
+  for (const z of resizing.values()) {
+    const q = partOf[z.ref[0]];
+    x0 = Math.min(x0, z.base[0] - 1 + lo[q][0]); x1 = Math.max(x1, z.base[1] + 1 + hi[q][0]);
+    y0 = Math.min(y0, z.base[2] - 1 + lo[q][1]); y1 = Math.max(y1, z.base[3] + 1 + hi[q][1]);
+  }
   const m = 0.6;
   ALL = [x0 - m, -y1 - m, x1 - x0 + 2 * m, y1 - y0 + 2 * m];
   svg.setAttribute('preserveAspectRatio', 'xMidYMid meet');
