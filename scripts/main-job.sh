@@ -3,7 +3,8 @@
 # bundled formulas (examples/formulas: small SAT and UNSAT ones and SATLIB
 # uf20-91 samples). Prints the table (CaDiCaL vs exact discrete solver vs
 # gap checker, certificates checked), then writes pictures of the small
-# compiled instances and their witness schedules (or a collision) to out/.
+# compiled instances and their witness schedules (or a collision) to out/,
+# each with an animation beside it (NAME.html: open it in a browser).
 #   MAIN_JOB_TIMEOUT  seconds the exact solver may spend per formula (default 60)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,4 +18,11 @@ for kind in variable clause order; do
   build/gridlock gadget "$kind" -o "out/gadget-$kind.grid" --svg "out/pictures/gadget-$kind.svg"
 done
 build/gridlock gen-instances -o out/instances --vars 8 --threshold 4 --lsat 2 --seed 1 | tail -n 1
-echo "pictures: $(ls out/pictures | wc -l) SVG files in out/pictures (open them in a browser)"
+echo "== animations of the worked cases of the model"
+build/gridlock animate examples/instances/model-case2-order-gadget.grid --order "b a" \
+  -o out/pictures/model-case2-order-gadget-collision.html | tail -n 2
+printf 'g1 0\ng2 1/2\n' > out/model-case1-times.txt
+build/gridlock animate examples/instances/model-case1-two-growths.grid --times out/model-case1-times.txt \
+  -o out/pictures/model-case1-two-growths-collision.html | tail -n 2
+echo "pictures: $(ls out/pictures/*.svg | wc -l) SVG files and $(ls out/pictures/*.html | wc -l) animations" \
+  "(self-contained HTML) in out/pictures (open them in a browser)"

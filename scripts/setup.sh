@@ -16,6 +16,7 @@ PACKAGES=(
   libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
   chromium                                  # headless browser for the viewer's page tests
   clang-format clang-tidy                   # scripts/lint.sh
+  parallel                                  # GNU parallel: the sharded-campaign recipe test
 )
 
 missing=()

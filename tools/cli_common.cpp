@@ -19,6 +19,7 @@
 #include "common/limits.hpp"
 #include "lattice/grid_format.hpp"
 #include "reductions/compile.hpp"
+#include "tools/options.hpp"
 
 namespace gridlock::cli {
 
@@ -114,6 +115,14 @@ bool parse_args_one_input(const std::vector<std::string>& args, const po::option
   po::positional_options_description pos;
   pos.add(input_name.c_str(), 1);
   return parse_args(args, visible, pos, vm, usage, description, &hidden);
+}
+
+void parse_shard(const std::string& text, uint64_t& k, uint64_t& n) {
+  const size_t slash = text.find('/');
+  if (slash == std::string::npos) throw UserError("--shard: want K/N with 0 <= K < N, not '" + text + "'");
+  k = parse_count("shard", text.substr(0, slash), 0);
+  n = parse_count("shard", text.substr(slash + 1), 1);
+  if (k >= n) throw UserError("--shard: want K/N with 0 <= K < N, not '" + text + "'");
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

@@ -47,6 +47,9 @@ bool parse_args_one_input(const std::vector<std::string>& args, const po::option
                           const std::string& input_name, po::variables_map& vm, const std::string& usage,
                           const std::string& description, const po::options_description* extra_hidden = nullptr);
 
+// Parses "--shard K/N" (0 <= K < N) or throws UserError naming the option.
+void parse_shard(const std::string& text, uint64_t& k, uint64_t& n);
+
 // Writes text to path ("-" = stdout) or throws UserError. A file is written
 // atomically and checked (common/atomic_file.hpp): a temporary file in the
 // same folder renamed into place; a full disk is

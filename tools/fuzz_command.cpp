@@ -15,6 +15,7 @@
 #include "cnf/dimacs.hpp"
 #include "common/limits.hpp"
 #include "reductions/fuzz.hpp"
+#include "tools/animate_page.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
@@ -54,7 +55,8 @@ int run_fuzz(const std::vector<std::string>& args) {
     ("max-states", po::value<std::string>()->default_value("2000000"), "search nodes the exact solver may visit per formula")
     ("out", po::value<std::string>()->default_value("fuzz-failures"), "folder for shrunk counterexamples")
     ("keep-going", "do not stop at the first disagreement")
-    ("json", "print one JSON object at the end instead of c/s lines");
+    ("json", "print one JSON object at the end instead of c/s lines")
+    ("json-out", po::value<std::string>(), "also write that JSON object to this file ('gridlock merge' combines shards)");
   po::options_description hidden;
   hidden.add_options()("break-gadget", po::value<std::string>()->default_value("none"),
                        "self-test: compile with a broken gadget, so that the fuzzer must find it");
@@ -78,14 +80,7 @@ int run_fuzz(const std::vector<std::string>& args) {
     throw UserError("--min-vars and --max-vars: need 1 <= min <= max <= 64");
   p.kinds = parse_kinds(vm["kinds"].as<std::string>());
   uint64_t shard = 0, shards = 1;
-  {
-    const std::string s = vm["shard"].as<std::string>();
-    const size_t slash = s.find('/');
-    if (slash == std::string::npos) throw UserError("--shard: want K/N with 0 <= K < N, not '" + s + "'");
-    shard = cli::parse_count("shard", s.substr(0, slash), 0);
-    shards = cli::parse_count("shard", s.substr(slash + 1), 1);
-    if (shard >= shards) throw UserError("--shard: want K/N with 0 <= K < N, not '" + s + "'");
-  }
+  cli::parse_shard(vm["shard"].as<std::string>(), shard, shards);
   VerifyOptions vo;
   vo.solve_seconds = cli::seconds_arg(vm, "timeout");
   vo.max_states = cli::count_arg(vm, "max-states", 1);
@@ -155,6 +150,7 @@ int run_fuzz(const std::vector<std::string>& args) {
                               std::to_string(i);
       write_reproducer(rs, dir, vo);
       cli::write_text_file(dir + "/original.cnf", to_dimacs(f));
+      write_result_animations(rs, dir);  // watch the disagreeing schedules run
       std::string replay = "gridlock fuzz --seed " + std::to_string(p.seed) + " --index " + std::to_string(i) +
                            " --min-vars " + std::to_string(p.min_vars) + " --max-vars " + std::to_string(p.max_vars) +
                            " --kinds " + vm["kinds"].as<std::string>() +
@@ -180,21 +176,28 @@ int run_fuzz(const std::vector<std::string>& args) {
   }
   if (progress) std::cerr << "\r\033[K";
   const bool interrupted = stop_requested();
+  nlohmann::json j;
+  j["command"] = "fuzz";
+  j["seed"] = std::to_string(p.seed);  // a string: seeds above 2^53 survive JSON readers
+  j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
+  j["formulas"] = done;
+  j["sat"] = sat;
+  j["unsat"] = unsat;
+  j["unknown"] = unknown;
+  j["certificates_checked"] = certificates;
+  j["disagreements"] = disagreements;
+  j["seconds"] = elapsed();
+  j["findings"] = findings;
+  j["status"] = disagreements ? "DISAGREE" : "AGREE";
+  j["interrupted"] = interrupted;
+  // The campaign's settings, so that 'gridlock merge' only combines shards of one campaign.
+  j["campaign"] = {{"count", vm.count("count") ? nlohmann::json(last) : nlohmann::json()},
+                   {"time", time_limit}, {"index", vm.count("index") ? nlohmann::json(first) : nlohmann::json()},
+                   {"min_vars", p.min_vars}, {"max_vars", p.max_vars}, {"kinds", vm["kinds"].as<std::string>()},
+                   {"max_states", vo.max_states}, {"keep_going", vm.count("keep-going") > 0},
+                   {"break_gadget", mutation_name(*mutation)}};
+  if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), j.dump(2) + "\n");
   if (json) {
-    nlohmann::json j;
-    j["command"] = "fuzz";
-    j["seed"] = std::to_string(p.seed);  // a string: seeds above 2^53 survive JSON readers
-    j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
-    j["formulas"] = done;
-    j["sat"] = sat;
-    j["unsat"] = unsat;
-    j["unknown"] = unknown;
-    j["certificates_checked"] = certificates;
-    j["disagreements"] = disagreements;
-    j["seconds"] = elapsed();
-    j["findings"] = findings;
-    j["status"] = disagreements ? "DISAGREE" : "AGREE";
-    j["interrupted"] = interrupted;
     std::cout << j.dump() << std::endl;
   } else {
     std::cout << "c " << status_line() << "\n";

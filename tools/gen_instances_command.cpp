@@ -62,6 +62,21 @@ void prepare_output_folder(const std::string& out, bool force) {
     if (!fs::remove(p, ec) || ec) throw UserError(Diagnostic{p.string(), 0, "cannot remove: " + ec.message()});
 }
 
+// A sharded run shares its folder with the other shards of the set: the
+// folder may hold their files, but not this shard's manifest (a shard
+// written twice), unless force, which removes that manifest first.
+void prepare_shard_folder(const std::string& out, const std::string& manifest_name, bool force) {
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
+  fs::create_directories(out, ec);
+  if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder: " + ec.message()});
+  const fs::path manifest = fs::path(out) / manifest_name;
+  if (!fs::exists(manifest, ec)) return;
+  if (!force)
+    throw UserError(Diagnostic{manifest.string(), 0, "this shard was already written here (give --force to write it again)"});
+  if (!fs::remove(manifest, ec) || ec) throw UserError(Diagnostic{manifest.string(), 0, "cannot remove: " + ec.message()});
+}
+
 struct Source {
   std::string name, origin;  // file stem, how it was made
   Formula formula;
@@ -87,7 +102,12 @@ int run_gen_instances(const std::vector<std::string>& args) {
                                      "with --yes/--no, formulas are drawn until both are met")
     ("timeout", po::value<std::string>()->default_value("60"),
      "seconds CaDiCaL may spend labelling one formula; a formula not decided in time is skipped (noted)")
-    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)");
+    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)")
+    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: make only the instances i (given ones first, then "
+                                                             "threshold, then lsat) with i % N == K; the manifest is then "
+                                                             "manifest-shard-K-of-N.json, and shards may share a folder "
+                                                             "(not with --yes/--no)")
+    ("json-out", po::value<std::string>(), "also write the manifest to this file ('gridlock merge' combines shards)");
   po::positional_options_description pos;
   po::variables_map vm;
   if (!cli::parse_args(args, opts, pos, vm, "gen-instances -o DIR [--threshold N] [--lsat N] [--vars V] [--formula F]...",
@@ -110,6 +130,9 @@ int run_gen_instances(const std::vector<std::string>& args) {
   const int want_no = vm.count("no") ? cli::int_arg(vm, "no", 0, 1'000'000) : -1;
   const double timeout = cli::seconds_arg(vm, "timeout");
   const bool mix = want_yes >= 0 || want_no >= 0;
+  uint64_t shard = 0, shards = 1;
+  cli::parse_shard(vm["shard"].as<std::string>(), shard, shards);
+  if (mix && shards > 1) throw UserError("--shard cannot be combined with --yes/--no (they draw until counts are met)");
 
   std::vector<Source> given;
   if (vm.count("formula"))
@@ -117,7 +140,13 @@ int run_gen_instances(const std::vector<std::string>& args) {
       given.push_back({"given-" + fs::path(path).stem().string(), "given " + path,
                        cli::load_formula(path, true, cli::FormulaUse::Compile), 0});
 
-  prepare_output_folder(out, vm.count("force") > 0);
+  const std::string manifest_name = shards == 1 ? "manifest.json"
+                                                : "manifest-shard-" + std::to_string(shard) + "-of-" +
+                                                      std::to_string(shards) + ".json";
+  if (shards == 1)
+    prepare_output_folder(out, vm.count("force") > 0);
+  else
+    prepare_shard_folder(out, manifest_name, vm.count("force") > 0);
   const bool progress = isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
@@ -127,7 +156,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
   nlohmann::json entries = nlohmann::json::array();
   int yes = 0, no = 0;
   // Labels one formula; returns false if --yes/--no say it is not wanted.
-  auto label = [&](const Source& s, bool random) {
+  auto label = [&](const Source& s, bool random, uint64_t index) {
     if (progress)
       std::cerr << "\r\033[Kgen-instances: " << entries.size() << " written (" << yes << " YES, " << no
                 << " NO), labelling " << s.name << ", " << static_cast<uint64_t>(elapsed()) << " s" << std::flush;
@@ -148,6 +177,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
     LsatReduction red = reduce_to_lsat(s.formula);
     CompiledFormula c = compile_formula(red.output());
     nlohmann::json e;
+    e["index"] = index;  // position in the unsharded set
     e["name"] = s.name;
     e["instance"] = s.name + ".grid";
     e["formula"] = s.name + ".cnf";
@@ -188,15 +218,14 @@ int run_gen_instances(const std::vector<std::string>& args) {
     return true;
   };
 
-  for (const Source& s : given) {
-    if (stop_requested()) break;
-    label(s, false);
-  }
+  for (size_t i = 0; i < given.size() && !stop_requested(); ++i)
+    if (i % shards == shard) label(given[i], false, i);
   // Random formulas. Formula j of a kind has seed fuzz_formula_seed(seed, j).
-  auto draw = [&](const std::string& kind, int count) {
+  auto draw = [&](const std::string& kind, int count, uint64_t offset) {
     int made = 0;
     const int limit = mix ? 100 * std::max(count, 1) : count;  // attempts
     for (int j = 0; j < limit && made < count && !stop_requested(); ++j) {
+      if ((offset + static_cast<uint64_t>(j)) % shards != shard) continue;
       Source s;
       s.seed = fuzz_formula_seed(seed, static_cast<uint64_t>(j) + (kind == "lsat" ? 1'000'000'000ull : 0));
       if (kind == "threshold") {
@@ -217,11 +246,11 @@ int run_gen_instances(const std::vector<std::string>& args) {
         s.origin = "random LSAT<=3, n=" + std::to_string(vars) + ", m=" + std::to_string(l.m);
       }
       s.name = kind + "-" + std::to_string(j + 1);
-      made += label(s, true);
+      made += label(s, true, offset + static_cast<uint64_t>(j));
     }
   };
-  draw("threshold", threshold_count);
-  draw("lsat", lsat_count);
+  draw("threshold", threshold_count, given.size());
+  draw("lsat", lsat_count, given.size() + static_cast<uint64_t>(threshold_count));
   const bool interrupted = stop_requested();
 
   nlohmann::json manifest;
@@ -233,10 +262,13 @@ int run_gen_instances(const std::vector<std::string>& args) {
   manifest["no"] = no;
   manifest["skipped"] = skipped;
   manifest["interrupted"] = interrupted;
+  manifest["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
+  if (!mix) manifest["planned"] = given.size() + static_cast<size_t>(threshold_count) + static_cast<size_t>(lsat_count);
   manifest["instances"] = entries;
-  write("manifest.json", manifest.dump(2) + "\n");  // last: it lists only files already in place
+  write(manifest_name, manifest.dump(2) + "\n");  // last: it lists only files already in place
+  if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), manifest.dump(2) + "\n");
   std::cout << "c wrote " << entries.size() << " instances (" << yes << " YES, " << no << " NO) and " << out
-            << "/manifest.json" << std::endl;
+            << "/" << manifest_name << std::endl;
   if (interrupted) {
     std::cout << "c INTERRUPTED by signal " << stop_signal().load() << ": the manifest lists the " << entries.size()
               << " instances finished" << std::endl;

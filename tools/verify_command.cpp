@@ -16,6 +16,7 @@
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/verify.hpp"
+#include "tools/animate_page.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
@@ -86,10 +87,12 @@ void draw(const VerifyResult& r, const std::string& dir) {
     wo.collision = &*res.collision;
     wo.title = stem(r.name) + ": UNSAT; the all-false schedule collides";
     cli::write_text_file(base + "-collision.svg", render_svg(inst, wo));
+    write_animation(base + "-collision.html", inst, s, wo.title);
   } else {
     wo.time = Rational(static_cast<int64_t>(order.size()));
     wo.title = stem(r.name) + ": witness schedule, done";
     cli::write_text_file(base + "-witness.svg", render_svg(inst, wo));
+    write_animation(base + "-witness.html", inst, s, stem(r.name) + ": witness schedule");
   }
 }
 
@@ -106,7 +109,9 @@ int run_verify(const std::vector<std::string>& args) {
     ("pictures", po::value<std::string>(), "draw each compiled instance of at most --picture-nodes nodes, and its "
                                            "witness (or a collision), into this folder")
     ("picture-nodes", po::value<std::string>()->default_value("1500"), "largest instance drawn by --pictures")
-    ("json", "print one JSON object instead of the table");
+    ("json", "print one JSON object instead of the table")
+    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: check only the formulas i (in input order) with i % N == K")
+    ("json-out", po::value<std::string>(), "also write the JSON object to this file ('gridlock merge' combines shards)");
   po::options_description hidden;
   hidden.add_options()
     ("inputs", po::value<std::vector<std::string>>()->required(), "formulas")
@@ -136,6 +141,8 @@ int run_verify(const std::vector<std::string>& args) {
   opt.mutation = *mutation;
   const bool json = vm.count("json") > 0;
   std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
+  uint64_t shard = 0, shards = 1;
+  cli::parse_shard(vm["shard"].as<std::string>(), shard, shards);
   // Read everything first: a bad file is reported before any work is done.
   std::vector<Formula> formulas;
   for (const auto& f : files) formulas.push_back(cli::load_formula(f, true, cli::FormulaUse::Compile));
@@ -153,6 +160,7 @@ int run_verify(const std::vector<std::string>& args) {
   double total_ms = 0;
   size_t done = 0;
   for (size_t i = 0; i < files.size() && !stop_requested(); ++i) {
+    if (i % shards != shard) continue;
     cli::Activity act(files[i], "verifying the formula");
     VerifyResult r = verify_formula(formulas[i], files[i], opt);
     if (stop_requested()) break;  // its answers may be cut short: not counted
@@ -173,14 +181,15 @@ int run_verify(const std::vector<std::string>& args) {
       ++agree;
     }
     if (vm.count("pictures") && r.nodes <= picture_nodes) draw(r, vm["pictures"].as<std::string>());
-    if (json) {
-      rows.push_back({{"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
+    if (json || vm.count("json-out")) {
+      rows.push_back({{"index", i}, {"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
                       {"reduced", r.reduced}, {"nodes", r.nodes}, {"operations", r.ops}, {"couplings", r.couplings},
                       {"max_coupling", r.max_coupling}, {"sat", tri_name(r.sat)}, {"discrete", tri_name(r.discrete)},
                       {"continuous", tri_name(r.continuous)}, {"witnesses_checked", r.witnesses_checked()},
                       {"solver_states", r.solver_states}, {"ms_sat", r.ms_sat}, {"ms_compile", r.ms_compile},
                       {"ms_solve", r.ms_solve}, {"ms_gaps", r.ms_gaps}, {"status", status}, {"problem", r.problem}});
-    } else {
+    }
+    if (!json) {
       std::string name = stem(files[i]);
       if (name.size() > static_cast<size_t>(w - 1)) name = name.substr(0, static_cast<size_t>(w - 2)) + "~";
       out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(8)
@@ -200,16 +209,18 @@ int run_verify(const std::vector<std::string>& args) {
                         fmt_ms(total_ms / 1000) + " s";
   if (interrupted)
     summary += "; INTERRUPTED by signal " + std::to_string(stop_signal().load()) + " after " + std::to_string(done) +
-               " of " + std::to_string(files.size()) + " formulas";
+               " formulas";
+  nlohmann::json j;
+  j["command"] = "verify";
+  j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
+  j["inputs"] = files.size();
+  j["formulas"] = rows;
+  j["summary"] = {{"formulas", done}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
+                  {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
+  j["interrupted"] = interrupted;
+  j["exit_code"] = interrupted ? cli::interrupted_exit_code() : disagree ? 1 : 0;
+  if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), j.dump(2) + "\n");
   if (json) {
-    nlohmann::json j;
-    j["command"] = "verify";
-    j["formulas"] = rows;
-    j["summary"] = {{"formulas", done}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
-                    {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
-    j["interrupted"] = interrupted;
-    j["formulas_given"] = files.size();
-    j["exit_code"] = interrupted ? cli::interrupted_exit_code() : disagree ? 1 : 0;
     out << j.dump() << std::endl;
   } else {
     out << "summary: " << summary << std::endl;
