@@ -1,0 +1,80 @@
+// The exact solver of Continuous Collision-free Schedule (MODEL.md,
+// "Couplings and schedules"): is there a start time t_q per coupling q (q runs
+// over [t_q, t_q + 1], couplings may overlap) that performs every operation
+// with no collision?
+//
+// Any instance: all four directions, expansions, contractions, growths,
+// cycles, couplings of any size. docs/solver.md ("Continuous model") explains
+// the method, why it is exact, its limits and measured figures.
+//
+// Pipeline:
+//  1. horizontal-only instances: the linear gap checker (solver/gaps.hpp);
+//     YES with every coupling at time 0, or NO;
+//  2. otherwise the collision constraints of build_pair_constraints
+//     (solver/constraints.hpp): every pair of regions that can come close,
+//     with up to eight linear forms f_i = s_i + sum_q c_iq p_q, and a
+//     collision of the pair at t iff every f_i(t) > 0. With progress
+//     p_q(t) = clamp(t - t_q, 0, 1) the same forms describe the continuous
+//     model. Plus the cycle constraints of FaceNets: around every face,
+//     sum_q p_q(t) net_q == 0 for all t, i.e. the couplings with a non-zero
+//     net, grouped by equal start time, sum to zero in every group;
+//  3. couplings that share no constraint are independent: union-find splits
+//     them into components, each decided on its own;
+//  4. per component, cheap sufficient test first: starting all of it at once
+//     (one progress p for all) is checked exactly; if it is collision-free,
+//     every start time is 0;
+//  5. otherwise Z3 (QF_LRA, exact rationals) decides the component: start
+//     times t_q in [0, k] (k couplings; idle time can always be cut out),
+//     and per pair a cover of the time axis by at most 4r - 2 segments
+//     (r couplings in the pair) with switch times as auxiliary variables,
+//     each segment assigned one form that is <= 0 on it (checked at its ends
+//     and at every event t_q, t_q + 1 inside it: the forms are piecewise
+//     linear with breakpoints at the events). One-form pairs (gaps) need no
+//     segments: f <= 0 at every event. Per pair and per linear piece between
+//     events, two forms always suffice (the set where a form is <= 0 is a
+//     prefix or a suffix of the piece), so the cover exists iff the pair never
+//     overlaps: the encoding is exact, not a relaxation;
+//  6. a YES schedule is shifted so that its minimum is 0 and replayed by the
+//     exact Simulator before it is returned; if the simulator disagrees,
+//     solve_continuous throws std::logic_error (a bug, never a silent wrong
+//     answer).
+//
+// Limits: SolveOptions::seconds is passed to Z3 as the remaining time per
+// component; SolveOptions::max_states bounds the sum of Z3 conflicts (a
+// component that needs more stops with Unknown). A Z3 model whose start
+// times do not fit kMaxStartTime / kMaxDenominator (lattice/schedule.hpp)
+// gives Unknown (never observed; the model's values are vertices of small
+// integer systems). SolveOptions::engine is ignored.
+//
+// Sizes measured (docs/performance.md): chains of separation constraints
+// t_b >= t_a + 1 (compiled-formula shape, 3-operation couplings in gadget
+// rows) and random instances; see the bench figures there.
+//
+// Requirements: inst is a valid Instance (InstanceBuilder guarantees it).
+#pragma once
+
+#include "lattice/instance.hpp"
+#include "lattice/schedule.hpp"
+#include "solver/solve.hpp"
+
+namespace gridlock {
+
+struct ContinuousResult {
+  SolveResult::Status status = SolveResult::Status::Unknown;
+  Schedule schedule;  // Yes: a start time per coupling (exact rationals), accepted by the Simulator
+  SolveStats stats;   // engine name, counts, seconds
+};
+
+// Decides Continuous Collision-free Schedule exactly (any instance), or
+// Unknown on a limit of opt. stats.engine: "gaps" (horizontal-only),
+// "trivial" (no constraint needs Z3), "z3". stats.constraints: pair and
+// cycle constraints built; stats.decisions / refuted: Z3 decisions and
+// conflicts summed over the components; stats.states: components solved by
+// Z3; stats.safe_moves: components settled by the all-at-once test.
+ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {});
+
+// Steps 2-6 alone, on any instance (horizontal-only ones too, where tests
+// and benchmarks compare it with check_gaps). Same contract.
+ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt = {});
+
+}  // namespace gridlock
