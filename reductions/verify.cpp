@@ -98,9 +98,11 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
   if (r.continuous_solver == Tri::Yes) {
     r.csolver_times = times_of(inst, cr.schedule);
     // The solver replays its schedule itself; replay it here too, then lift.
-    bool ok = !check_schedule_bounds(inst, cr.schedule) && !sim.run(cr.schedule).collision;
-    if (ok) ok = satisfies(r.source, red.lift_to_source(assignment_from_times(c, cr.schedule)));
-    r.csolver_witness = ok ? Check::Valid : Check::Invalid;
+    if (check_schedule_bounds(inst, cr.schedule) || sim.run(cr.schedule).collision)
+      r.csolver_issue = "the continuous solver's start times collide in the simulator";
+    else if (!satisfies(r.source, red.lift_to_source(assignment_from_times(c, cr.schedule))))
+      r.csolver_issue = "the continuous solver's start times lift to an assignment that falsifies the formula";
+    r.csolver_witness = r.csolver_issue.empty() ? Check::Valid : Check::Invalid;
   }
 }
 
@@ -110,9 +112,7 @@ void append_continuous_problems(const VerifyResult& r, F&& problem) {
     problem(std::string("exact continuous solver says ") + tri_name(r.continuous_solver) + ", CaDiCaL says " +
             (r.sat == Tri::Yes ? "SAT" : "UNSAT"));
   if (r.csat_witness == Check::Invalid) problem("the SAT model's start times collide in the simulator (continuous)");
-  if (r.csolver_witness == Check::Invalid)
-    problem("the continuous solver's start times collide in the simulator or lift to an assignment that falsifies "
-            "the formula");
+  if (r.csolver_witness == Check::Invalid) problem(r.csolver_issue);
 }
 
 }  // namespace

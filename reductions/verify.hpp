@@ -75,6 +75,7 @@ struct VerifyResult {
   Tri continuous_solver = Tri::Unknown;  // the exact continuous solver on it
   Check csat_witness = Check::None;      // F's model -> start times -> simulator
   Check csolver_witness = Check::None;   // solver's start times -> simulator -> assignment -> F
+  std::string csolver_issue;             // why csolver_witness is Invalid
   std::vector<std::string> csat_times, csolver_times;  // "NAME TIME" lines
   size_t cnodes = 0;
   double ms_csolve = 0;
@@ -85,6 +86,10 @@ struct VerifyResult {
   std::string problem;  // what disagreed, if anything
   // Number of certificates checked and valid (for the table).
   int witnesses_checked() const;
+  // Some exact solver that ran hit a limit (UNKNOWN).
+  bool solver_unknown() const {
+    return (ran_discrete && discrete == Tri::Unknown) || (ran_continuous && continuous_solver == Tri::Unknown);
+  }
 };
 
 // Runs the whole check. Never throws for a valid formula (validate(f)

@@ -166,8 +166,7 @@ int run_verify(const std::vector<std::string>& args) {
     sat += r.sat == Tri::Yes;
     unsat += r.sat == Tri::No;
     total_ms += r.ms_sat + r.ms_compile + r.ms_solve + r.ms_gaps + r.ms_csolve;
-    const bool unknown_answer = (with_discrete && r.discrete == Tri::Unknown) ||
-                                (with_continuous && r.continuous_solver == Tri::Unknown);
+    const bool unknown_answer = r.solver_unknown();
     std::string status = r.agree ? (unknown_answer ? "unknown" : "agree") : "DISAGREE";
     if (!r.agree) {
       ++disagree;
