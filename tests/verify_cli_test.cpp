@@ -275,3 +275,39 @@ TEST(FuzzContinuousCli, FindsAndShrinksABrokenSeparationGadget) {
 
 }  // namespace
 }  // namespace gridlock
+
+namespace gridlock {
+namespace {
+
+// gen-instances --model both: every continuous YES label is confirmed by its
+// start times through `gridlock check --times`, every NO by `cnf solve`; the
+// continuous instance differs from the discrete one by the separation gadget.
+TEST(GenInstancesContinuousCli, LabelsAreConfirmed) {
+  std::string dir = test::temp_dir();
+  auto r = run_gridlock({"gen-instances", "-o", dir, "--model", "both", "--vars", "5", "--threshold", "3", "--lsat",
+                         "1", "--seed", "4", "--formula", kExamples + "/tiny-unsat.cnf"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto m = nlohmann::json::parse(test::read_file(dir + "/manifest.json"));
+  EXPECT_EQ(m["model"], "both");
+  ASSERT_EQ(m["instances"].size(), 10u);  // 5 formulas, 2 models
+  int continuous = 0;
+  for (const auto& e : m["instances"]) {
+    const std::string name = e["name"];
+    SCOPED_TRACE(name);
+    const std::string inst = dir + "/" + e["instance"].get<std::string>();
+    ASSERT_TRUE(fs::exists(inst));
+    if (e["model"] != "continuous") continue;
+    ++continuous;
+    EXPECT_NE(test::read_file(inst).find(" +y"), std::string::npos);  // the separation gadget's lift
+    if (e["answer"] == "YES") {
+      auto c = run_gridlock({"check", inst, "--times", dir + "/" + e["certificate"]["file"].get<std::string>()});
+      EXPECT_EQ(c.exit_code, 10) << c.out;
+    } else {
+      EXPECT_EQ(run_gridlock({"cnf", "solve", dir + "/" + e["formula"].get<std::string>()}).exit_code, 20);
+    }
+  }
+  EXPECT_EQ(continuous, 5);
+}
+
+}  // namespace
+}  // namespace gridlock

@@ -1,5 +1,6 @@
 // gridlock gen-instances: a labelled benchmark set of lattice instances of
-// Discrete Collision-free Schedule, each answer certified (docs/verify.md):
+// Discrete (and/or, --model, Continuous) Collision-free Schedule, each answer
+// certified (docs/verify.md):
 // YES by a schedule the simulator has accepted, NO by CaDiCaL's UNSAT of the
 // source formula (the reduction preserves satisfiability: docs/gadgets.md,
 // and verify/fuzz test it).
@@ -44,7 +45,10 @@ int run_gen_instances(const std::vector<std::string>& args) {
     ("yes", po::value<int>()->default_value(-1), "keep only this many YES instances of the random ones (-1: all)")
     ("no", po::value<int>()->default_value(-1), "keep only this many NO instances of the random ones (-1: all); "
                                                "with --yes/--no, formulas are drawn until both are met")
-    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)");
+    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)")
+    ("model", po::value<std::string>()->default_value("discrete"),
+     "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both\n"
+     "(NAME.grid and NAME-continuous.grid)");
   po::positional_options_description pos;
   po::variables_map vm;
   if (!cli::parse_args(args, opts, pos, vm, "gen-instances -o DIR [--threshold N] [--lsat N] [--vars V] [--formula F]...",
@@ -52,7 +56,9 @@ int run_gen_instances(const std::vector<std::string>& args) {
                        "random LSAT<=3, or given) goes through to-lsat and the gadget compiler. Labels are certified:\n"
                        "YES with a witness schedule (CaDiCaL's model lifted, accepted by the exact simulator, saved\n"
                        "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source.\n"
-                       "manifest.json lists every instance with its answer, certificate, sizes and seed.",
+                       "manifest.json lists every instance with its answer, certificate, sizes and seed.\n"
+                       "--model continuous: instances of Continuous Collision-free Schedule (compile --model\n"
+                       "continuous); YES certified by start times (NAME.times, for 'gridlock check --times').",
                        nullptr))
     return 0;
   const std::string out = vm["out"].as<std::string>();
@@ -61,6 +67,12 @@ int run_gen_instances(const std::vector<std::string>& args) {
   if (vars < 3 || vars > 1000) throw UserError("--vars must be 3 to 1000");
   const int want_yes = vm["yes"].as<int>(), want_no = vm["no"].as<int>();
   const bool mix = want_yes >= 0 || want_no >= 0;
+  const std::string model_name = vm["model"].as<std::string>();
+  if (model_name != "discrete" && model_name != "continuous" && model_name != "both")
+    throw UserError("--model must be discrete, continuous or both, not '" + model_name + "'");
+  std::vector<ReductionModel> models;
+  if (model_name != "continuous") models.push_back(ReductionModel::Discrete);
+  if (model_name != "discrete") models.push_back(ReductionModel::Continuous);
 
   std::vector<Source> given;
   if (vm.count("formula"))
@@ -81,44 +93,61 @@ int run_gen_instances(const std::vector<std::string>& args) {
     if (random && mix && ((is_yes && want_yes >= 0 && yes >= want_yes) || (!is_yes && want_no >= 0 && no >= want_no)))
       return false;
     LsatReduction red = reduce_to_lsat(s.formula);
-    CompiledFormula c = compile_formula(red.output());
-    nlohmann::json e;
-    e["name"] = s.name;
-    e["instance"] = s.name + ".grid";
-    e["formula"] = s.name + ".cnf";
-    e["origin"] = s.origin;
-    if (s.seed) e["seed"] = s.seed;
-    e["variables"] = s.formula.num_vars;
-    e["clauses"] = s.formula.clauses.size();
-    e["lsat_variables"] = red.output().num_vars;
-    e["lsat_clauses"] = red.output().clauses.size();
-    e["nodes"] = c.stats.nodes;
-    e["operations"] = c.stats.ops;
-    e["couplings"] = c.stats.couplings;
-    e["max_coupling"] = c.stats.max_coupling;
-    if (is_yes) {
-      std::vector<CouplingId> order = schedule_from_assignment(c, red.lift_to_target(sat.model));
-      Simulator sim(c.instance);
-      if (sim.run_order(order).collision)
-        throw std::logic_error("the lifted schedule of " + s.name + " collides: the reduction is wrong here");
-      std::string text;
-      for (CouplingId q : order) text += c.instance.couplings()[q].name + "\n";
-      write(s.name + ".schedule", text);
-      e["answer"] = "YES";
-      e["certificate"] = {{"kind", "schedule"}, {"file", s.name + ".schedule"}, {"checked_by", "gridlock simulator"}};
-      ++yes;
-    } else {
-      e["answer"] = "NO";
-      e["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
-      ++no;
+    for (ReductionModel model : models) {
+      const bool cont = model == ReductionModel::Continuous;
+      // With both models the continuous files get a suffix.
+      const std::string name = s.name + (cont && models.size() == 2 ? "-continuous" : "");
+      CompiledFormula c = compile_formula(red.output(), Mutation::None, model);
+      nlohmann::json e;
+      e["name"] = name;
+      e["model"] = reduction_model_name(model);
+      e["instance"] = name + ".grid";
+      e["formula"] = s.name + ".cnf";
+      e["origin"] = s.origin;
+      if (s.seed) e["seed"] = s.seed;
+      e["variables"] = s.formula.num_vars;
+      e["clauses"] = s.formula.clauses.size();
+      e["lsat_variables"] = red.output().num_vars;
+      e["lsat_clauses"] = red.output().clauses.size();
+      e["nodes"] = c.stats.nodes;
+      e["operations"] = c.stats.ops;
+      e["couplings"] = c.stats.couplings;
+      e["max_coupling"] = c.stats.max_coupling;
+      if (is_yes) {
+        Simulator sim(c.instance);
+        std::string text, file;
+        if (cont) {
+          Schedule times = times_from_assignment(c, red.lift_to_target(sat.model));
+          if (sim.run(times).collision)
+            throw std::logic_error("the lifted start times of " + name + " collide: the reduction is wrong here");
+          for (CouplingId q = 0; q < c.instance.couplings().size(); ++q)
+            text += c.instance.couplings()[q].name + " " + times.start[q].str() + "\n";
+          file = name + ".times";
+          e["certificate"] = {{"kind", "start times"}, {"file", file}, {"checked_by", "gridlock simulator"}};
+        } else {
+          std::vector<CouplingId> order = schedule_from_assignment(c, red.lift_to_target(sat.model));
+          if (sim.run_order(order).collision)
+            throw std::logic_error("the lifted schedule of " + name + " collides: the reduction is wrong here");
+          for (CouplingId q : order) text += c.instance.couplings()[q].name + "\n";
+          file = name + ".schedule";
+          e["certificate"] = {{"kind", "schedule"}, {"file", file}, {"checked_by", "gridlock simulator"}};
+        }
+        write(file, text);
+        e["answer"] = "YES";
+      } else {
+        e["answer"] = "NO";
+        e["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
+      }
+      std::ostringstream grid;
+      write_instance(grid, c.instance, {name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
+                                        std::string("answer: ") + (is_yes ? "YES" : "NO")});
+      write(name + ".grid", grid.str());
+      entries.push_back(e);
+      std::cout << "c " << name << ": " << (is_yes ? "YES" : "NO") << ", " << c.stats.nodes << " nodes, "
+                << c.stats.couplings << " couplings" << std::endl;
     }
-    std::ostringstream grid;
-    write_instance(grid, c.instance, {s.name + ": " + s.origin, std::string("answer: ") + (is_yes ? "YES" : "NO")});
-    write(s.name + ".grid", grid.str());
+    (is_yes ? yes : no) += 1;
     write(s.name + ".cnf", to_dimacs(s.formula));
-    entries.push_back(e);
-    std::cout << "c " << s.name << ": " << (is_yes ? "YES" : "NO") << ", " << c.stats.nodes << " nodes, "
-              << c.stats.couplings << " couplings" << std::endl;
     return true;
   };
 
@@ -156,7 +185,13 @@ int run_gen_instances(const std::vector<std::string>& args) {
 
   nlohmann::json manifest;
   manifest["generator"] = "gridlock gen-instances";
-  manifest["problem"] = "Discrete Collision-free Schedule (is there an order of the couplings with no collision?)";
+  manifest["problem"] =
+      model_name == "discrete"
+          ? "Discrete Collision-free Schedule (is there an order of the couplings with no collision?)"
+      : model_name == "continuous"
+          ? "Continuous Collision-free Schedule (are there start times of the couplings with no collision?)"
+          : "Discrete and Continuous Collision-free Schedule (entry field 'model')";
+  manifest["model"] = model_name;
   manifest["seed"] = seed;
   manifest["vars"] = vars;
   manifest["yes"] = yes;
