@@ -4,6 +4,7 @@
 // ways, and the broken separation gadget changing the answer for real.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "cnf/brute_force.hpp"
@@ -12,6 +13,7 @@
 #include "cnf/generate.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
+#include "solver/continuous.hpp"
 #include "support/cnf_testing.hpp"
 #include "support/test_scale.hpp"
 
@@ -164,6 +166,59 @@ TEST(CompileContinuous, LooseSeparationChangesTheAnswer) {
   s.start.assign(bad.instance.couplings().size(), Rational(0));
   EXPECT_FALSE(collides(bad, s));
   EXPECT_TRUE(collides(compile_formula(f, Mutation::None, kCont), s));
+}
+
+}  // namespace
+}  // namespace gridlock
+
+namespace gridlock {
+namespace {
+
+// The exact continuous solver on compiled formulas: every formula over one
+// variable, and every 20th formula over two variables with 1 to 4 distinct
+// clauses (the whole two-variable sweep, 162 formulas, takes 10 minutes:
+// `gridlock verify --model continuous`, docs/verify.md). The answer is the
+// formula's, a YES's start times pass the simulator and lift to a satisfying
+// assignment.
+TEST(CompileContinuous, ExactContinuousSolverOnSmallFormulas) {
+  std::vector<std::vector<int>> clauses;  // the 8 non-empty, non-tautological clauses over 2 variables
+  for (int mask = 1; mask < 9; ++mask) {
+    std::vector<int> cl;
+    for (int v = 1, x = mask; v <= 2; ++v, x /= 3)
+      if (x % 3) cl.push_back(x % 3 == 1 ? v : -v);
+    clauses.push_back(cl);
+  }
+  std::vector<Formula> sweep = {test::make_formula(1, {{1}}), test::make_formula(1, {{-1}}),
+                                test::make_formula(1, {{1}, {-1}})};
+  std::vector<Formula> two;
+  for (uint32_t set = 1; set < 256; ++set) {
+    if (__builtin_popcount(set) > 4) continue;
+    Formula f = test::make_formula(2, {});
+    for (size_t i = 0; i < 8; ++i)
+      if (set >> i & 1) f.clauses.push_back(clauses[i]);
+    two.push_back(f);
+  }
+  ASSERT_EQ(two.size(), 162u);
+  const size_t step = static_cast<size_t>(std::max(20, 20 * 1000 / test::scaled(1000)));
+  for (size_t i = 0; i < two.size(); i += step) sweep.push_back(two[i]);
+  int yes = 0, no = 0;
+  for (const Formula& f : sweep) {
+    SCOPED_TRACE(to_dimacs(f));
+    CompiledFormula c = compile_formula(f, Mutation::None, kCont);
+    const bool is_sat = exhaustive_sat(f).status == SatResult::Sat;
+    ContinuousResult r = solve_continuous(c.instance);
+    ASSERT_NE(r.status, SolveResult::Status::Unknown);
+    ASSERT_EQ(r.status == SolveResult::Status::Yes, is_sat);
+    if (is_sat) {
+      ++yes;
+      EXPECT_FALSE(collides(c, r.schedule));
+      EXPECT_TRUE(satisfies(f, assignment_from_times(c, r.schedule)));
+    } else {
+      ++no;
+    }
+  }
+  EXPECT_GT(yes, 0);
+  EXPECT_GT(no, 0);
 }
 
 }  // namespace
