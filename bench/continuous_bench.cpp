@@ -88,3 +88,4 @@ BENCHMARK(BM_TwinRandom)->Arg(3)->Arg(5)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace gridlock
+BENCHMARK_MAIN();

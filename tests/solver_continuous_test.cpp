@@ -11,7 +11,9 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
+#include "solver/constraints.hpp"
 #include "solver/continuous.hpp"
+#include "solver/continuous_pairs.hpp"
 #include "solver/gaps.hpp"
 #include "solver/solve.hpp"
 #include "support/instance_io.hpp"
@@ -242,6 +244,74 @@ TEST(ContinuousRandom, DiscreteYesImpliesContinuousYes) {
     }
   }
   EXPECT_GT(discrete_yes, test::scaled(150));
+}
+
+// The two pair encodings (difference bounds from free_offsets vs the segment
+// cover for every pair) agree, on instances larger than the twin's.
+TEST(ContinuousRandom, PairEncodingsAgree) {
+  const uint64_t seed0 = test::base_seed(31337);
+  int yes = 0, no = 0;
+  for (const Family& fam : families()) {
+    RandomInstanceParams p = fam.p;
+    p.nodes += 3, p.ops += 2;
+    for (int i = 0; i < test::scaled(100); ++i) {
+      uint64_t seed = seed0 + static_cast<uint64_t>(i);
+      Instance inst = random_instance(p, seed);
+      ContinuousResult a = solve_continuous_general(inst, {}, PairEncoding::Auto);
+      ContinuousResult b = solve_continuous_general(inst, {}, PairEncoding::Segments);
+      ASSERT_EQ(a.status, b.status) << fam.name << " seed " << seed << "\n" << text_of(inst);
+      (a.status == Status::Yes ? yes : no)++;
+    }
+  }
+  EXPECT_GT(yes, test::scaled(100));
+  EXPECT_GT(no, test::scaled(100));
+}
+
+// free_offsets against the simulator: two couplings, no cycle, coupling 1
+// started at offset d (small denominators, and next to every interval end):
+// the schedule is collision-free iff d lies in the free offsets of every pair.
+TEST(ContinuousPairs, FreeOffsetsMatchTheSimulator) {
+  const uint64_t seed0 = test::base_seed(555);
+  RandomInstanceParams p;
+  p.nodes = 7, p.ops = 3, p.max_coupling = 2;
+  int tested = 0, both = 0;
+  for (int i = 0; i < test::scaled(400); ++i) {
+    uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    Instance inst = random_instance(p, seed);
+    if (inst.couplings().size() != 2 || !FaceNets::build(inst).faces.empty()) continue;
+    SpanningTree tree = SpanningTree::build(inst);
+    ConstraintSystem sys = build_pair_constraints(inst, tree);
+    std::vector<std::vector<OffsetInterval>> iv;
+    std::vector<Rational> probes;
+    for (int num = -30; num <= 30; ++num) probes.push_back(Rational(num, 10)), probes.push_back(Rational(num, 7));
+    for (auto& c : sys.constraints) {
+      if (c.rel.size() != 2) {
+        iv.push_back({});  // one coupling: free at every offset or at none
+        if (pair_free_at_offset(c, Rational(0))) iv.back().push_back({});
+        continue;
+      }
+      ASSERT_EQ(c.rel[0], 0u);
+      iv.push_back(free_offsets(c));
+      for (auto& x : iv.back())
+        for (auto& e : {x.lo, x.hi})
+          if (e) probes.push_back(*e), probes.push_back(*e + Rational(1, 1000)), probes.push_back(*e - Rational(1, 1000));
+    }
+    Simulator sim(inst);
+    for (const Rational& d : probes) {
+      Schedule s;
+      s.start = {Rational(0), d};
+      if (d < Rational(0)) s.start = {Rational(0) - d, Rational(0)};
+      bool free = true;
+      for (auto& ivs : iv) free = free && std::any_of(ivs.begin(), ivs.end(), [&](auto& x) { return x.contains(d); });
+      bool sim_free = !sim.run(s).collision;
+      ASSERT_EQ(sim_free, free) << "seed " << seed << " offset " << d.str() << "\n" << text_of(inst);
+      ++tested;
+      both += free;
+    }
+  }
+  EXPECT_GT(tested, test::scaled(400) * 5);
+  EXPECT_GT(both, tested / 10);
+  EXPECT_LT(both, tested - tested / 10);
 }
 
 // Horizontal-only: the general path equals the linear gap checker, also on
