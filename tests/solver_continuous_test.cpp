@@ -121,14 +121,25 @@ TEST(ContinuousModelCases, VerticalSeparationNeedsOrder) {
   EXPECT_EQ(test::reference_continuous(inst), std::optional<bool>(true));
 }
 
-TEST(ContinuousLimits, MaxStatesGivesUnknownOrAnswer) {
-  // A limit never turns an answer into a wrong one: Unknown, or the same answer.
-  Instance inst = parse_instance(kBlockTwoCouplings);
+// Two separation gadgets whose couplings wait for each other (NO, by Z3).
+const char* kMutualWait =
+    "p grid 9 8 4 2\nn 0 0\nn 0 1\nn 1 0\nn 1 1\nn 2 0\nn 3 0\nn 3 1\nn 4 0\nn 4 1\n"
+    "e 0 0 1 0\ne 1 0 2 0\ne 2 0 3 0\ne 3 0 4 0\ne 0 0 0 1\ne 1 0 1 1\ne 3 0 3 1\ne 4 0 4 1\n"
+    "o a0 contract 0 0 +y\no b0 grow 1 1 -x\no a1 contract 3 0 +y\no b1 grow 4 1 -x\n"
+    "q P a0 b1\nq Q a1 b0\n";
+
+TEST(ContinuousLimits, TimeoutGivesUnknownNeverAWrongAnswer) {
+  Instance inst = parse_instance(kMutualWait);
+  ContinuousResult full = solve_continuous(inst);
+  EXPECT_EQ(full.status, Status::No);
+  EXPECT_EQ(full.stats.engine, "z3");
+  EXPECT_EQ(solve_continuous_general(inst, {}, PairEncoding::Segments).status, Status::No);
+  EXPECT_EQ(test::reference_continuous(inst), std::optional<bool>(false));
   SolveOptions o;
-  o.max_states = 1;
+  o.seconds = 1e-9;  // passed before Z3 is asked
   ContinuousResult r = solve_continuous(inst, o);
-  EXPECT_NE(r.status, Status::No);
-  if (r.status == Status::Yes) expect_witness(inst, r);
+  EXPECT_EQ(r.status, Status::Unknown);
+  EXPECT_TRUE(r.schedule.start.empty());
 }
 
 // --- Random instances against the twin ----------------------------------
