@@ -34,7 +34,8 @@ void BM_ContinuousChain(benchmark::State& state) {
   report(state, inst, r);
 }
 BENCHMARK(BM_ContinuousChain)
-    ->ArgsProduct({{4, 16, 64, 256, 1024}, {0, 1}})
+    ->ArgsProduct({{1, 2, 4, 8, 16, 64, 256, 1024, 4096}, {0}})
+    ->ArgsProduct({{4, 16, 64, 256, 1024}, {1}})
     ->Unit(benchmark::kMillisecond);
 
 void BM_TwinChain(benchmark::State& state) {
@@ -45,18 +46,17 @@ void BM_TwinChain(benchmark::State& state) {
   }
   state.counters["couplings"] = static_cast<double>(inst.couplings().size());
 }
-BENCHMARK(BM_TwinChain)->ArgsProduct({{1, 2, 4}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TwinChain)->ArgsProduct({{1, 2, 4, 8}, {0}})->Unit(benchmark::kMillisecond);
 
-// k couplings: 3k nodes, k single operations, 10% extra edges; 20 seeds per
+// k couplings: 4k nodes (sparse trees), k single operations; 20 seeds per
 // iteration (the mean per instance is time / 20).
 std::vector<Instance> random_set(int64_t k) {
   std::vector<Instance> v;
   RandomInstanceParams p;
-  p.nodes = static_cast<uint32_t>(3 * k);
+  p.nodes = static_cast<uint32_t>(4 * k);
   p.ops = static_cast<uint32_t>(k);
   p.max_coupling = 1;
-  p.extra_edge_percent = 10;
-  p.spread = 1;
+  p.spread = 2;
   for (uint64_t s = 0; s < 20; ++s) v.push_back(random_instance(p, 1000 + s));
   return v;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,7 @@
 #include "lattice/motion.hpp"
 #include "lattice/simulate.hpp"
 #include "solver/constraints.hpp"
+#include "solver/continuous_pairs.hpp"
 #include "solver/gaps.hpp"
 
 namespace gridlock {
@@ -47,8 +49,10 @@ struct Component {
 class ComponentEncoder {
  public:
   ComponentEncoder(z3::context& ctx, z3::solver& s, const Component& comp, const ConstraintSystem& sys,
-                   const FaceNets& faces, std::vector<int>& var_of)
-      : ctx_(ctx), s_(s), comp_(comp), sys_(sys), faces_(faces), var_of_(var_of) {}
+                   const FaceNets& faces, std::vector<int>& var_of, PairEncoding encoding,
+                   std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& offsets_cache)
+      : ctx_(ctx), s_(s), comp_(comp), sys_(sys), faces_(faces), var_of_(var_of), encoding_(encoding),
+        cache_(offsets_cache) {}
 
   void encode() {
     const int64_t k = static_cast<int64_t>(comp_.couplings.size());
@@ -89,8 +93,32 @@ class ComponentEncoder {
     return sum;
   }
 
+  z3::expr rational(const Rational& v) { return ctx_.real_val(v.str().c_str()); }
+
   void encode_pair(const CollisionConstraint& c) {
     const size_t r = c.rel.size();
+    if (encoding_ == PairEncoding::Auto && r == 1) {
+      if (!pair_free_at_offset(c, Rational(0))) s_.add(ctx_.bool_val(false));
+      return;
+    }
+    if (encoding_ == PairEncoding::Auto && r == 2) {
+      // Identical pairs (same forms) are common in gadget rows: cache.
+      std::vector<int64_t> key(c.base);
+      key.insert(key.end(), c.coef.begin(), c.coef.end());
+      key.push_back(c.num_forms);
+      auto it = cache_.find(key);
+      if (it == cache_.end()) it = cache_.emplace(std::move(key), free_offsets(c)).first;
+      z3::expr d = time_of(c.rel[1]) - time_of(c.rel[0]);
+      z3::expr_vector options(ctx_);
+      for (const OffsetInterval& iv : it->second) {
+        z3::expr in = ctx_.bool_val(true);
+        if (iv.lo) in = in && d >= rational(*iv.lo);
+        if (iv.hi) in = in && d <= rational(*iv.hi);
+        options.push_back(in);
+      }
+      s_.add(z3::mk_or(options));  // false if empty
+      return;
+    }
     // Events: t_q and t_q + 1 of the pair's couplings.
     std::vector<z3::expr> ev;
     std::vector<CouplingId> ev_q;
@@ -160,6 +188,8 @@ class ComponentEncoder {
   const ConstraintSystem& sys_;
   const FaceNets& faces_;
   std::vector<int>& var_of_;
+  PairEncoding encoding_;
+  std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& cache_;
   std::vector<z3::expr> t_;
   uint64_t counter_ = 0;
 };
@@ -203,7 +233,7 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt)
   }
 }
 
-ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt) {
+ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt, PairEncoding encoding) {
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   ContinuousResult res;
@@ -235,6 +265,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   res.schedule.start.assign(k, Rational(0));
   z3::context ctx;
   std::vector<int> var_of(k, -1);
+  std::map<std::vector<int64_t>, std::vector<OffsetInterval>> offsets_cache;
   bool unknown = false, needed_z3 = false;
   uint64_t conflicts = 0;
   for (const Component& comp : comps) {
@@ -254,7 +285,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     needed_z3 = true;
     ++res.stats.states;
     z3::solver s(ctx, "QF_LRA");
-    ComponentEncoder enc(ctx, s, comp, sys, faces, var_of);
+    ComponentEncoder enc(ctx, s, comp, sys, faces, var_of, encoding, offsets_cache);
     enc.encode();
     if (opt.seconds > 0) {
       double left = opt.seconds - elapsed();

@@ -24,8 +24,11 @@
 //     (one progress p for all) is checked exactly; if it is collision-free,
 //     every start time is 0;
 //  5. otherwise Z3 (QF_LRA, exact rationals) decides the component: start
-//     times t_q in [0, k] (k couplings; idle time can always be cut out),
-//     and per pair a cover of the time axis by at most 4r - 2 segments
+//     times t_q in [0, k] (k couplings; idle time can always be cut out).
+//     A pair of two couplings depends only on the offset of their start
+//     times; its collision-free offsets are computed exactly beforehand
+//     (solver/continuous_pairs.hpp) and asserted as difference bounds. A
+//     pair of three or more couplings gets a cover of the time axis by at most 4r - 2 segments
 //     (r couplings in the pair) with switch times as auxiliary variables,
 //     each segment assigned one form that is <= 0 on it (checked at its ends
 //     and at every event t_q, t_q + 1 inside it: the forms are piecewise
@@ -73,8 +76,17 @@ struct ContinuousResult {
 // Z3; stats.safe_moves: components settled by the all-at-once test.
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {});
 
+// How the general path encodes a pair constraint for Z3. Auto: a pair of
+// one coupling is decided at once; a pair of two couplings becomes "the
+// offset of their start times lies in one of these closed intervals"
+// (free_offsets, solver/continuous_pairs.hpp: difference bounds, which Z3
+// handles in near-linear time); larger pairs get the segment cover.
+// Segments: the segment cover for every pair (tests compare the two).
+enum class PairEncoding { Auto, Segments };
+
 // Steps 2-6 alone, on any instance (horizontal-only ones too, where tests
 // and benchmarks compare it with check_gaps). Same contract.
-ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt = {});
+ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt = {},
+                                          PairEncoding encoding = PairEncoding::Auto);
 
 }  // namespace gridlock
