@@ -21,6 +21,8 @@
 // arm, and the leftmost node of each gadget row is rigidly joined to the
 // gadget's attach node, so the gap between the spine and a gadget never
 // changes and no two gadgets share a row: gadgets cannot interfere.
+// (The continuous model's separation gadget lifts two of its nodes into the
+// empty row above it, columns 2 and 3, where nothing else ever is.)
 //
 // Sizes for n >= 1 variables, m clauses, L literal occurrences, G = 3n + 2m - 1
 // gadgets (2n + m - 1 of them order gadgets):
