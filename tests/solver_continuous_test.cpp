@@ -163,6 +163,31 @@ TEST(ContinuousLimits, TimeoutGivesUnknownNeverAWrongAnswer) {
   EXPECT_TRUE(r.schedule.start.empty());
 }
 
+// --max-states bounds Z3's conflicts: a run that needs more stops with
+// Unknown; otherwise the answer is the unlimited one.
+TEST(ContinuousLimits, MaxStatesBoundsZ3Conflicts) {
+  const uint64_t seed0 = test::base_seed(1000);
+  int limited = 0;
+  for (int i = 0; i < 60; ++i) {  // not scaled: the seeds that need Z3 conflicts are few
+    uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    RandomInstanceParams p;
+    p.nodes = 40, p.ops = 10, p.spread = 2;
+    Instance inst = random_instance(p, seed);
+    ContinuousResult full = solve_continuous(inst);
+    SolveOptions o;
+    o.max_states = 1;
+    ContinuousResult lim = solve_continuous(inst, o);
+    if (lim.status != Status::Unknown) {
+      EXPECT_EQ(lim.status, full.status) << "seed " << seed;
+      EXPECT_LE(lim.stats.refuted, 1u) << "seed " << seed;
+    } else {
+      ++limited;
+      EXPECT_TRUE(lim.schedule.start.empty());
+    }
+  }
+  EXPECT_GE(limited, 1);
+}
+
 // --- Random instances against the twin ----------------------------------
 
 struct Family {
