@@ -60,6 +60,13 @@ TEST(SolveContinuousCommand, ExamplesAndExitCodes) {
   EXPECT_TRUE(has_line(both.out, "v a 0") && has_line(both.out, "v b 0")) << both.out;
   test::write_file(dir + "/t", both.out);
   EXPECT_EQ(run_gridlock({"check", kExamples + "model-case2-order-gadget.grid", "--times", dir + "/t"}).exit_code, 10);
+  // The continuous examples: answers stated in their comments.
+  auto sep = run_gridlock({"solve", kExamples + "continuous-separation.grid", "--model", "continuous"});
+  EXPECT_EQ(sep.exit_code, 10) << sep.err;
+  EXPECT_TRUE(has_line(sep.out, "v a 0") && has_line(sep.out, "v b 1")) << sep.out;
+  auto block = run_gridlock({"solve", kExamples + "continuous-block-two-couplings.grid", "--model", "continuous"});
+  EXPECT_EQ(block.exit_code, 10) << block.err;
+  EXPECT_EQ(run_gridlock({"solve", kExamples + "continuous-block-two-couplings.grid"}).exit_code, 20);
 }
 
 // The block with its two expansions in separate couplings: no order works,
