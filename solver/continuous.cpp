@@ -4,6 +4,7 @@
 #include <chrono>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +37,18 @@ bool pair_free_all_at_once(const CollisionConstraint& c) {
   for (size_t j = 0; j < c.rel.size(); ++j)
     for (uint32_t i = 0; i < c.num_forms; ++i) sum[i] += c.coef_of(j)[i];
   return !step_collides(c.base.data(), sum.data(), c.num_forms);
+}
+
+// True iff f_i + f_j > 0 everywhere on the progress cube for every two forms
+// (its minimum over the cube is at a vertex: base + the negative coefficients).
+bool forms_never_both_nonpositive(const CollisionConstraint& c) {
+  for (uint32_t i = 0; i < c.num_forms; ++i)
+    for (uint32_t j = i + 1; j < c.num_forms; ++j) {
+      int64_t m = c.base[i] + c.base[j];
+      for (size_t q = 0; q < c.rel.size(); ++q) m += std::min<int64_t>(0, c.coef_of(q)[i] + c.coef_of(q)[j]);
+      if (m <= 0) return false;
+    }
+  return true;
 }
 
 // One component: its couplings, pair constraints and faces.
@@ -137,6 +150,20 @@ class ComponentEncoder {
       for (auto& v : at_ev[0]) s_.add(v <= 0);
       return;
     }
+    if (encoding_ == PairEncoding::Auto && forms_never_both_nonpositive(c)) {
+      // No two forms are ever <= 0 at the same moment, so a cover can never
+      // hand over from one form to another (both would be <= 0 at the switch):
+      // one form must be <= 0 for all time. E.g. the two x-overlaps of two
+      // unit nodes in a row sum to 2.
+      z3::expr_vector options(ctx_);
+      for (uint32_t i = 0; i < c.num_forms; ++i) {
+        z3::expr_vector all(ctx_);
+        for (auto& v : at_ev[i]) all.push_back(v <= 0);
+        options.push_back(z3::mk_and(all));
+      }
+      s_.add(z3::mk_or(options));
+      return;
+    }
     // A cover of the time axis by M segments [x_{m-1}, x_m].
     const size_t M = 4 * r - 2;
     std::vector<z3::expr> x;
@@ -193,6 +220,68 @@ class ComponentEncoder {
   std::vector<z3::expr> t_;
   uint64_t counter_ = 0;
 };
+
+// The second cheap sufficient test: the schedule that the two-coupling pairs
+// alone ask for, as early as possible. Each such pair that collides at offset
+// 0 but is free at every offset >= lo > 0 (or <= hi < 0) gives
+// t_b >= t_a + lo (or t_a >= t_b - hi); longest paths from 0 give the times.
+// Accepted only if every pair and face of the component is collision-free at
+// them (pair_free_at_times, exact); nullopt otherwise.
+std::optional<std::vector<Rational>> layered_candidate(
+    const Component& comp, const ConstraintSystem& sys, const FaceNets& faces, std::vector<uint32_t>& local,
+    std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& cache) {
+  for (uint32_t j = 0; j < comp.couplings.size(); ++j) local[comp.couplings[j]] = j;
+  struct Arc {
+    uint32_t from, to;
+    Rational w;
+  };
+  std::vector<Arc> arcs;
+  for (uint32_t ci : comp.pairs) {
+    const CollisionConstraint& c = sys.constraints[ci];
+    if (c.rel.size() != 2) continue;
+    std::vector<int64_t> key(c.base);
+    key.insert(key.end(), c.coef.begin(), c.coef.end());
+    key.push_back(c.num_forms);
+    auto it = cache.find(key);
+    if (it == cache.end()) it = cache.emplace(std::move(key), free_offsets(c)).first;
+    const auto& iv = it->second;
+    if (iv.empty()) return std::nullopt;
+    bool zero_free = std::any_of(iv.begin(), iv.end(), [](const OffsetInterval& x) { return x.contains(Rational(0)); });
+    if (zero_free) continue;
+    uint32_t a = local[c.rel[0]], b = local[c.rel[1]];
+    if (!iv.back().hi && *iv.back().lo > Rational(0)) {
+      arcs.push_back({a, b, *iv.back().lo});
+    } else if (!iv.front().lo && *iv.front().hi < Rational(0)) {
+      arcs.push_back({b, a, Rational(0) - *iv.front().hi});
+    }
+  }
+  if (arcs.empty()) return std::nullopt;  // the candidate would be "all at once"
+  const size_t n = comp.couplings.size();
+  std::vector<Rational> t(n, Rational(0));
+  bool changed = true;
+  for (size_t round = 0; changed; ++round) {
+    if (round > n) return std::nullopt;  // a positive cycle: no such schedule
+    changed = false;
+    for (const Arc& e : arcs)
+      if (t[e.from] + e.w > t[e.to]) t[e.to] = t[e.from] + e.w, changed = true;
+  }
+  for (uint32_t ci : comp.pairs) {
+    const CollisionConstraint& c = sys.constraints[ci];
+    std::vector<Rational> st;
+    for (CouplingId q : c.rel) st.push_back(t[local[q]]);
+    if (!pair_free_at_times(c, st)) return std::nullopt;
+  }
+  for (uint32_t fi : comp.faces) {
+    const auto& nets = faces.faces[fi].nets;
+    for (auto& [q, v] : nets) {
+      Vec2 sum{0, 0};
+      for (auto& [r, w] : nets)
+        if (t[local[r]] == t[local[q]]) sum += w;
+      if (!sum.is_zero()) return std::nullopt;
+    }
+  }
+  return t;
+}
 
 uint64_t z3_stat(const z3::stats& st, const char* key) {
   for (unsigned i = 0; i < st.size(); ++i)
@@ -266,6 +355,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   z3::context ctx;
   std::vector<int> var_of(k, -1);
   std::map<std::vector<int64_t>, std::vector<OffsetInterval>> offsets_cache;
+  std::vector<uint32_t> local(k, 0);
   bool unknown = false, needed_z3 = false;
   uint64_t conflicts = 0;
   for (const Component& comp : comps) {
@@ -281,6 +371,13 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     if (at_once) {
       ++res.stats.safe_moves;
       continue;
+    }
+    if (encoding == PairEncoding::Auto) {
+      if (auto t = layered_candidate(comp, sys, faces, local, offsets_cache)) {
+        for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = (*t)[j];
+        ++res.stats.safe_moves;
+        continue;
+      }
     }
     needed_z3 = true;
     ++res.stats.states;

@@ -20,9 +20,11 @@
 //     net, grouped by equal start time, sum to zero in every group;
 //  3. couplings that share no constraint are independent: union-find splits
 //     them into components, each decided on its own;
-//  4. per component, cheap sufficient test first: starting all of it at once
-//     (one progress p for all) is checked exactly; if it is collision-free,
-//     every start time is 0;
+//  4. per component, cheap sufficient tests first, each checked exactly:
+//     starting all of it at once (one progress p for all); then the
+//     "layered" schedule that its two-coupling pairs ask for (t_b >= t_a + lo
+//     where offset 0 collides), as early as possible (longest paths), checked
+//     pair by pair (pair_free_at_times) and face by face;
 //  5. otherwise Z3 (QF_LRA, exact rationals) decides the component: start
 //     times t_q in [0, k] (k couplings; idle time can always be cut out).
 //     A pair of two couplings depends only on the offset of their start
@@ -49,9 +51,16 @@
 // gives Unknown (never observed; the model's values are vertices of small
 // integer systems). SolveOptions::engine is ignored.
 //
-// Sizes measured (docs/performance.md): chains of separation constraints
-// t_b >= t_a + 1 (compiled-formula shape, 3-operation couplings in gadget
-// rows) and random instances; see the bench figures there.
+// Sizes measured (docs/performance.md, CPU time on the loaded CI machine):
+// separation chains t_b >= t_a + 1 (the continuous reduction's contract) of
+// 1 025 / 4 097 couplings in 4.5 ms / 24 ms (layered candidate, no Z3); with
+// a third operation per coupling in a row of expansions, 2.7 s at 1 025
+// couplings, mostly build_pair_constraints. A compiled uf20 instance
+// (2 466 couplings, 3 031 pair constraints, one vertical operation) in 0.5 s
+// (all at once). Z3 itself, when a component needs it, is fast up to a few
+// hundred couplings of difference bounds (1 025-chain: 96 ms) but did not
+// finish a 2 466-coupling compiled component in 250 s: instances that need a
+// real search at that size may end in Unknown.
 //
 // Requirements: inst is a valid Instance (InstanceBuilder guarantees it).
 #pragma once
@@ -73,7 +82,7 @@ struct ContinuousResult {
 // "trivial" (no constraint needs Z3), "z3". stats.constraints: pair and
 // cycle constraints built; stats.decisions / refuted: Z3 decisions and
 // conflicts summed over the components; stats.states: components solved by
-// Z3; stats.safe_moves: components settled by the all-at-once test.
+// Z3; stats.safe_moves: components settled by a cheap test (step 4).
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {});
 
 // How the general path encodes a pair constraint for Z3. Auto: a pair of
@@ -81,7 +90,8 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt 
 // offset of their start times lies in one of these closed intervals"
 // (free_offsets, solver/continuous_pairs.hpp: difference bounds, which Z3
 // handles in near-linear time); larger pairs get the segment cover.
-// Segments: the segment cover for every pair (tests compare the two).
+// Segments: no shortcut after the all-at-once test: no layered candidate,
+// and the segment cover for every pair (tests compare the two).
 enum class PairEncoding { Auto, Segments };
 
 // Steps 2-6 alone, on any instance (horizontal-only ones too, where tests

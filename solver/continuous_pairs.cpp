@@ -13,17 +13,18 @@ int64_t coef(const CollisionConstraint& c, size_t j, uint32_t i) { return j < c.
 
 }  // namespace
 
-bool pair_free_at_offset(const CollisionConstraint& c, const Rational& d) {
-  if (c.rel.size() > 2) throw std::invalid_argument("pair_free_at_offset needs at most two couplings");
+bool pair_free_at_times(const CollisionConstraint& c, const std::vector<Rational>& start) {
+  if (start.size() != c.rel.size()) throw std::invalid_argument("pair_free_at_times needs one start per coupling");
   const uint32_t nf = c.num_forms;
-  const Rational start[2] = {Rational(0), d};
   auto value = [&](uint32_t i, const Rational& t) {
     Rational v(c.base[i]);
-    for (size_t j = 0; j < 2; ++j)
-      if (int64_t a = coef(c, j, i); a != 0) v = v + Rational(a) * clamp01(t - start[j]);
+    for (size_t j = 0; j < start.size(); ++j)
+      if (int64_t a = c.coef_of(j)[i]; a != 0) v = v + Rational(a) * clamp01(t - start[j]);
     return v;
   };
-  std::vector<Rational> ev = {Rational(0), Rational(1), d, d + Rational(1)};
+  std::vector<Rational> ev;
+  for (const Rational& s : start) ev.push_back(s), ev.push_back(s + Rational(1));
+  if (ev.empty()) ev.push_back(Rational(0));
   std::sort(ev.begin(), ev.end());
   ev.erase(std::unique(ev.begin(), ev.end()), ev.end());
   // Before the first and after the last event every form is constant.
@@ -50,6 +51,14 @@ bool pair_free_at_offset(const CollisionConstraint& c, const Rational& d) {
     if (!empty && L < U) return false;
   }
   return true;
+}
+
+bool pair_free_at_offset(const CollisionConstraint& c, const Rational& d) {
+  if (c.rel.size() > 2) throw std::invalid_argument("pair_free_at_offset needs at most two couplings");
+  std::vector<Rational> start = {Rational(0)};
+  if (c.rel.size() == 2) start.push_back(d);
+  if (c.rel.empty()) start.clear();
+  return pair_free_at_times(c, start);
 }
 
 std::vector<OffsetInterval> free_offsets(const CollisionConstraint& c) {

@@ -32,8 +32,14 @@ struct OffsetInterval {
   bool contains(const Rational& d) const { return (!lo || *lo <= d) && (!hi || d <= *hi); }
 };
 
-// True iff the pair never overlaps when rel[0] starts at 0 and rel[1] (if
-// any) at d. Requires c.rel.size() <= 2. O(num_forms) rationals.
+// True iff the pair never overlaps when rel[j] starts at start[j] (any
+// number of couplings; start.size() == c.rel.size()). The events cut time
+// into pieces on which every form is linear; on each, the exact 1-D test.
+// O(r log r + r * num_forms * r) rationals.
+bool pair_free_at_times(const CollisionConstraint& c, const std::vector<Rational>& start);
+
+// pair_free_at_times with rel[0] at 0 and rel[1] (if any) at d.
+// Requires c.rel.size() <= 2.
 bool pair_free_at_offset(const CollisionConstraint& c, const Rational& d);
 
 // The offsets at which the pair never overlaps: disjoint closed intervals in

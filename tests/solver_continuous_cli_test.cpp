@@ -25,6 +25,14 @@ const char* kSeparation =
     "e 0 0 0 1\ne 0 0 1 0\ne 1 0 1 1\n"
     "o a contract 0 0 +y\no b grow 1 1 -x\n";
 
+// Two separation gadgets whose couplings wait for each other: P = {a0, b1},
+// Q = {a1, b0} needs t_Q >= t_P + 1 and t_P >= t_Q + 1.
+const char* kMutualWait =
+    "p grid 9 8 4 2\nn 0 0\nn 0 1\nn 1 0\nn 1 1\nn 2 0\nn 3 0\nn 3 1\nn 4 0\nn 4 1\n"
+    "e 0 0 1 0\ne 1 0 2 0\ne 2 0 3 0\ne 3 0 4 0\ne 0 0 0 1\ne 1 0 1 1\ne 3 0 3 1\ne 4 0 4 1\n"
+    "o a0 contract 0 0 +y\no b0 grow 1 1 -x\no a1 contract 3 0 +y\no b1 grow 4 1 -x\n"
+    "q P a0 b1\nq Q a1 b0\n";
+
 TEST(SolveContinuousCommand, YesWitnessReadBackByCheckTimes) {
   std::string dir = test::temp_dir();
   std::string grid = test::write_file(dir + "/sep.grid", kSeparation);
@@ -52,6 +60,13 @@ TEST(SolveContinuousCommand, ExamplesAndExitCodes) {
   EXPECT_TRUE(has_line(both.out, "v a 0") && has_line(both.out, "v b 0")) << both.out;
   test::write_file(dir + "/t", both.out);
   EXPECT_EQ(run_gridlock({"check", kExamples + "model-case2-order-gadget.grid", "--times", dir + "/t"}).exit_code, 10);
+  // The continuous examples: answers stated in their comments.
+  auto sep = run_gridlock({"solve", kExamples + "continuous-separation.grid", "--model", "continuous"});
+  EXPECT_EQ(sep.exit_code, 10) << sep.err;
+  EXPECT_TRUE(has_line(sep.out, "v a 0") && has_line(sep.out, "v b 1")) << sep.out;
+  auto block = run_gridlock({"solve", kExamples + "continuous-block-two-couplings.grid", "--model", "continuous"});
+  EXPECT_EQ(block.exit_code, 10) << block.err;
+  EXPECT_EQ(run_gridlock({"solve", kExamples + "continuous-block-two-couplings.grid"}).exit_code, 20);
 }
 
 // The block with its two expansions in separate couplings: no order works,
@@ -74,16 +89,10 @@ TEST(SolveContinuousCommand, ContinuousYesWhereDiscreteSaysNo) {
   EXPECT_TRUE(j["stats"].contains("constraints"));
 }
 
-// Two separation gadgets whose couplings wait for each other: P = {a0, b1},
-// Q = {a1, b0} needs t_Q >= t_P + 1 and t_P >= t_Q + 1. Proved NO by Z3.
+// The mutual wait is proved NO by Z3.
 TEST(SolveContinuousCommand, NoFromZ3OnANonHorizontalInstance) {
   std::string dir = test::temp_dir();
-  std::string grid = test::write_file(dir + "/n.grid",
-                                      "p grid 9 8 4 2\nn 0 0\nn 0 1\nn 1 0\nn 1 1\nn 2 0\nn 3 0\nn 3 1\nn 4 0\nn 4 1\n"
-                                      "e 0 0 1 0\ne 1 0 2 0\ne 2 0 3 0\ne 3 0 4 0\n"
-                                      "e 0 0 0 1\ne 1 0 1 1\ne 3 0 3 1\ne 4 0 4 1\n"
-                                      "o a0 contract 0 0 +y\no b0 grow 1 1 -x\no a1 contract 3 0 +y\no b1 grow 4 1 -x\n"
-                                      "q P a0 b1\nq Q a1 b0\n");
+  std::string grid = test::write_file(dir + "/n.grid", kMutualWait);
   auto r = run_gridlock({"solve", grid, "--model", "continuous", "--json"});
   ASSERT_EQ(r.exit_code, 20) << r.out << r.err;
   auto j = nlohmann::json::parse(r.out);
@@ -108,13 +117,15 @@ TEST(SolveContinuousCommand, BadOptionsAreErrors) {
 
 // A limit gives s UNKNOWN and exit 0, never a wrong answer: a timeout of a
 // microsecond has passed before Z3 is asked (the constraints take longer).
+// The instance needs Z3 (the two gadgets wait for each other: NO).
 TEST(SolveContinuousCommand, TimeoutGivesUnknown) {
   std::string dir = test::temp_dir();
-  std::string grid = test::write_file(dir + "/sep.grid", kSeparation);
-  auto r = run_gridlock({"solve", grid, "--model", "continuous", "--timeout", "0.000001"});
+  std::string wait = test::write_file(dir + "/n.grid", kMutualWait);
+  auto r = run_gridlock({"solve", wait, "--model", "continuous", "--timeout", "0.000001"});
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(has_line(r.out, "s UNKNOWN")) << r.out;
   EXPECT_EQ(r.out.find("\nv "), std::string::npos) << r.out;
+  std::string grid = test::write_file(dir + "/sep.grid", kSeparation);
   auto ok = run_gridlock({"solve", grid, "--model", "continuous", "--timeout", "60", "--max-states", "1000000"});
   EXPECT_EQ(ok.exit_code, 10) << ok.out << ok.err;
 }
