@@ -47,7 +47,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
                                                "with --yes/--no, formulas are drawn until both are met")
     ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)")
     ("model", po::value<std::string>()->default_value("discrete"),
-     "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both\n"
+     "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both "
      "(NAME.grid and NAME-continuous.grid)");
   po::positional_options_description pos;
   po::variables_map vm;

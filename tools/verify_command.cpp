@@ -97,9 +97,9 @@ int run_verify(const std::vector<std::string>& args) {
   opts.add_options()
     ("help,h", "show this help")
     ("model", po::value<std::string>()->default_value("discrete"),
-     "which reduction to check: discrete (exact discrete solver and gap checker), continuous (the continuous\n"
+     "which reduction to check: discrete (exact discrete solver and gap checker), continuous (the continuous "
      "reduction and the exact continuous solver) or both")
-    ("direct", "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small\n"
+    ("direct", "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small "
                "formulas small, e.g. for the continuous solver)")
     ("timeout", po::value<double>()->default_value(60), "seconds each exact solver may spend on one formula (then UNKNOWN)")
     ("max-states", po::value<uint64_t>()->default_value(0), "search nodes the exact solver may visit per formula (0: no limit)")
