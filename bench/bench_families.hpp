@@ -7,9 +7,21 @@
 // Expansions only push teeth apart (they slide along each other, touching),
 // so no schedule of a comb collides. group > 1 couples consecutive
 // expansions into couplings of `group` operations (0: one coupling of all).
+//
+// separation_chain: n separation gadgets in a row, the shape of the
+// continuous reduction's contract t_b >= t_a + 1. Gadget i (x0 = 3i): a
+// column (x0,0)-(x0,1) and (x0+1,0)-(x0+1,1) on a spine along y = 0;
+// a_i contracts (x0,1) into (x0,0), b_i grows (x0+1,1) along -x into the
+// cell a_i empties, so b_i collides iff it starts before a_i has finished
+// (at exactly t_a + 1 the two only touch). Couplings Q0 = {a_0},
+// Qi = {b_(i-1), a_i}, Qn = {b_(n-1)}: the only collision-free schedules have
+// t_Qi >= t_Q(i-1) + 1, a chain of n + 1 couplings. With rows = true every
+// coupling also gets a horizontal expansion in a row below (y = -2, hung
+// from (0,-1)), so couplings have 3 operations as in compiled formulas.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,6 +65,43 @@ inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t gro
       std::vector<std::string> g(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(end));
       if (g.size() > 1) b.add_coupling("Q" + std::to_string(i), g);
     }
+  }
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
+  return inst;
+}
+
+inline Instance separation_chain(int64_t n, bool rows) {
+  InstanceBuilder b;
+  auto must = [](std::optional<std::string> e) {
+    if (e) throw std::runtime_error(*e);
+  };
+  const int64_t W = 3 * n + 1;
+  for (int64_t x = 0; x < W; ++x) must(b.add_node({x, 0}));
+  for (int64_t x = 0; x + 1 < W; ++x) must(b.add_edge({x, 0}, {x + 1, 0}));
+  for (int64_t i = 0; i < n; ++i) {
+    int64_t x0 = 3 * i;
+    must(b.add_node({x0, 1}));
+    must(b.add_node({x0 + 1, 1}));
+    must(b.add_edge({x0, 0}, {x0, 1}));
+    must(b.add_edge({x0 + 1, 0}, {x0 + 1, 1}));
+    must(b.add_op("a" + std::to_string(i), OpKind::Contract, {x0, 0}, Dir::PosY));
+    must(b.add_op("b" + std::to_string(i), OpKind::Grow, {x0 + 1, 1}, Dir::NegX));
+  }
+  if (rows) {
+    must(b.add_node({0, -1}));
+    must(b.add_edge({0, 0}, {0, -1}));
+    for (int64_t x = 0; x <= 2 * (n + 1); ++x) must(b.add_node({x, -2}));
+    for (int64_t x = 0; x < 2 * (n + 1); ++x) must(b.add_edge({x, -2}, {x + 1, -2}));
+    must(b.add_edge({0, -1}, {0, -2}));
+    for (int64_t i = 0; i <= n; ++i) must(b.add_op("h" + std::to_string(i), OpKind::Expand, {2 * i, -2}, Dir::PosX));
+  }
+  for (int64_t i = 0; i <= n; ++i) {
+    std::vector<std::string> ops;
+    if (i > 0) ops.push_back("b" + std::to_string(i - 1));
+    if (i < n) ops.push_back("a" + std::to_string(i));
+    if (rows) ops.push_back("h" + std::to_string(i));
+    must(b.add_coupling("Q" + std::to_string(i), ops));
   }
   Instance inst;
   if (auto e = b.finish(inst)) throw std::runtime_error(e->message);

@@ -18,6 +18,10 @@ void Canvas::path(Vec2 a, Vec2 b) {
 
 void Canvas::expansion(const std::string& name, Vec2 u, Dir d) {
   if (!is_horizontal(d)) throw std::logic_error("Canvas::expansion: gadgets use horizontal expansions only");
+  any_expansion(name, u, d);
+}
+
+void Canvas::any_expansion(const std::string& name, Vec2 u, Dir d) {
   edges_.emplace_back(u, u + unit(d));
   ops_.push_back(Op{name, u, d});
 }

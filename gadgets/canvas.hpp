@@ -1,9 +1,10 @@
 // A shape under construction: the gadgets draw on it, the compiler turns it
 // into an Instance.
 //
-// Every gadget of the reduction uses horizontal edge expansions only, so a
-// Canvas knows three things: nodes (cells), plain edges between orthogonal
-// neighbours, and named expansions on horizontal edges. Couplings are added
+// The gadgets of the discrete reduction use horizontal edge expansions only;
+// the separation gadget of the continuous reduction adds one vertical one. So
+// a Canvas knows three things: nodes (cells), plain edges between orthogonal
+// neighbours, and named edge expansions. Couplings are added
 // by name at the end (build). Nothing is checked until build(), which runs
 // every rule of lattice/instance.hpp through InstanceBuilder, so a gadget
 // that draws something impossible is a loud error, never a silent one.
@@ -28,6 +29,8 @@ class Canvas {
   // A horizontal expansion on the edge between u and u + unit(d): the edge is
   // added here (do not add it as a plain edge too). Requires is_horizontal(d).
   void expansion(const std::string& name, Vec2 u, Dir d);
+  // The same along any direction (the separation gadget's vertical lift).
+  void any_expansion(const std::string& name, Vec2 u, Dir d);
   // Puts the operations named in ops into one coupling called name.
   void couple(const std::string& name, const std::vector<std::string>& ops);
   void anchor(Vec2 c) { anchor_ = c; has_anchor_ = true; }

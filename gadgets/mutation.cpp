@@ -4,7 +4,8 @@ namespace gridlock {
 
 namespace {
 constexpr Mutation kAll[] = {Mutation::None,       Mutation::VariableLooseY, Mutation::ClauseLoose,
-                             Mutation::ClauseTight, Mutation::OrderLoose,     Mutation::OrderDropRelease};
+                             Mutation::ClauseTight, Mutation::OrderLoose,     Mutation::OrderDropRelease,
+                             Mutation::SeparationLoose};
 }
 
 const char* mutation_name(Mutation m) {
@@ -15,6 +16,7 @@ const char* mutation_name(Mutation m) {
     case Mutation::ClauseTight: return "clause-tight";
     case Mutation::OrderLoose: return "order-loose";
     case Mutation::OrderDropRelease: return "order-drop-release";
+    case Mutation::SeparationLoose: return "separation-loose";
   }
   return "?";
 }

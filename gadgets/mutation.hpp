@@ -22,10 +22,13 @@ enum class Mutation {
   ClauseTight,       // the clause gap narrowed by one: a clause needs two true literals
   OrderLoose,        // the order gap widened by one: b may run before a
   OrderDropRelease,  // the order gadget's widening operation moved off the gap's path
+  SeparationLoose,   // the separation gadget with one empty cell more: b never collides
+                     // (continuous reduction only: the discrete one draws no separation gadget)
 };
 
 // Stable names for the command line: "none", "variable-loose-y",
-// "clause-loose", "clause-tight", "order-loose", "order-drop-release".
+// "clause-loose", "clause-tight", "order-loose", "order-drop-release",
+// "separation-loose".
 const char* mutation_name(Mutation m);
 std::optional<Mutation> parse_mutation(const std::string& s);
 std::vector<Mutation> all_mutations();  // every one except None

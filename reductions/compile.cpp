@@ -1,11 +1,13 @@
 #include "reductions/compile.hpp"
 
+#include <cstdint>
 #include <algorithm>
 #include <stdexcept>
 
 #include "gadgets/canvas.hpp"
 #include "gadgets/clause_gadget.hpp"
 #include "gadgets/order_gadget.hpp"
+#include "gadgets/separation_gadget.hpp"
 #include "gadgets/variable_gadget.hpp"
 
 namespace gridlock {
@@ -19,17 +21,23 @@ std::string literal_name(int lit) { return (lit < 0 ? "~" : "") + var_name(var_o
 
 }  // namespace
 
-uint64_t compiled_node_count(const Formula& f) {
+uint64_t compiled_node_count(const Formula& f, ReductionModel model) {
   if (f.num_vars < 1) return 0;
   uint64_t literals = 0;
   for (const auto& c : f.clauses) literals += c.size();
   const auto n = static_cast<uint64_t>(f.num_vars), m = static_cast<uint64_t>(f.clauses.size());
-  return 43 * n + 5 * literals + 15 * m - 11;
+  // The continuous reduction's separation gadget has two nodes more than
+  // the order gadget it replaces.
+  return 43 * n + 5 * literals + 15 * m - (model == ReductionModel::Continuous ? 9 : 11);
 }
 
-CompiledFormula compile_formula(const Formula& f, Mutation mutation) {
+const char* reduction_model_name(ReductionModel m) {
+  return m == ReductionModel::Continuous ? "continuous" : "discrete";
+}
+
+CompiledFormula compile_formula(const Formula& f, Mutation mutation, ReductionModel model) {
   if (auto e = validate(f); !e.empty()) throw std::invalid_argument("compile: " + e);
-  if (uint64_t nodes = compiled_node_count(f); nodes > static_cast<uint64_t>(kMaxNodes))
+  if (uint64_t nodes = compiled_node_count(f, model); nodes > static_cast<uint64_t>(kMaxNodes))
     throw std::invalid_argument("the compiled instance would have " + std::to_string(nodes) +
                                 " nodes (43n + 5L + 15m - 11), more than the .grid format's limit of " +
                                 std::to_string(kMaxNodes));
@@ -44,6 +52,7 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation) {
   CompiledFormula out;
   out.num_vars = n;
   out.num_clauses = m;
+  out.model = model;
   // Coupling contents, by name, in a fixed order.
   std::vector<std::string> coupling_names;
   std::vector<std::vector<std::string>> coupling_ops;
@@ -98,7 +107,9 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation) {
     coupling_ops[c_u[h]].push_back(release);
     place(place_clause_gadget(canvas, row, lit_ops, release, mutation));
   }
-  // Order gadgets along the chain.
+  // Order gadgets along the chain; in the continuous model the link
+  // y_n < z_1 (k = n - 1) is a separation gadget.
+  const size_t separated_link = model == ReductionModel::Continuous && n >= 1 ? static_cast<size_t>(n - 1) : SIZE_MAX;
   std::vector<size_t> chain;
   for (size_t i = 0; i < c_y.size(); ++i) chain.push_back(c_y[i]);
   for (size_t i = 0; i < c_z.size(); ++i) chain.push_back(c_z[i]);
@@ -108,7 +119,10 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation) {
     std::string first = prefix + coupling_names[chain[k]], second = prefix + coupling_names[chain[k + 1]];
     coupling_ops[chain[k]].push_back(first);
     coupling_ops[chain[k + 1]].push_back(second);
-    place(place_order_gadget(canvas, row, first, second, mutation));
+    if (k == separated_link)
+      place(place_separation_gadget(canvas, row, first, second, mutation));
+    else
+      place(place_order_gadget(canvas, row, first, second, mutation));
   }
   // The spine: rows 0 .. last used row (a single node for an empty formula).
   const int64_t top = std::max<int64_t>(row - 2, 0);
@@ -136,7 +150,9 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation) {
   s.couplings = inst.couplings().size();
   s.variable_gadgets = static_cast<size_t>(n);
   s.clause_gadgets = m;
-  s.order_gadgets = chain.empty() ? 0 : chain.size() - 1;
+  s.separation_gadgets = separated_link != SIZE_MAX ? 1 : 0;
+  s.order_gadgets = (chain.empty() ? 0 : chain.size() - 1) - s.separation_gadgets;
+  for (const Operation& op : inst.ops()) s.vertical_ops += !is_horizontal(op.dir);
   s.rows = static_cast<size_t>(top + 1);
   s.literals = num_literals(f);
   for (const Coupling& q : inst.couplings()) {
@@ -185,19 +201,50 @@ std::vector<bool> assignment_from_schedule(const CompiledFormula& c, const std::
   return value;
 }
 
+Schedule times_from_assignment(const CompiledFormula& c, const std::vector<bool>& value) {
+  if (value.size() <= static_cast<size_t>(c.num_vars))
+    throw std::invalid_argument("times_from_assignment: assignment has too few variables");
+  Schedule s;
+  s.start.assign(c.instance.couplings().size(), Rational(2));
+  for (size_t i = 0; i < static_cast<size_t>(c.num_vars); ++i) {
+    s.start[value[i + 1] ? c.set_true[i] : c.set_false[i]] = Rational(0);
+    s.start[c.y[i]] = Rational(1);
+  }
+  return s;
+}
+
+std::vector<bool> assignment_from_times(const CompiledFormula& c, const Schedule& s) {
+  if (s.start.size() != c.instance.couplings().size())
+    throw std::invalid_argument("assignment_from_times: not a start time per coupling");
+  std::vector<bool> value(static_cast<size_t>(c.num_vars) + 1, false);
+  if (c.num_vars == 0) return value;
+  const Rational& yn = s.start[c.y.back()];
+  for (size_t i = 0; i < static_cast<size_t>(c.num_vars); ++i) value[i + 1] = s.start[c.set_true[i]] <= yn;
+  return value;
+}
+
 std::vector<std::string> describe_compiled(const CompiledFormula& c) {
   const CompileStats& s = c.stats;
   std::vector<std::string> lines;
   lines.push_back("instance: " + std::to_string(s.nodes) + " nodes, " + std::to_string(s.edges) + " edges, " +
-                  std::to_string(s.ops) + " operations (horizontal expansions), " + std::to_string(s.couplings) +
-                  " couplings, " + std::to_string(s.rows) + " rows");
+                  std::to_string(s.ops) + " operations (" +
+                  (s.vertical_ops ? "expansions, " + std::to_string(s.vertical_ops) + " of them vertical"
+                                  : std::string("horizontal expansions")) +
+                  "), " + std::to_string(s.couplings) + " couplings, " + std::to_string(s.rows) + " rows");
+  lines.push_back("model: " + std::string(reduction_model_name(c.model)) + " time" +
+                  (c.model == ReductionModel::Continuous ? " (the link y_n < z_1 is a separation gadget)" : ""));
   lines.push_back("gadgets: " + std::to_string(s.variable_gadgets) + " variable, " +
-                  std::to_string(s.clause_gadgets) + " clause, " + std::to_string(s.order_gadgets) + " order");
+                  std::to_string(s.clause_gadgets) + " clause, " + std::to_string(s.order_gadgets) + " order" +
+                  (c.model == ReductionModel::Continuous
+                       ? ", " + std::to_string(s.separation_gadgets) + " separation"
+                       : std::string()));
   if (c.num_vars >= 1) {
     const auto n = static_cast<long long>(c.num_vars), m = static_cast<long long>(c.num_clauses),
                L = static_cast<long long>(s.literals);
+    const bool cont = c.model == ReductionModel::Continuous;
     lines.push_back("size formulas (n=" + std::to_string(n) + ", m=" + std::to_string(m) + ", L=" + std::to_string(L) +
-                    "): nodes 43n+5L+15m-11 = " + std::to_string(43 * n + 5 * L + 15 * m - 11) +
+                    "): nodes " + (cont ? "43n+5L+15m-9 = " + std::to_string(43 * n + 5 * L + 15 * m - 9)
+                                        : "43n+5L+15m-11 = " + std::to_string(43 * n + 5 * L + 15 * m - 11)) +
                     ", operations 8n+L+3m-2 = " + std::to_string(8 * n + L + 3 * m - 2) +
                     ", couplings 4n+m = " + std::to_string(4 * n + m));
   }

@@ -21,6 +21,8 @@
 // arm, and the leftmost node of each gadget row is rigidly joined to the
 // gadget's attach node, so the gap between the spine and a gadget never
 // changes and no two gadgets share a row: gadgets cannot interfere.
+// (The continuous model's separation gadget lifts two of its nodes into the
+// empty row above it, columns 2 and 3, where nothing else ever is.)
 //
 // Sizes for n >= 1 variables, m clauses, L literal occurrences, G = 3n + 2m - 1
 // gadgets (2n + m - 1 of them order gadgets):
@@ -31,6 +33,16 @@
 //   couplings  = 4n + m
 // For LSAT and LSAT<=3 input every coupling has at most 3 operations (each
 // literal occurs at most twice; each chain element is in at most two links).
+//
+// The continuous model (ReductionModel::Continuous; the paper's theorem that
+// continuous Collision-free Schedule is NP-hard): the same, except that the
+// link y_n < z_1 is a separation gadget (gadgets/separation_gadget.hpp,
+// 8 nodes instead of 6, one vertical expansion): z_1 may start only once y_n
+// has finished. That one separation is all the proof needs (docs/gadgets.md,
+// "The continuous reduction"): at the moment y_n finishes every y_i is done
+// and no z_i or u_h has started, and progress cannot pause, so every
+// variable is then fully set one way. Sizes: nodes + 2 (n >= 1), the rest
+// unchanged.
 #pragma once
 
 #include <cstdint>
@@ -41,12 +53,19 @@
 #include "gadgets/contract.hpp"
 #include "gadgets/mutation.hpp"
 #include "lattice/instance.hpp"
+#include "lattice/schedule.hpp"
 
 namespace gridlock {
+
+// Which Collision-free Schedule problem the instance is for.
+enum class ReductionModel { Discrete, Continuous };
+const char* reduction_model_name(ReductionModel m);  // "discrete", "continuous"
 
 struct CompileStats {
   size_t nodes = 0, edges = 0, ops = 0, couplings = 0;
   size_t variable_gadgets = 0, clause_gadgets = 0, order_gadgets = 0, rows = 0;
+  size_t separation_gadgets = 0;         // continuous model: 1 (n >= 1), else 0
+  size_t vertical_ops = 0;               // one per separation gadget
   size_t literals = 0;                   // L
   size_t max_coupling = 0;               // largest coupling (operations)
   std::string max_coupling_name;
@@ -55,6 +74,7 @@ struct CompileStats {
 
 struct CompiledFormula {
   Instance instance;
+  ReductionModel model = ReductionModel::Discrete;
   int num_vars = 0;
   size_t num_clauses = 0;
   // Coupling ids, indexed by variable - 1 / clause index.
@@ -64,9 +84,10 @@ struct CompiledFormula {
   CompileStats stats;
 };
 
-// The node count of f's compiled instance, 43n + 5L + 15m - 11 (0 for
-// n = 0), computed from the counts alone, before anything is drawn.
-uint64_t compiled_node_count(const Formula& f);
+// The node count of f's compiled instance, 43n + 5L + 15m - 11 (- 9 in the
+// continuous model; 0 for n = 0), computed from the counts alone, before
+// anything is drawn.
+uint64_t compiled_node_count(const Formula& f, ReductionModel model = ReductionModel::Discrete);
 
 // Compiles f. Requires validate(f) empty and every clause non-empty (throws
 // std::invalid_argument naming the first empty clause, 1-based), and
@@ -74,7 +95,8 @@ uint64_t compiled_node_count(const Formula& f);
 // std::invalid_argument "the compiled instance would have N nodes ..."). The mutation
 // breaks one gadget kind (tests and the fuzzer's self-test only).
 // Deterministic. Time and memory O(n + m + L).
-CompiledFormula compile_formula(const Formula& f, Mutation mutation = Mutation::None);
+CompiledFormula compile_formula(const Formula& f, Mutation mutation = Mutation::None,
+                                ReductionModel model = ReductionModel::Discrete);
 
 // Certificate, assignment -> schedule: for a satisfying assignment (indexed
 // 1..num_vars), the order  [x_i:T or x_i:F by value, i = 1..n], y_1..y_n,
@@ -89,6 +111,21 @@ std::vector<CouplingId> schedule_from_assignment(const CompiledFormula& c, const
 // it against the formula. Requires order to be a permutation of the
 // couplings. Result indexed 1..num_vars. O(couplings).
 std::vector<bool> assignment_from_schedule(const CompiledFormula& c, const std::vector<CouplingId>& order);
+
+// Continuous certificate, assignment -> start times: the value of x_i by
+// `value` at time 0, every y_i at 1, everything else (z_i, u_h, the other
+// value of each x_i) at 2. Collision-free on the continuous instance iff
+// value satisfies the formula (docs/gadgets.md); the caller checks it with
+// the simulator. Requires value.size() > num_vars. O(couplings).
+Schedule times_from_assignment(const CompiledFormula& c, const std::vector<bool>& value);
+
+// Continuous certificate, start times -> assignment: x_i is true iff
+// t(x_i:T) <= t(y_n), i.e. x_i:T has finished when y_n finishes. For a
+// collision-free schedule of the continuous instance this is the
+// assignment in force at that moment, which satisfies the formula
+// (docs/gadgets.md); the caller checks it. Requires a start time per
+// coupling. Result indexed 1..num_vars. O(n).
+std::vector<bool> assignment_from_times(const CompiledFormula& c, const Schedule& s);
 
 // The c-lines of `gridlock compile`: sizes, the size formulas checked against
 // the counts, and the coupling-size report.

@@ -1,6 +1,8 @@
 #include "reductions/verify.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,6 +16,7 @@
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
+#include "solver/continuous.hpp"
 #include "solver/gaps.hpp"
 #include "solver/solve.hpp"
 
@@ -21,8 +24,19 @@ namespace gridlock {
 
 const char* tri_name(Tri t) { return t == Tri::Yes ? "YES" : t == Tri::No ? "NO" : "UNKNOWN"; }
 
+const char* verify_model_name(VerifyModel m) {
+  return m == VerifyModel::Discrete ? "discrete" : m == VerifyModel::Continuous ? "continuous" : "both";
+}
+
+std::optional<VerifyModel> parse_verify_model(const std::string& s) {
+  for (VerifyModel m : {VerifyModel::Discrete, VerifyModel::Continuous, VerifyModel::Both})
+    if (s == verify_model_name(m)) return m;
+  return std::nullopt;
+}
+
 int VerifyResult::witnesses_checked() const {
-  return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid);
+  return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid) +
+         (csat_witness == Check::Valid) + (csolver_witness == Check::Valid);
 }
 
 namespace {
@@ -39,6 +53,69 @@ std::vector<std::string> names_of(const Instance& inst, const std::vector<Coupli
 
 Tri tri(bool yes) { return yes ? Tri::Yes : Tri::No; }
 
+std::vector<std::string> times_of(const Instance& inst, const Schedule& s) {
+  std::vector<std::string> out;
+  for (CouplingId q = 0; q < inst.couplings().size(); ++q) out.push_back(inst.couplings()[q].name + " " + s.start[q].str());
+  return out;
+}
+
+// The continuous reduction: compile G for continuous time, CaDiCaL's model
+// as start times through the simulator, the exact continuous solver, its
+// start times through the simulator and back to an assignment of F.
+// The certificate maps between F and G: to-lsat's, or the identity when G = F
+// (VerifyOptions::direct).
+struct Lift {
+  const LsatReduction* red = nullptr;  // nullptr: identity
+  std::vector<bool> lift_to_target(const std::vector<bool>& v) const { return red ? red->lift_to_target(v) : v; }
+  std::vector<bool> lift_to_source(const std::vector<bool>& v) const { return red ? red->lift_to_source(v) : v; }
+};
+
+void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt) {
+  r.ran_continuous = true;
+  auto t0 = std::chrono::steady_clock::now();
+  r.compiled_continuous = compile_formula(r.lsat, opt.mutation, ReductionModel::Continuous);
+  r.ms_compile += ms_since(t0);
+  const CompiledFormula& c = r.compiled_continuous;
+  const Instance& inst = c.instance;
+  r.cnodes = c.stats.nodes;
+  r.couplings = c.stats.couplings;  // the same in both reductions
+  r.max_coupling = c.stats.max_coupling;
+  Simulator sim(inst);
+  if (r.sat == Tri::Yes) {
+    Schedule s = times_from_assignment(c, red.lift_to_target(sat.model));
+    r.csat_times = times_of(inst, s);
+    r.csat_witness = sim.run(s).collision ? Check::Invalid : Check::Valid;
+  }
+  t0 = std::chrono::steady_clock::now();
+  SolveOptions so;
+  so.seconds = opt.solve_seconds;
+  so.max_states = opt.max_states;
+  ContinuousResult cr = solve_continuous(inst, so);
+  r.ms_csolve = ms_since(t0);
+  r.csolver_conflicts = cr.stats.refuted;
+  r.continuous_solver = cr.status == SolveResult::Status::Yes  ? Tri::Yes
+                        : cr.status == SolveResult::Status::No ? Tri::No
+                                                               : Tri::Unknown;
+  if (r.continuous_solver == Tri::Yes) {
+    r.csolver_times = times_of(inst, cr.schedule);
+    // The solver replays its schedule itself; replay it here too, then lift.
+    if (check_schedule_bounds(inst, cr.schedule) || sim.run(cr.schedule).collision)
+      r.csolver_issue = "the continuous solver's start times collide in the simulator";
+    else if (!satisfies(r.source, red.lift_to_source(assignment_from_times(c, cr.schedule))))
+      r.csolver_issue = "the continuous solver's start times lift to an assignment that falsifies the formula";
+    r.csolver_witness = r.csolver_issue.empty() ? Check::Valid : Check::Invalid;
+  }
+}
+
+template <class F>
+void append_continuous_problems(const VerifyResult& r, F&& problem) {
+  if (r.continuous_solver != Tri::Unknown && r.sat != Tri::Unknown && r.continuous_solver != r.sat)
+    problem(std::string("exact continuous solver says ") + tri_name(r.continuous_solver) + ", CaDiCaL says " +
+            (r.sat == Tri::Yes ? "SAT" : "UNSAT"));
+  if (r.csat_witness == Check::Invalid) problem("the SAT model's start times collide in the simulator (continuous)");
+  if (r.csolver_witness == Check::Invalid) problem(r.csolver_issue);
+}
+
 }  // namespace
 
 VerifyResult verify_formula(const Formula& f, const std::string& name, const VerifyOptions& opt) {
@@ -54,12 +131,34 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
 
   // 2. to-lsat if needed, compile.
   t0 = std::chrono::steady_clock::now();
-  LsatReduction red = reduce_to_lsat(f);
-  r.reduced = !red.stats().identity;
-  r.lsat = red.output();
+  const bool direct = opt.direct && std::none_of(f.clauses.begin(), f.clauses.end(),
+                                                  [](const std::vector<int>& cl) { return cl.empty(); });
+  std::optional<LsatReduction> lsat;
+  Lift red;
+  if (direct) {
+    r.lsat = f;
+  } else {
+    lsat = reduce_to_lsat(f);
+    red.red = &*lsat;
+    r.reduced = !lsat->stats().identity;
+    r.lsat = lsat->output();
+  }
+  r.ms_compile = ms_since(t0);
+  if (opt.model != VerifyModel::Discrete) verify_continuous(r, sat, red, opt);
+  if (opt.model == VerifyModel::Continuous) {
+    std::string p;
+    auto problem = [&](const std::string& x) { p += (p.empty() ? "" : "; ") + x; };
+    if (r.sat == Tri::Unknown) problem("CaDiCaL gave no answer");
+    append_continuous_problems(r, problem);
+    r.problem = p;
+    r.agree = p.empty();
+    return r;
+  }
+  r.ran_discrete = true;
+  t0 = std::chrono::steady_clock::now();
   r.compiled = compile_formula(r.lsat, opt.mutation);
   const CompiledFormula& c = r.compiled;
-  r.ms_compile = ms_since(t0);
+  r.ms_compile += ms_since(t0);
   r.nodes = c.stats.nodes;
   r.ops = c.stats.ops;
   r.couplings = c.stats.couplings;
@@ -116,6 +215,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   if (r.sat_witness == Check::Invalid) problem("the SAT model's schedule collides in the simulator");
   if (r.solver_witness == Check::Invalid) problem("the solver's schedule lifts to an assignment that falsifies the formula");
   if (r.gaps_witness == Check::Invalid) problem("running every coupling at time 0 collides in the simulator");
+  if (r.ran_continuous) append_continuous_problems(r, problem);
   r.problem = p;
   r.agree = p.empty();
   return r;
@@ -128,27 +228,47 @@ std::string write_reproducer(const VerifyResult& r, const std::string& dir, cons
   };
   write("formula.cnf", to_dimacs(r.source));
   write("lsat.cnf", to_dimacs(r.lsat));
-  std::ostringstream grid;
-  write_instance(grid, r.instance(), {"reproducer of a disagreement: " + r.problem});
-  write("instance.grid", grid.str());
   auto lines = [](const std::vector<std::string>& v) {
     std::string s;
     for (const auto& x : v) s += x + "\n";
     return s;
   };
-  write("sat-schedule.txt", lines(r.sat_schedule));
-  write("solver-schedule.txt", lines(r.solver_schedule));
+  if (r.ran_discrete) {
+    std::ostringstream grid;
+    write_instance(grid, r.instance(), {"reproducer of a disagreement: " + r.problem});
+    write("instance.grid", grid.str());
+    write("sat-schedule.txt", lines(r.sat_schedule));
+    write("solver-schedule.txt", lines(r.solver_schedule));
+  }
+  std::string continuous_files;
+  if (r.ran_continuous) {
+    std::ostringstream grid;
+    write_instance(grid, r.compiled_continuous.instance, {"reproducer of a disagreement: " + r.problem});
+    write("instance-continuous.grid", grid.str());
+    write("sat-times.txt", lines(r.csat_times));
+    write("solver-times.txt", lines(r.csolver_times));
+    continuous_files =
+        "instance-continuous.grid  the instance compiled for continuous time\n"
+        "sat-times.txt        CaDiCaL's model lifted to start times (gridlock check instance-continuous.grid "
+        "--times sat-times.txt)\n"
+        "solver-times.txt     the exact continuous solver's start times\n";
+  }
   std::string flags;
+  if (opt.model != VerifyModel::Discrete) flags += std::string(" --model ") + verify_model_name(opt.model);
   if (opt.mutation != Mutation::None) flags += std::string(" --break-gadget ") + mutation_name(opt.mutation);
+  if (opt.direct) flags += " --direct";
   write("README.txt", "gridlock verify found a disagreement on " + r.name + ":\n  " + r.problem +
                           "\n\nCaDiCaL: " + tri_name(r.sat) + "  exact solver: " + tri_name(r.discrete) +
                           "  gap checker: " + tri_name(r.continuous) +
+                          (r.ran_continuous ? std::string("  exact continuous solver: ") + tri_name(r.continuous_solver)
+                                            : std::string()) +
                           "\n\nformula.cnf          the formula\n"
-                          "lsat.cnf             its LSAT<=3 form (the compiled one)\n"
-                          "instance.grid        the compiled instance\n"
+                          "lsat.cnf             its LSAT<=3 form (the compiled one)\n" +
+                          (r.ran_discrete ? std::string("instance.grid        the compiled instance\n"
                           "sat-schedule.txt     CaDiCaL's model lifted to a schedule (gridlock check instance.grid "
                           "--order-file sat-schedule.txt)\n"
-                          "solver-schedule.txt  the exact solver's schedule\n"
+                          "solver-schedule.txt  the exact solver's schedule\n") : std::string()) +
+                          continuous_files +
                           "run.sh               replays the check\n");
   write("run.sh", "#!/bin/sh\n# Replays the disagreement (run from this folder, gridlock on PATH or GRIDLOCK set).\n"
                   "exec \"${GRIDLOCK:-gridlock}\" verify formula.cnf" +

@@ -2,7 +2,8 @@
 //
 // For a CNF formula F: answer "is F satisfiable?" three ways and compare.
 //  1. CaDiCaL on F (its model is checked against F).
-//  2. If F is not LSAT<=3, reduce it with to-lsat to G (else G = F); compile
+//  2. If F is not LSAT<=3, reduce it with to-lsat to G (else, or with
+//     VerifyOptions::direct, G = F); compile
 //     G into a lattice instance I; the exact discrete solver on I.
 //  3. The linear-time gap checker on I (continuous model): every compiled
 //     instance is expected to be YES (paper: continuous time is easy), and
@@ -10,9 +11,18 @@
 // Certificates are checked both ways: F's model -> G's assignment -> a
 // schedule of I -> the simulator; the solver's schedule (already replayed by
 // the simulator inside the solver) -> an assignment of G -> of F -> F.
+//
+// The continuous model (VerifyOptions::model Continuous or Both): G is also
+// compiled for continuous time (compile_formula with ReductionModel::
+// Continuous) into I', and the exact continuous solver (solver/continuous.hpp)
+// decides I'. Expected: its answer is CaDiCaL's. Certificates: F's model ->
+// start times of I' (times_from_assignment) -> the simulator; the solver's
+// start times -> the simulator again -> an assignment (assignment_from_times)
+// -> of F -> F.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,10 +36,22 @@ namespace gridlock {
 enum class Tri { Yes, No, Unknown };
 const char* tri_name(Tri t);  // "YES", "NO", "UNKNOWN"
 
+// Which reductions verify checks: the discrete one (exact discrete solver and
+// gap checker), the continuous one (exact continuous solver), or both.
+enum class VerifyModel { Discrete, Continuous, Both };
+const char* verify_model_name(VerifyModel m);  // "discrete", "continuous", "both"
+std::optional<VerifyModel> parse_verify_model(const std::string& s);
+
 struct VerifyOptions {
-  double solve_seconds = 60;           // limit of the exact solver (then UNKNOWN)
+  VerifyModel model = VerifyModel::Discrete;
+  double solve_seconds = 60;           // limit of each exact solver (then UNKNOWN)
   uint64_t max_states = 0;             // limit of the exact solver; 0 = none
   Mutation mutation = Mutation::None;  // test only: compile with a broken gadget
+  // Compile F itself, not its LSAT<=3 form (G = F; couplings may then have
+  // more than 3 operations, which the reduction's correctness does not need):
+  // small formulas stay small instances. Formulas with an empty clause still
+  // go through to-lsat.
+  bool direct = false;
 };
 
 // A certificate check: not applicable, checked and valid, checked and INVALID.
@@ -47,12 +69,27 @@ struct VerifyResult {
   Check solver_witness = Check::None;  // solver's schedule -> assignment -> F
   Check gaps_witness = Check::None;    // gaps YES: all couplings at time 0 -> simulator
   std::vector<std::string> sat_schedule, solver_schedule;  // coupling names
+  // The continuous reduction (when VerifyOptions::model asks for it).
+  bool ran_discrete = false, ran_continuous = false;
+  CompiledFormula compiled_continuous;   // G compiled for continuous time
+  Tri continuous_solver = Tri::Unknown;  // the exact continuous solver on it
+  Check csat_witness = Check::None;      // F's model -> start times -> simulator
+  Check csolver_witness = Check::None;   // solver's start times -> simulator -> assignment -> F
+  std::string csolver_issue;             // why csolver_witness is Invalid
+  std::vector<std::string> csat_times, csolver_times;  // "NAME TIME" lines
+  size_t cnodes = 0;
+  double ms_csolve = 0;
+  uint64_t csolver_conflicts = 0;
   double ms_sat = 0, ms_compile = 0, ms_solve = 0, ms_gaps = 0;
   uint64_t solver_states = 0;
   bool agree = false;   // everything consistent (UNKNOWN is not a disagreement)
   std::string problem;  // what disagreed, if anything
   // Number of certificates checked and valid (for the table).
   int witnesses_checked() const;
+  // Some exact solver that ran hit a limit (UNKNOWN).
+  bool solver_unknown() const {
+    return (ran_discrete && discrete == Tri::Unknown) || (ran_continuous && continuous_solver == Tri::Unknown);
+  }
 };
 
 // Runs the whole check. Never throws for a valid formula (validate(f)

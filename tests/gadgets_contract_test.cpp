@@ -14,6 +14,7 @@
 #include "gadgets/clause_gadget.hpp"
 #include "gadgets/gap_gadget.hpp"
 #include "gadgets/order_gadget.hpp"
+#include "gadgets/separation_gadget.hpp"
 #include "gadgets/variable_gadget.hpp"
 #include "lattice/simulate.hpp"
 #include "solver/gaps.hpp"
@@ -151,6 +152,7 @@ TEST(GadgetContract, EveryMutationChangesItsGadget) {
       {Mutation::ClauseTight, [](Canvas& c, Mutation m) { return place_clause_gadget(c, 0, {"p", "q", "r"}, "u", m); }},
       {Mutation::OrderLoose, [](Canvas& c, Mutation m) { return place_order_gadget(c, 0, "a", "b", m); }},
       {Mutation::OrderDropRelease, [](Canvas& c, Mutation m) { return place_order_gadget(c, 0, "a", "b", m); }},
+      {Mutation::SeparationLoose, [](Canvas& c, Mutation m) { return place_separation_gadget(c, 0, "a", "b", m); }},
   };
   ASSERT_EQ(cases.size(), all_mutations().size());
   for (const Case& k : cases) {

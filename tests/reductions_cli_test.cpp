@@ -82,6 +82,46 @@ TEST(LiftCli, CertificatesBothWaysThroughOtherSubcommands) {
   }
 }
 
+// The continuous reduction: compile --model continuous prints its sizes;
+// model -> start times (lift's simulator, then `check --times` on the
+// compiled instance) -> model; the continuous solver's times lift back too;
+// a falsifying model collides.
+TEST(LiftCli, ContinuousCertificatesBothWays) {
+  std::string dir = test::temp_dir();
+  const std::string f = kExamples + "tiny-sat.cnf";
+  auto comp = run_gridlock({"compile", f, "--model", "continuous", "-o", dir + "/c.grid", "--json"});
+  ASSERT_EQ(comp.exit_code, 0) << comp.err;
+  auto j = nlohmann::json::parse(comp.out);
+  EXPECT_EQ(j["model"], "continuous");
+  EXPECT_EQ(j["vertical_operations"], 1);
+  EXPECT_EQ(j["nodes"], 43 * 3 + 5 * 7 + 15 * 3 - 9);
+  auto text = run_gridlock({"compile", f, "--model", "continuous", "-o", dir + "/c2.grid"});
+  EXPECT_NE(text.out.find("c size formulas (n=3, m=3, L=7): nodes 43n+5L+15m-9 = 200"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("c gadgets: 3 variable, 3 clause, 7 order, 1 separation"), std::string::npos);
+  std::string model = test::write_file(dir + "/model.txt", run_gridlock({"cnf", "solve", f}).out);
+  auto lifted = run_gridlock({"lift", f, "--continuous", "--model", model});
+  ASSERT_EQ(lifted.exit_code, 10) << lifted.out << lifted.err;
+  std::string times = test::write_file(dir + "/times.txt", lifted.out);
+  EXPECT_EQ(run_gridlock({"check", dir + "/c.grid", "--times", times}).exit_code, 10);
+  // Everything at time 0 collides on the continuous instance (the separation).
+  std::string zero;
+  for (const char* q : {"x1:T", "x1:F", "x2:T", "x2:F", "x3:T", "x3:F", "y1", "y2", "y3", "z1", "z2", "z3", "u1", "u2",
+                        "u3"})
+    zero += std::string(q) + " 0\n";
+  EXPECT_EQ(run_gridlock({"check", dir + "/c.grid", "--times", test::write_file(dir + "/zero.txt", zero)}).exit_code, 20);
+  auto back = run_gridlock({"lift", f, "--times", times});
+  EXPECT_EQ(back.exit_code, 10) << back.out;
+  EXPECT_NE(back.out.find("c the lifted assignment satisfies the formula"), std::string::npos);
+  auto solved = run_gridlock({"solve", dir + "/c.grid", "--model", "continuous"});
+  ASSERT_EQ(solved.exit_code, 10) << solved.out;
+  auto back2 = run_gridlock({"lift", f, "--times", test::write_file(dir + "/solver.txt", solved.out)});
+  EXPECT_EQ(back2.exit_code, 10) << back2.out;
+  auto bad = run_gridlock({"lift", f, "--continuous", "--model", test::write_file(dir + "/bad.txt", "s SATISFIABLE\nv -1 -2 -3 0\n")});
+  EXPECT_EQ(bad.exit_code, 20) << bad.out;
+  auto err = run_gridlock({"lift", f, "--continuous", "--schedule", times});
+  EXPECT_EQ(err.err, "gridlock: error: --schedule is a discrete order; use --times for the continuous instance\n");
+}
+
 TEST(LiftCli, BadModelCollidesAndBadScheduleIsRefused) {
   std::string dir = test::temp_dir();
   std::string f = kExamples + "tiny-sat.cnf";  // (1 2 3)(-2 3)(1 -3)

@@ -205,3 +205,109 @@ TEST(GenInstancesCli, YesNoMix) {
 
 }  // namespace
 }  // namespace gridlock
+
+// The continuous reduction end to end (docs/verify.md): the bundled small
+// examples agree with CaDiCaL under the exact continuous solver, every
+// certificate checked; the broken separation gadget is caught and shrunk.
+namespace gridlock {
+namespace {
+
+TEST(VerifyContinuousCli, BundledExamplesAgree) {
+  // Compiled as they are (--direct): through to-lsat tiny-sat becomes 47
+  // couplings, beyond what the continuous solver decides in seconds.
+  std::vector<std::string> args = {"verify", "--model", "both", "--direct", "--json", "--timeout", "120"};
+  for (const char* f : {"tiny-sat.cnf", "tiny-unsat.cnf"}) args.push_back(kExamples + "/" + f);
+  auto r = run_gridlock(args);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["model"], "both");
+  ASSERT_EQ(j["formulas"].size(), 2u);
+  EXPECT_EQ(j["formulas"][0]["continuous_solver"], "YES");
+  EXPECT_EQ(j["formulas"][1]["continuous_solver"], "NO");
+  // tiny-sat: CaDiCaL's model and both solvers' schedules, each in both
+  // models where it applies: 3 discrete + 2 continuous certificates.
+  EXPECT_EQ(j["formulas"][0]["witnesses_checked"], 5);
+  EXPECT_EQ(j["summary"]["agree"], 2);
+}
+
+TEST(VerifyContinuousCli, LooseSeparationIsCaughtWithAReproducer) {
+  std::string dir = test::temp_dir();
+  auto r = run_gridlock({"verify", kExamples + "/tiny-unsat.cnf", "--model", "continuous", "--direct", "--reproducers",
+                         dir, "--break-gadget", "separation-loose"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("DISAGREE: exact continuous solver says YES, CaDiCaL says UNSAT"), std::string::npos) << r.out;
+  for (const char* f : {"formula.cnf", "instance-continuous.grid", "solver-times.txt", "README.txt", "run.sh"})
+    EXPECT_TRUE(fs::exists(dir + "/tiny-unsat/" + f)) << f;
+  EXPECT_NE(test::read_file(dir + "/tiny-unsat/run.sh")
+                .find("verify formula.cnf --model continuous --break-gadget separation-loose --direct"),
+            std::string::npos);
+  // The reproducer replays: the solver's start times are collision-free on the broken instance...
+  auto c = run_gridlock({"check", dir + "/tiny-unsat/instance-continuous.grid", "--times",
+                         dir + "/tiny-unsat/solver-times.txt"});
+  EXPECT_EQ(c.exit_code, 10) << c.out;
+  // ...and the real gadget says NO.
+  auto good = run_gridlock({"verify", kExamples + "/tiny-unsat.cnf", "--model", "continuous", "--direct"});
+  EXPECT_EQ(good.exit_code, 0) << good.out;
+  r = run_gridlock({"verify", kExamples + "/tiny-unsat.cnf", "--model", "sometimes"});
+  EXPECT_EQ(r.err, "gridlock: error: --model must be discrete, continuous or both, not 'sometimes'\n");
+}
+
+TEST(FuzzContinuousCli, FindsAndShrinksABrokenSeparationGadget) {
+  std::string dir = test::temp_dir();
+  auto r = run_gridlock({"fuzz", "--json", "--model", "continuous", "--seed", "1", "--count", "50", "--min-vars", "2",
+                         "--max-vars", "4", "--out", dir, "--break-gadget", "separation-loose"});
+  ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["status"], "DISAGREE");
+  ASSERT_EQ(j["findings"].size(), 1u);
+  const auto& f = j["findings"][0];
+  EXPECT_LE(f["shrunk_clauses"].get<int>(), 2) << f["dimacs"];
+  EXPECT_LE(f["shrunk_variables"].get<int>(), 2) << f["dimacs"];
+  EXPECT_NE(f["replay"].get<std::string>().find("--model continuous"), std::string::npos);
+  const std::string folder = f["folder"];
+  // Still disagrees with the broken gadget, agrees with the real one.
+  auto bad = run_gridlock({"verify", folder + "/formula.cnf", "--model", "continuous", "--break-gadget",
+                           "separation-loose", "--reproducers", dir + "/r"});
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+  auto good = run_gridlock({"verify", folder + "/formula.cnf", "--model", "continuous"});
+  EXPECT_EQ(good.exit_code, 0) << good.out;
+}
+
+}  // namespace
+}  // namespace gridlock
+
+namespace gridlock {
+namespace {
+
+// gen-instances --model both: every continuous YES label is confirmed by its
+// start times through `gridlock check --times`, every NO by `cnf solve`; the
+// continuous instance differs from the discrete one by the separation gadget.
+TEST(GenInstancesContinuousCli, LabelsAreConfirmed) {
+  std::string dir = test::temp_dir();
+  auto r = run_gridlock({"gen-instances", "-o", dir, "--model", "both", "--vars", "5", "--threshold", "3", "--lsat",
+                         "1", "--seed", "4", "--formula", kExamples + "/tiny-unsat.cnf"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto m = nlohmann::json::parse(test::read_file(dir + "/manifest.json"));
+  EXPECT_EQ(m["model"], "both");
+  ASSERT_EQ(m["instances"].size(), 10u);  // 5 formulas, 2 models
+  int continuous = 0;
+  for (const auto& e : m["instances"]) {
+    const std::string name = e["name"];
+    SCOPED_TRACE(name);
+    const std::string inst = dir + "/" + e["instance"].get<std::string>();
+    ASSERT_TRUE(fs::exists(inst));
+    if (e["model"] != "continuous") continue;
+    ++continuous;
+    EXPECT_NE(test::read_file(inst).find(" +y"), std::string::npos);  // the separation gadget's lift
+    if (e["answer"] == "YES") {
+      auto c = run_gridlock({"check", inst, "--times", dir + "/" + e["certificate"]["file"].get<std::string>()});
+      EXPECT_EQ(c.exit_code, 10) << c.out;
+    } else {
+      EXPECT_EQ(run_gridlock({"cnf", "solve", dir + "/" + e["formula"].get<std::string>()}).exit_code, 20);
+    }
+  }
+  EXPECT_EQ(continuous, 5);
+}
+
+}  // namespace
+}  // namespace gridlock

@@ -21,15 +21,19 @@ int run_compile(const std::vector<std::string>& args) {
     ("help,h", "show this help")
     ("output,o", po::value<std::string>()->default_value("-"), "write the instance (.grid) here ('-': standard output)")
     ("svg", po::value<std::string>(), "also draw the instance to this SVG file")
+    ("model", po::value<std::string>()->default_value("discrete"),
+     "discrete (the NP-completeness reduction) or continuous (the link y_n < z_1 becomes a separation gadget)")
     ("json", "print the sizes as one JSON object (needs -o FILE)");
   po::options_description hidden;
   hidden.add_options()
     ("break-gadget", po::value<std::string>()->default_value("none"), "test only: compile with a broken gadget");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "formula", vm, "compile FORMULA.cnf [-o INSTANCE.grid] [--svg INSTANCE.svg]",
+  if (!cli::parse_args_one_input(args, opts, "formula", vm, "compile FORMULA.cnf [--model discrete|continuous] [-o INSTANCE.grid] [--svg INSTANCE.svg]",
                        "Compiles a CNF formula (clauses of 1 or more literals; LSAT<=3 for couplings of at most 3\n"
                        "operations, see 'gridlock cnf to-lsat') into a lattice instance of Discrete Collision-free\n"
                        "Schedule: collision-free schedule exists iff the formula is satisfiable (docs/gadgets.md).\n"
+                       "With --model continuous, of continuous Collision-free Schedule (start times), the same\n"
+                       "way: one separation gadget (a vertical expansion) makes z_1 wait until y_n has finished.\n"
                        "Operations are named after their gadget: x3.T, x3.F, x3.y, x3.z (variable x3), C5.~x3,\n"
                        "C5.u (clause 5), O7.y2 (order gadget 7); couplings x3:T, x3:F, y3, z3, u5.",
                        &hidden))
@@ -38,6 +42,10 @@ int run_compile(const std::vector<std::string>& args) {
   const std::string out_path = vm["output"].as<std::string>();
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
+  const std::string model_name = vm["model"].as<std::string>();
+  if (model_name != "discrete" && model_name != "continuous")
+    throw UserError("--model must be discrete or continuous, not '" + model_name + "'");
+  const ReductionModel model = model_name == "continuous" ? ReductionModel::Continuous : ReductionModel::Discrete;
   if (vm.count("json") && out_path == "-") throw UserError("--json needs -o FILE for the instance");
   const std::string svg_path = vm.count("svg") ? vm["svg"].as<std::string>() : "";
   cli::refuse_overwriting_input(out_path, {path});
@@ -46,7 +54,7 @@ int run_compile(const std::vector<std::string>& args) {
   cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {
-    c = compile_formula(f, *mutation);
+    c = compile_formula(f, *mutation, model);
   } catch (const std::invalid_argument& e) {
     throw UserError(Diagnostic{path, 0, e.what()});
   }
@@ -73,6 +81,8 @@ int run_compile(const std::vector<std::string>& args) {
   ans.data()["edges"] = s.edges;
   ans.data()["operations"] = s.ops;
   ans.data()["couplings"] = s.couplings;
+  ans.data()["model"] = reduction_model_name(model);
+  ans.data()["vertical_operations"] = s.vertical_ops;
   ans.data()["max_coupling"] = s.max_coupling;
   ans.data()["oversize"] = s.oversize;
   ans.data()["output"] = out_path;

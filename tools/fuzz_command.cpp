@@ -51,6 +51,9 @@ int run_fuzz(const std::vector<std::string>& args) {
     ("min-vars", po::value<std::string>()->default_value("3"), "fewest variables of a formula (1 to 64)")
     ("max-vars", po::value<std::string>()->default_value("6"), "most variables of a formula (1 to 64)")
     ("kinds", po::value<std::string>()->default_value("mix"), "generators, comma-separated: ksat, lsat, planted, mix")
+    ("model", po::value<std::string>()->default_value("discrete"),
+     "which reduction to check, as in 'gridlock verify': discrete, continuous or both")
+    ("direct", "compile each formula as it is, not its LSAT<=3 form (as in 'gridlock verify')")
     ("timeout", po::value<std::string>()->default_value("10"), "seconds the exact solver may spend on one formula")
     ("max-states", po::value<std::string>()->default_value("2000000"), "search nodes the exact solver may visit per formula")
     ("out", po::value<std::string>()->default_value("fuzz-failures"), "folder for shrunk counterexamples")
@@ -64,7 +67,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   po::variables_map vm;
   if (!cli::parse_args(args, opts, pos, vm, "fuzz [--seed S] [--count N | --time T] [--shard K/N]",
                        "Random small formulas (random 3-SAT around the threshold, random LSAT<=3, planted 3-SAT),\n"
-                       "each checked three ways as 'gridlock verify' does. Every disagreement is shrunk (delta\n"
+                       "each checked as 'gridlock verify' does (--model continuous: against the exact continuous\n"
+                       "solver). Every disagreement is shrunk (delta\n"
                        "debugging over clauses, literals, variables) and saved as a replayable folder before it\n"
                        "is reported. On a terminal a progress line shows the rate and the counts.\n"
                        "Exit 0 if no formula disagreed, 1 otherwise. SIGINT/SIGTERM end the campaign after the\n"
@@ -87,6 +91,10 @@ int run_fuzz(const std::vector<std::string>& args) {
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   vo.mutation = *mutation;
+  auto model = parse_verify_model(vm["model"].as<std::string>());
+  if (!model) throw UserError("--model must be discrete, continuous or both, not '" + vm["model"].as<std::string>() + "'");
+  vo.model = *model;
+  vo.direct = vm.count("direct") > 0;
   const bool json = vm.count("json") > 0;
   uint64_t first = shard, last = UINT64_MAX;  // indices first, first + N, ... < last
   if (vm.count("index")) {
@@ -105,7 +113,8 @@ int run_fuzz(const std::vector<std::string>& args) {
 
   std::string header = "gridlock fuzz: seed " + std::to_string(p.seed) + ", shard " + std::to_string(shard) + "/" +
                        std::to_string(shards) + ", " + std::to_string(p.min_vars) + ".." + std::to_string(p.max_vars) +
-                       " variables, kinds " + vm["kinds"].as<std::string>();
+                       " variables, kinds " + vm["kinds"].as<std::string>() + ", model " + verify_model_name(vo.model) +
+                       (vo.direct ? ", direct" : "");
   if (*mutation != Mutation::None) header += ", BROKEN GADGET " + std::string(mutation_name(*mutation));
   if (!json) std::cout << "c " << header << std::endl;
 
@@ -136,7 +145,7 @@ int run_fuzz(const std::vector<std::string>& args) {
     ++done;
     sat += r.sat == Tri::Yes;
     unsat += r.sat == Tri::No;
-    unknown += r.agree && r.discrete == Tri::Unknown;
+    unknown += r.agree && r.solver_unknown();
     certificates += static_cast<uint64_t>(r.witnesses_checked());
     if (!r.agree) {
       ++disagreements;
@@ -154,6 +163,8 @@ int run_fuzz(const std::vector<std::string>& args) {
       std::string replay = "gridlock fuzz --seed " + std::to_string(p.seed) + " --index " + std::to_string(i) +
                            " --min-vars " + std::to_string(p.min_vars) + " --max-vars " + std::to_string(p.max_vars) +
                            " --kinds " + vm["kinds"].as<std::string>() +
+                           (vo.model != VerifyModel::Discrete ? std::string(" --model ") + verify_model_name(vo.model) : "") +
+                           (vo.direct ? " --direct" : "") +
                            (*mutation != Mutation::None ? std::string(" --break-gadget ") + mutation_name(*mutation) : "");
       if (!json) {
         std::cout << "c shrunk in " << st.tries << " tries to " << small.num_vars << " variables, "
@@ -195,7 +206,8 @@ int run_fuzz(const std::vector<std::string>& args) {
                    {"time", time_limit}, {"index", vm.count("index") ? nlohmann::json(first) : nlohmann::json()},
                    {"min_vars", p.min_vars}, {"max_vars", p.max_vars}, {"kinds", vm["kinds"].as<std::string>()},
                    {"max_states", vo.max_states}, {"keep_going", vm.count("keep-going") > 0},
-                   {"break_gadget", mutation_name(*mutation)}};
+                   {"break_gadget", mutation_name(*mutation)}, {"model", verify_model_name(vo.model)},
+                   {"direct", vo.direct}};
   if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), j.dump(2) + "\n");
   if (json) {
     std::cout << j.dump() << std::endl;

@@ -6,6 +6,7 @@
 #include "gadgets/canvas.hpp"
 #include "gadgets/clause_gadget.hpp"
 #include "gadgets/order_gadget.hpp"
+#include "gadgets/separation_gadget.hpp"
 #include "gadgets/variable_gadget.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/render.hpp"
@@ -26,9 +27,9 @@ int run_gadget(const std::vector<std::string>& args) {
     ("svg", po::value<std::string>(), "also draw it to this SVG file")
     ("break-gadget", po::value<std::string>()->default_value("none"),
      "draw a deliberately broken version (variable-loose-y, clause-loose, clause-tight, order-loose, "
-     "order-drop-release)");
+     "order-drop-release, separation-loose)");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "kind", vm, "gadget variable|clause|order [-k K] [-o OUT.grid] [--svg OUT.svg]",
+  if (!cli::parse_args_one_input(args, opts, "kind", vm, "gadget variable|clause|order|separation [-k K] [-o OUT.grid] [--svg OUT.svg]",
                        "Draws one gadget of the reduction alone, with its contract (the states of its operations\n"
                        "that collide) in 'c' lines. Every operation is its own coupling."))
     return 0;
@@ -65,8 +66,13 @@ int run_gadget(const std::vector<std::string>& args) {
     p = place_order_gadget(canvas, 0, "a", "b", *mutation);
     words = "order gadget a < b: collides iff b is done before a";
     title = "order gadget a < b";
+  } else if (kind == "separation") {
+    p = place_separation_gadget(canvas, 0, "a", "b", *mutation);
+    words = "separation gadget a << b (continuous model): collides iff b starts before a has finished, "
+            "i.e. t(b) < t(a) + 1; a is vertical, the row above the gadget must stay free";
+    title = "separation gadget a << b";
   } else {
-    throw UserError("unknown gadget '" + kind + "' (variable, clause or order)");
+    throw UserError("unknown gadget '" + kind + "' (variable, clause, order or separation)");
   }
   Instance inst = canvas.build();
   std::vector<std::string> comments = {words, "contract: " + p.contract.str()};

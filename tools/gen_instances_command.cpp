@@ -1,5 +1,6 @@
 // gridlock gen-instances: a labelled benchmark set of lattice instances of
-// Discrete Collision-free Schedule, each answer certified (docs/verify.md):
+// Discrete (and/or, --model, Continuous) Collision-free Schedule, each answer
+// certified (docs/verify.md):
 // YES by a schedule the simulator has accepted, NO by CaDiCaL's UNSAT of the
 // source formula (the reduction preserves satisfiability: docs/gadgets.md,
 // and verify/fuzz test it).
@@ -107,7 +108,10 @@ int run_gen_instances(const std::vector<std::string>& args) {
                                                              "threshold, then lsat) with i % N == K; the manifest is then "
                                                              "manifest-shard-K-of-N.json, and shards may share a folder "
                                                              "(not with --yes/--no)")
-    ("json-out", po::value<std::string>(), "also write the manifest to this file ('gridlock merge' combines shards)");
+    ("json-out", po::value<std::string>(), "also write the manifest to this file ('gridlock merge' combines shards)")
+    ("model", po::value<std::string>()->default_value("discrete"),
+     "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both "
+     "(NAME.grid and NAME-continuous.grid)");
   po::positional_options_description pos;
   po::variables_map vm;
   if (!cli::parse_args(args, opts, pos, vm, "gen-instances -o DIR [--threshold N] [--lsat N] [--vars V] [--formula F]...",
@@ -118,7 +122,9 @@ int run_gen_instances(const std::vector<std::string>& args) {
                        "manifest.json lists every instance with its answer, certificate, sizes and seed; it is\n"
                        "written last. Every file is written atomically. On a terminal a progress line shows the\n"
                        "count and the formula in progress. SIGINT/SIGTERM stop between formulas: the finished\n"
-                       "ones stay, with a manifest marked \"interrupted\": true; exit 130/143.",
+                       "ones stay, with a manifest marked \"interrupted\": true; exit 130/143.\n"
+                       "--model continuous: instances of Continuous Collision-free Schedule (compile --model\n"
+                       "continuous); YES certified by start times (NAME.times, for 'gridlock check --times').",
                        nullptr))
     return 0;
   const std::string out = vm["out"].as<std::string>();
@@ -133,6 +139,12 @@ int run_gen_instances(const std::vector<std::string>& args) {
   uint64_t shard = 0, shards = 1;
   cli::parse_shard(vm["shard"].as<std::string>(), shard, shards);
   if (mix && shards > 1) throw UserError("--shard cannot be combined with --yes/--no (they draw until counts are met)");
+  const std::string model_name = vm["model"].as<std::string>();
+  if (model_name != "discrete" && model_name != "continuous" && model_name != "both")
+    throw UserError("--model must be discrete, continuous or both, not '" + model_name + "'");
+  std::vector<ReductionModel> models;
+  if (model_name != "continuous") models.push_back(ReductionModel::Discrete);
+  if (model_name != "discrete") models.push_back(ReductionModel::Continuous);
 
   std::vector<Source> given;
   if (vm.count("formula"))
@@ -175,46 +187,64 @@ int run_gen_instances(const std::vector<std::string>& args) {
     if (random && mix && ((is_yes && want_yes >= 0 && yes >= want_yes) || (!is_yes && want_no >= 0 && no >= want_no)))
       return false;
     LsatReduction red = reduce_to_lsat(s.formula);
-    CompiledFormula c = compile_formula(red.output());
-    nlohmann::json e;
-    e["index"] = index;  // position in the unsharded set
-    e["name"] = s.name;
-    e["instance"] = s.name + ".grid";
-    e["formula"] = s.name + ".cnf";
-    e["origin"] = s.origin;
-    if (s.seed) e["seed"] = std::to_string(s.seed);  // a string: seeds above 2^53 survive JSON readers
-    e["variables"] = s.formula.num_vars;
-    e["clauses"] = s.formula.clauses.size();
-    e["lsat_variables"] = red.output().num_vars;
-    e["lsat_clauses"] = red.output().clauses.size();
-    e["nodes"] = c.stats.nodes;
-    e["operations"] = c.stats.ops;
-    e["couplings"] = c.stats.couplings;
-    e["max_coupling"] = c.stats.max_coupling;
-    if (is_yes) {
-      std::vector<CouplingId> order = schedule_from_assignment(c, red.lift_to_target(sat.model));
-      Simulator sim(c.instance);
-      if (sim.run_order(order).collision)
-        throw std::logic_error("the lifted schedule of " + s.name + " collides: the reduction is wrong here");
-      std::string text;
-      for (CouplingId q : order) text += c.instance.couplings()[q].name + "\n";
-      write(s.name + ".schedule", text);
-      e["answer"] = "YES";
-      e["certificate"] = {{"kind", "schedule"}, {"file", s.name + ".schedule"}, {"checked_by", "gridlock simulator"}};
-      ++yes;
-    } else {
-      e["answer"] = "NO";
-      e["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
-      ++no;
-    }
-    std::ostringstream grid;
-    write_instance(grid, c.instance, {s.name + ": " + s.origin, std::string("answer: ") + (is_yes ? "YES" : "NO")});
-    // The instance last: a .grid on disk always has its formula (and witness).
+    // The formula first, each instance after its witness: a .grid on disk
+    // always has its formula and witness.
     write(s.name + ".cnf", to_dimacs(s.formula));
-    write(s.name + ".grid", grid.str());
-    entries.push_back(e);
-    std::cout << "c " << s.name << ": " << (is_yes ? "YES" : "NO") << ", " << c.stats.nodes << " nodes, "
-              << c.stats.couplings << " couplings" << std::endl;
+    for (ReductionModel model : models) {
+      const bool cont = model == ReductionModel::Continuous;
+      // With both models the continuous files get a suffix.
+      const std::string name = s.name + (cont && models.size() == 2 ? "-continuous" : "");
+      CompiledFormula c = compile_formula(red.output(), Mutation::None, model);
+      nlohmann::json e;
+      e["index"] = index;  // position in the unsharded set
+      e["name"] = name;
+      e["model"] = reduction_model_name(model);
+      e["instance"] = name + ".grid";
+      e["formula"] = s.name + ".cnf";
+      e["origin"] = s.origin;
+      if (s.seed) e["seed"] = std::to_string(s.seed);  // a string: seeds above 2^53 survive JSON readers
+      e["variables"] = s.formula.num_vars;
+      e["clauses"] = s.formula.clauses.size();
+      e["lsat_variables"] = red.output().num_vars;
+      e["lsat_clauses"] = red.output().clauses.size();
+      e["nodes"] = c.stats.nodes;
+      e["operations"] = c.stats.ops;
+      e["couplings"] = c.stats.couplings;
+      e["max_coupling"] = c.stats.max_coupling;
+      if (is_yes) {
+        Simulator sim(c.instance);
+        std::string text, file;
+        if (cont) {
+          Schedule times = times_from_assignment(c, red.lift_to_target(sat.model));
+          if (sim.run(times).collision)
+            throw std::logic_error("the lifted start times of " + name + " collide: the reduction is wrong here");
+          for (CouplingId q = 0; q < c.instance.couplings().size(); ++q)
+            text += c.instance.couplings()[q].name + " " + times.start[q].str() + "\n";
+          file = name + ".times";
+          e["certificate"] = {{"kind", "start times"}, {"file", file}, {"checked_by", "gridlock simulator"}};
+        } else {
+          std::vector<CouplingId> order = schedule_from_assignment(c, red.lift_to_target(sat.model));
+          if (sim.run_order(order).collision)
+            throw std::logic_error("the lifted schedule of " + name + " collides: the reduction is wrong here");
+          for (CouplingId q : order) text += c.instance.couplings()[q].name + "\n";
+          file = name + ".schedule";
+          e["certificate"] = {{"kind", "schedule"}, {"file", file}, {"checked_by", "gridlock simulator"}};
+        }
+        write(file, text);
+        e["answer"] = "YES";
+      } else {
+        e["answer"] = "NO";
+        e["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
+      }
+      std::ostringstream grid;
+      write_instance(grid, c.instance, {name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
+                                        std::string("answer: ") + (is_yes ? "YES" : "NO")});
+      write(name + ".grid", grid.str());
+      entries.push_back(e);
+      std::cout << "c " << name << ": " << (is_yes ? "YES" : "NO") << ", " << c.stats.nodes << " nodes, "
+                << c.stats.couplings << " couplings" << std::endl;
+    }
+    (is_yes ? yes : no) += 1;
     return true;
   };
 
@@ -255,7 +285,13 @@ int run_gen_instances(const std::vector<std::string>& args) {
 
   nlohmann::json manifest;
   manifest["generator"] = "gridlock gen-instances";
-  manifest["problem"] = "Discrete Collision-free Schedule (is there an order of the couplings with no collision?)";
+  manifest["problem"] =
+      model_name == "discrete"
+          ? "Discrete Collision-free Schedule (is there an order of the couplings with no collision?)"
+      : model_name == "continuous"
+          ? "Continuous Collision-free Schedule (are there start times of the couplings with no collision?)"
+          : "Discrete and Continuous Collision-free Schedule (entry field 'model')";
+  manifest["model"] = model_name;
   manifest["seed"] = std::to_string(seed);  // a string: seeds above 2^53 survive JSON readers
   manifest["vars"] = vars;
   manifest["yes"] = yes;

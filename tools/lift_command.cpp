@@ -1,6 +1,8 @@
 // gridlock lift: the reduction's certificates, both ways (reductions/compile.hpp).
 //   --model M     satisfying assignment -> collision-free schedule, checked by the simulator
 //   --schedule S  collision-free schedule -> satisfying assignment, checked against the formula
+//   --continuous  the same for the continuous reduction: start times instead of an order
+//   --times T     collision-free start times -> satisfying assignment (continuous)
 #include <stdexcept>
 
 #include "cnf/assignment.hpp"
@@ -24,31 +26,42 @@ int run_lift(const std::vector<std::string>& args) {
                                         "themselves (\"1 -2 3\"), every variable given: lift it to a schedule")
     ("schedule", po::value<std::string>(), "a discrete order of the couplings (e.g. 'gridlock solve' output): "
                                            "lift it to an assignment")
+    ("continuous", "the continuous reduction (compile --model continuous): --model gives start times")
+    ("times", po::value<std::string>(), "start times of the continuous instance ('NAME TIME' lines, e.g. 'gridlock "
+                                        "solve --model continuous' output): lift them to an assignment")
     ("json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "formula", vm, "lift FORMULA.cnf (--model M | --schedule S)",
+  if (!cli::parse_args_one_input(args, opts, "formula", vm, "lift FORMULA.cnf (--model M [--continuous] | --schedule S | --times T)",
                        "The certificates of the reduction, each checked by an independent path. The formula is\n"
                        "compiled exactly as 'gridlock compile' does.\n"
                        "  --model M: the schedule x_i:T/F (by M), y_1..y_n, z_1..z_n, u_1..u_m, then the other\n"
                        "    values; run through the exact simulator: s YES (10) with the order on v lines if it\n"
                        "    is collision-free, s NO (20) with the collision otherwise (M does not satisfy F).\n"
                        "  --schedule S: simulated first (it must be collision-free), then x_i = [x_i:T before x_i:F];\n"
-                       "    s YES (10) with the assignment on v lines if it satisfies F, s NO (20) otherwise."))
+                       "    s YES (10) with the assignment on v lines if it satisfies F, s NO (20) otherwise.\n"
+                       "  --continuous: compile for continuous time; --model M then gives start times (the value of\n"
+                       "    each x_i at 0, every y_i at 1, the rest at 2), as 'NAME TIME' v lines.\n"
+                       "  --times T: start times of the continuous instance, simulated first, then\n"
+                       "    x_i = [t(x_i:T) <= t(y_n)]; checked against F as for --schedule."))
     return 0;
-  if (vm.count("model") + vm.count("schedule") != 1) throw UserError("give exactly one of --model, --schedule");
+  if (vm.count("model") + vm.count("schedule") + vm.count("times") != 1)
+    throw UserError("give exactly one of --model, --schedule, --times");
+  if (vm.count("schedule") && vm.count("continuous"))
+    throw UserError("--schedule is a discrete order; use --times for the continuous instance");
+  const bool continuous = vm.count("continuous") || vm.count("times");
   const std::string path = vm["formula"].as<std::string>();
   Formula f = cli::load_formula(path, true, cli::FormulaUse::Compile);
   cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {
-    c = compile_formula(f);
+    c = compile_formula(f, Mutation::None, continuous ? ReductionModel::Continuous : ReductionModel::Discrete);
   } catch (const std::invalid_argument& e) {
     throw UserError(Diagnostic{path, 0, e.what()});
   }
   const Instance& inst = c.instance;
   Answer ans("lift", vm.count("json") > 0);
-  ans.comment("gridlock lift " + path + ": " + summary(f) + "; instance of " + std::to_string(inst.num_nodes()) +
-              " nodes, " + std::to_string(inst.couplings().size()) + " couplings");
+  ans.comment("gridlock lift " + path + ": " + summary(f) + "; " + reduction_model_name(c.model) + " instance of " +
+              std::to_string(inst.num_nodes()) + " nodes, " + std::to_string(inst.couplings().size()) + " couplings");
   Simulator sim(inst);
   if (vm.count("model")) {
     std::vector<bool> value;
@@ -56,26 +69,45 @@ int run_lift(const std::vector<std::string>& args) {
     long bad = first_falsified_clause(f, value);
     ans.comment(bad < 0 ? "the model satisfies the formula"
                         : "the model falsifies clause " + std::to_string(bad + 1) + ": expect a collision");
-    std::vector<CouplingId> order = schedule_from_assignment(c, value);
-    SimResult r = sim.run_order(order);
+    std::vector<CouplingId> order;
+    Schedule sched;
+    if (continuous) {
+      sched = times_from_assignment(c, value);
+    } else {
+      order = schedule_from_assignment(c, value);
+      sched = schedule_from_order(order);
+    }
+    SimResult r = sim.run(sched);
     if (r.collision) {
       ans.comment("simulator: " + describe(inst, sim.regions(), *r.collision));
       ans.data()["collision"] = describe(inst, sim.regions(), *r.collision);
       return ans.finish(Verdict::No);
     }
     ans.comment("simulator: the schedule is collision-free");
-    for (CouplingId q : order) ans.witness(inst.couplings()[q].name);
+    if (continuous) {
+      ans.witness_one_per_line();
+      for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+        ans.witness(inst.couplings()[q].name + " " + sched.start[q].str());
+    } else {
+      for (CouplingId q : order) ans.witness(inst.couplings()[q].name);
+    }
     return ans.finish(Verdict::Yes);
   }
-  std::vector<CouplingId> order;
-  if (auto e = read_order_file(inst, vm["schedule"].as<std::string>(), order)) throw UserError(*e);
-  SimResult r = sim.run_order(order);
+  Schedule sched;
+  if (continuous) {
+    if (auto e = read_times_file(inst, vm["times"].as<std::string>(), sched)) throw UserError(*e);
+  } else {
+    std::vector<CouplingId> order;
+    if (auto e = read_order_file(inst, vm["schedule"].as<std::string>(), order)) throw UserError(*e);
+    sched = schedule_from_order(order);
+  }
+  SimResult r = sim.run(sched);
   if (r.collision) {
     ans.comment("simulator: the schedule collides: " + describe(inst, sim.regions(), *r.collision));
     return ans.finish(Verdict::No);
   }
   ans.comment("simulator: the schedule is collision-free");
-  std::vector<bool> value = assignment_from_schedule(c, order);
+  std::vector<bool> value = continuous ? assignment_from_times(c, sched) : assignment_from_schedule(c, sched.order);
   long bad = first_falsified_clause(f, value);
   if (bad >= 0) {
     ans.comment("the lifted assignment falsifies clause " + std::to_string(bad + 1) +

@@ -95,7 +95,7 @@ json merge_fuzz(const std::vector<ShardFile>& files) {
 }
 
 json merge_verify(const std::vector<ShardFile>& files) {
-  check_complete(files, {"inputs"});
+  check_complete(files, {"inputs", "model"});
   json out = files[0].j;
   out["shard"] = "0/1";
   json rows = json::array();
@@ -126,8 +126,10 @@ json merge_instances(const std::vector<ShardFile>& files) {
   json entries = json::array();
   for (const auto& f : files)
     for (const auto& e : f.j["instances"]) entries.push_back(e);
-  std::sort(entries.begin(), entries.end(),
-            [](const json& a, const json& b) { return a["index"].get<uint64_t>() < b["index"].get<uint64_t>(); });
+  // With --model both, an index has two entries (discrete, then continuous):
+  // the stable sort keeps each shard's order of them.
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const json& a, const json& b) { return a["index"].get<uint64_t>() < b["index"].get<uint64_t>(); });
   out["yes"] = sum(files, "yes");
   out["no"] = sum(files, "no");
   out["skipped"] = sum(files, "skipped");

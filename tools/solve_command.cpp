@@ -1,11 +1,12 @@
-// gridlock solve: the exact Discrete Collision-free Schedule solver.
+// gridlock solve: the exact Collision-free Schedule solvers, discrete
+// (solver/solve.hpp, the default) and continuous (solver/continuous.hpp).
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 
 #include "common/limits.hpp"
-
+#include "solver/continuous.hpp"
 #include "solver/solve.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
@@ -21,6 +22,45 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
+nlohmann::json stats_json(const SolveStats& st) {
+  return {{"states", st.states},          {"refuted", st.refuted},       {"propagations", st.propagations},
+          {"decisions", st.decisions},    {"safe_moves", st.safe_moves}, {"memo_hits", st.memo_hits},
+          {"constraints", st.constraints}, {"seconds", st.seconds}};
+}
+
+Verdict verdict_of(SolveResult::Status s) {
+  return s == SolveResult::Status::Yes ? Verdict::Yes : s == SolveResult::Status::No ? Verdict::No : Verdict::Unknown;
+}
+
+int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, bool json) {
+  Answer ans("solve", json);
+  ans.witness_one_per_line();
+  ans.comment("gridlock solve --model continuous " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
+              std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
+              " couplings" + (inst.horizontal_only() ? ", horizontal-only" : ""));
+  ContinuousResult r = solve_continuous(inst, opt);
+  const SolveStats& st = r.stats;
+  if (st.engine == "gaps") {
+    ans.comment("horizontal-only: linear gap check (" + std::to_string(st.constraints) + " gaps and cycles)");
+  } else {
+    ans.comment("engine " + st.engine + " on " + std::to_string(st.constraints) + " pair and cycle constraints");
+    ans.comment("components settled all at once " + std::to_string(st.safe_moves) + ", solved by z3 " +
+                std::to_string(st.states) + ", z3 decisions " + std::to_string(st.decisions) + ", conflicts " +
+                std::to_string(st.refuted));
+  }
+  ans.comment("time " + fixed(st.seconds, 3) + " s");
+  if (r.status == SolveResult::Status::Yes) ans.comment("start times checked by the simulator: collision-free");
+  if (r.status == SolveResult::Status::Unknown) ans.comment("limit reached before an answer");
+  if (r.status == SolveResult::Status::Yes)
+    for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+      ans.witness(inst.couplings()[q].name + " " + r.schedule.start[q].str());
+  nlohmann::json& d = ans.data();
+  d["model"] = "continuous";
+  d["engine"] = st.engine;
+  d["stats"] = stats_json(st);
+  return ans.finish(verdict_of(r.status));
+}
+
 int run_solve(const std::vector<std::string>& args) {
   const Deadline since_start;  // --timeout counts from here: reading the instance is part of it
   namespace po = boost::program_options;
@@ -29,15 +69,21 @@ int run_solve(const std::vector<std::string>& args) {
     ("help,h", "show this help")
     ("timeout", po::value<std::string>(), "give up after S seconds (s UNKNOWN, exit 0)")
     ("max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")
+    ("model", po::value<std::string>()->default_value("discrete"),
+     "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")
     ("engine", po::value<std::string>()->default_value("auto"),
      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")
     ("json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "instance", vm, "solve INSTANCE.grid [--timeout S] [--max-states N] [--json]",
-                       "Discrete Collision-free Schedule, exactly: is there an order of the couplings, run one\n"
-                       "at a time, with no collision? s YES (exit 10) with the order as v lines (checked by the\n"
-                       "simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
-                       "exhaustive search, s UNKNOWN (exit 0) when a limit is reached."))
+  if (!cli::parse_args_one_input(args, opts, "instance", vm, "solve INSTANCE.grid [--model discrete|continuous] [--timeout S] [--max-states N] [--json]",
+                       "Collision-free Schedule, exactly. Discrete (default): is there an order of the couplings,\n"
+                       "run one at a time, with no collision? s YES (exit 10) with the order as v lines (checked by\n"
+                       "the simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
+                       "exhaustive search, s UNKNOWN (exit 0) when a limit is reached.\n"
+                       "Continuous (--model continuous): are there start times (couplings may overlap) with no\n"
+                       "collision? s YES with lines 'v NAME TIME' (exact rationals, checked by the simulator;\n"
+                       "'gridlock check --times' reads them back), s NO only when proved (Z3, exact), s UNKNOWN on\n"
+                       "a limit (--max-states bounds Z3's conflicts)."))
     return 0;
   SolveOptions opt;
   opt.seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
@@ -50,6 +96,12 @@ int run_solve(const std::vector<std::string>& args) {
   else if (engine == "sat") opt.engine = SolveOptions::Engine::Sat;
   else throw UserError("--engine must be auto, states, precedence or sat, not '" + engine + "'");
 
+  const std::string model = vm["model"].as<std::string>();
+  if (model != "discrete" && model != "continuous")
+    throw UserError("--model must be discrete or continuous, not '" + model + "'");
+  if (model == "continuous" && !vm["engine"].defaulted())
+    throw UserError("--engine applies to --model discrete only");
+
   const std::string path = vm["instance"].as<std::string>();
   // Kept until the process ends (reachable, so no leak report): freeing an
   // instance of a million nodes takes a noticeable part of a short --timeout.
@@ -57,10 +109,11 @@ int run_solve(const std::vector<std::string>& args) {
   kept = new Instance(cli::load_instance(path));
   const Instance& inst = *kept;
   cli::Activity act(path, "solving the instance");
+  if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
+  if (model == "continuous") return run_continuous(path, inst, opt, vm.count("json") > 0);
   if ((opt.engine == SolveOptions::Engine::Precedence || opt.engine == SolveOptions::Engine::Sat) &&
       !inst.horizontal_only())
     throw UserError(path + ": --engine " + engine + " needs a horizontal-only instance");
-  if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
   Answer ans("solve", vm.count("json") > 0);
   ans.comment("gridlock solve " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
@@ -82,17 +135,13 @@ int run_solve(const std::vector<std::string>& args) {
   for (CouplingId q : r.order) ans.witness(inst.couplings()[q].name);
   nlohmann::json& d = ans.data();
   d["engine"] = st.engine;
-  d["stats"] = {{"states", st.states},          {"refuted", st.refuted},       {"propagations", st.propagations},
-                {"decisions", st.decisions},    {"safe_moves", st.safe_moves}, {"memo_hits", st.memo_hits},
-                {"constraints", st.constraints}, {"seconds", st.seconds}};
+  d["model"] = "discrete";
+  d["stats"] = stats_json(st);
   if (r.cycle_breaker != kNone) d["cycle_breaker"] = inst.couplings()[r.cycle_breaker].name;
-  Verdict v = r.status == SolveResult::Status::Yes  ? Verdict::Yes
-              : r.status == SolveResult::Status::No ? Verdict::No
-                                                    : Verdict::Unknown;
-  return ans.finish(v);
+  return ans.finish(verdict_of(r.status));
 }
 
-Command reg{"solve", "decide Discrete Collision-free Schedule exactly (any instance)", run_solve};
+Command reg{"solve", "decide Collision-free Schedule exactly, discrete or continuous (any instance)", run_solve};
 
 }  // namespace
 }  // namespace gridlock

@@ -102,6 +102,11 @@ int run_verify(const std::vector<std::string>& args) {
   po::options_description opts("options");
   opts.add_options()
     ("help,h", "show this help")
+    ("model", po::value<std::string>()->default_value("discrete"),
+     "which reduction to check: discrete (exact discrete solver and gap checker), continuous (the continuous "
+     "reduction and the exact continuous solver) or both")
+    ("direct", "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small "
+               "formulas small, e.g. for the continuous solver)")
     ("timeout", po::value<std::string>()->default_value("60"), "seconds the exact solver may spend on one formula (then UNKNOWN)")
     ("max-states", po::value<std::string>()->default_value("0"), "search nodes the exact solver may visit per formula (0: no limit)")
     ("reproducers", po::value<std::string>()->default_value("verify-failures"),
@@ -125,7 +130,10 @@ int run_verify(const std::vector<std::string>& args) {
                        "  discrete   the exact solver on the instance (expected: the same answer),\n"
                        "  continuous the gap checker (expected: YES for every compiled instance),\n"
                        "and every certificate: CaDiCaL's model -> schedule -> simulator; the solver's\n"
-                       "schedule -> assignment -> formula; 'all at time 0' -> simulator. One row per formula,\n"
+                       "schedule -> assignment -> formula; 'all at time 0' -> simulator. With --model continuous\n"
+                       "(or both): the formula compiled for continuous time, the exact continuous solver on it\n"
+                       "(column c-exact, expected: CaDiCaL's answer), CaDiCaL's model -> start times -> simulator,\n"
+                       "the solver's start times -> simulator -> assignment -> formula. One row per formula,\n"
                        "then a summary. Exit 0 iff everything agrees (UNKNOWN, a limit hit, is no disagreement);\n"
                        "exit 1 on any disagreement, with a reproducer written for each.\n"
                        "SIGINT/SIGTERM stop after the formula in progress is abandoned: the summary covers the\n"
@@ -139,6 +147,11 @@ int run_verify(const std::vector<std::string>& args) {
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   opt.mutation = *mutation;
+  auto model = parse_verify_model(vm["model"].as<std::string>());
+  if (!model) throw UserError("--model must be discrete, continuous or both, not '" + vm["model"].as<std::string>() + "'");
+  opt.model = *model;
+  opt.direct = vm.count("direct") > 0;
+  const bool with_discrete = opt.model != VerifyModel::Continuous, with_continuous = opt.model != VerifyModel::Discrete;
   const bool json = vm.count("json") > 0;
   std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
   uint64_t shard = 0, shards = 1;
@@ -152,8 +165,10 @@ int run_verify(const std::vector<std::string>& args) {
   if (!json) {
     out << std::left << std::setw(w) << "formula" << std::right << std::setw(5) << "vars" << std::setw(8) << "clauses"
         << std::setw(8) << "nodes" << std::setw(7) << "coupl" << std::setw(7) << "SAT" << std::setw(9) << "discrete"
-        << std::setw(7) << "contin" << std::setw(6) << "wit" << std::setw(10) << "states" << "  ms sat/compile/solve/gaps"
-        << '\n';
+        << std::setw(7) << "contin";
+    if (with_continuous) out << std::setw(9) << "c-exact";
+    out << std::setw(6) << "wit" << std::setw(10) << "states" << "  ms sat/compile/solve/gaps"
+        << (with_continuous ? "/c-solve" : "") << '\n';
   }
   nlohmann::json rows = nlohmann::json::array();
   size_t agree = 0, unknown = 0, disagree = 0, witnesses = 0, sat = 0, unsat = 0;
@@ -168,19 +183,20 @@ int run_verify(const std::vector<std::string>& args) {
     witnesses += static_cast<size_t>(r.witnesses_checked());
     sat += r.sat == Tri::Yes;
     unsat += r.sat == Tri::No;
-    total_ms += r.ms_sat + r.ms_compile + r.ms_solve + r.ms_gaps;
-    std::string status = r.agree ? (r.discrete == Tri::Unknown ? "unknown" : "agree") : "DISAGREE";
+    total_ms += r.ms_sat + r.ms_compile + r.ms_solve + r.ms_gaps + r.ms_csolve;
+    const bool unknown_answer = r.solver_unknown();
+    std::string status = r.agree ? (unknown_answer ? "unknown" : "agree") : "DISAGREE";
     if (!r.agree) {
       ++disagree;
       std::string dir = vm["reproducers"].as<std::string>() + "/" + stem(files[i]);
       write_reproducer(r, dir, opt);
       r.problem += " (reproducer: " + dir + ")";
-    } else if (r.discrete == Tri::Unknown) {
+    } else if (unknown_answer) {
       ++unknown;
     } else {
       ++agree;
     }
-    if (vm.count("pictures") && r.nodes <= picture_nodes) draw(r, vm["pictures"].as<std::string>());
+    if (with_discrete && vm.count("pictures") && r.nodes <= picture_nodes) draw(r, vm["pictures"].as<std::string>());
     if (json || vm.count("json-out")) {
       rows.push_back({{"index", i}, {"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
                       {"reduced", r.reduced}, {"nodes", r.nodes}, {"operations", r.ops}, {"couplings", r.couplings},
@@ -188,17 +204,35 @@ int run_verify(const std::vector<std::string>& args) {
                       {"continuous", tri_name(r.continuous)}, {"witnesses_checked", r.witnesses_checked()},
                       {"solver_states", r.solver_states}, {"ms_sat", r.ms_sat}, {"ms_compile", r.ms_compile},
                       {"ms_solve", r.ms_solve}, {"ms_gaps", r.ms_gaps}, {"status", status}, {"problem", r.problem}});
+      if (with_continuous) {
+        auto& row = rows.back();
+        row["continuous_nodes"] = r.cnodes;
+        row["continuous_solver"] = tri_name(r.continuous_solver);
+        row["continuous_solver_conflicts"] = r.csolver_conflicts;
+        row["ms_continuous_solve"] = r.ms_csolve;
+      }
+      if (!with_discrete) {
+        auto& row = rows.back();
+        row["discrete"] = nullptr;
+        row["continuous"] = nullptr;
+      }
     }
     if (!json) {
       std::string name = stem(files[i]);
       if (name.size() > static_cast<size_t>(w - 1)) name = name.substr(0, static_cast<size_t>(w - 2)) + "~";
       out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(8)
-          << r.source.clauses.size() << std::setw(8) << r.nodes << std::setw(7) << r.couplings << std::setw(7)
-          << sat_word(r.sat) << std::setw(9) << tri_name(r.discrete) << std::setw(7) << tri_name(r.continuous)
-          << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" +
-                              std::to_string((r.sat == Tri::Yes) + (r.discrete == Tri::Yes) + (r.continuous == Tri::Yes)))
-          << std::setw(10) << r.solver_states << "  " << fmt_ms(r.ms_sat) << "/" << fmt_ms(r.ms_compile) << "/"
-          << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps) << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
+          << r.source.clauses.size() << std::setw(8) << (with_discrete ? r.nodes : r.cnodes) << std::setw(7)
+          << r.couplings << std::setw(7) << sat_word(r.sat) << std::setw(9)
+          << (with_discrete ? tri_name(r.discrete) : "-") << std::setw(7)
+          << (with_discrete ? tri_name(r.continuous) : "-");
+      if (with_continuous) out << std::setw(9) << tri_name(r.continuous_solver);
+      const int expected = with_discrete * ((r.sat == Tri::Yes) + (r.discrete == Tri::Yes) + (r.continuous == Tri::Yes)) +
+                           with_continuous * ((r.sat == Tri::Yes) + (r.continuous_solver == Tri::Yes));
+      out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(10)
+          << (with_discrete ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/"
+          << fmt_ms(r.ms_compile) << "/" << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps)
+          << (with_continuous ? "/" + fmt_ms(r.ms_csolve) : "") << (r.agree ? "" : "  DISAGREE: " + r.problem)
+          << std::endl;
     }
   }
   const bool interrupted = stop_requested();
@@ -212,6 +246,7 @@ int run_verify(const std::vector<std::string>& args) {
                " formulas";
   nlohmann::json j;
   j["command"] = "verify";
+  j["model"] = verify_model_name(opt.model);
   j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
   j["inputs"] = files.size();
   j["formulas"] = rows;

@@ -25,6 +25,16 @@ std::vector<CouplingGap> coupling_gaps(const CompiledFormula& c) {
       }
       out.push_back(std::move(cg));
     }
+    // In discrete time a separation is the order gap 0 + first - second.
+    for (const Separation& s : g.contract.separations) {
+      CouplingGap cg{0, {}};
+      for (auto [name, sign] : {std::pair{s.first, +1}, std::pair{s.second, -1}}) {
+        OpId op = c.instance.find_op(name);
+        if (op == kNone) throw std::logic_error("contract names unknown operation " + name);
+        cg.terms.emplace_back(c.instance.ops()[op].coupling, sign);
+      }
+      out.push_back(std::move(cg));
+    }
   }
   return out;
 }
