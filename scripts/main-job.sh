@@ -2,7 +2,8 @@
 # The main job: sets up, builds, and verifies the reduction end to end on the
 # bundled formulas (examples/formulas: small SAT and UNSAT ones and SATLIB
 # uf20-91 samples). Prints the table (CaDiCaL vs exact discrete solver vs
-# gap checker, certificates checked), then writes pictures of the small
+# gap checker, certificates checked), the continuous reduction on the small
+# ones (CaDiCaL vs the exact continuous solver), then writes pictures of the small
 # compiled instances and their witness schedules (or a collision) to out/,
 # each with an animation beside it (NAME.html: open it in a browser).
 #   MAIN_JOB_TIMEOUT  seconds the exact solver may spend per formula (default 60)
@@ -13,11 +14,14 @@ mkdir -p out
 echo "== gridlock verify examples/formulas"
 build/gridlock verify examples/formulas --timeout "${MAIN_JOB_TIMEOUT:-60}" \
   --pictures out/pictures --reproducers out/verify-failures
+echo "== the continuous reduction (separation gadget) on the small formulas, exact continuous solver"
+build/gridlock verify examples/formulas/{tiny-sat,tiny-unsat,lsat-sat,unsat-3cnf}.cnf --model continuous \
+  --timeout "${MAIN_JOB_TIMEOUT:-60}" --reproducers out/verify-failures-continuous
 echo "== a gadget of each kind, and a labelled instance set"
-for kind in variable clause order; do
+for kind in variable clause order separation; do
   build/gridlock gadget "$kind" -o "out/gadget-$kind.grid" --svg "out/pictures/gadget-$kind.svg"
 done
-build/gridlock gen-instances -o out/instances --vars 8 --threshold 4 --lsat 2 --seed 1 | tail -n 1
+build/gridlock gen-instances -o out/instances --force --vars 8 --threshold 4 --lsat 2 --seed 1 | tail -n 1
 echo "== animations of the worked cases of the model"
 build/gridlock animate examples/instances/model-case2-order-gadget.grid --order "b a" \
   -o out/pictures/model-case2-order-gadget-collision.html | tail -n 2
