@@ -142,7 +142,8 @@ TEST(Merge, GenInstancesThreeShardsEqualUnsharded) {
   ASSERT_EQ(run_gridlock(merge).exit_code, 0);
   expect_same(read_json(dir + "/whole/manifest.json"), read_json(dir + "/merged.json"));
   // The shards share one folder: every instance file of the whole run is there.
-  for (const auto& e : read_json(dir + "/whole/manifest.json")["instances"])
+  const json whole_manifest = read_json(dir + "/whole/manifest.json");  // outlives the loop
+  for (const auto& e : whole_manifest["instances"])
     EXPECT_TRUE(std::filesystem::exists(dir + "/shared/" + e["instance"].get<std::string>())) << e["instance"];
 }
 
