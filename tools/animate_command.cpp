@@ -2,6 +2,7 @@
 // (tools/animate_page.hpp, lattice/animation.hpp).
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "lattice/animation.hpp"
@@ -10,6 +11,7 @@
 #include "tools/animate_page.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 
 namespace gridlock {
 namespace {
@@ -23,7 +25,7 @@ int run_animate(const std::vector<std::string>& args) {
     ("order-file", po::value<std::string>(), "discrete schedule from a file ('v' lines of 'gridlock solve' work)")
     ("times", po::value<std::string>(), "continuous schedule: a file of lines 'COUPLING TIME' (TIME like 3 or 5/2)")
     ("solve", "play the exact solver's collision-free order (if it finds none: the couplings in file order)")
-    ("timeout", po::value<double>()->default_value(60), "seconds the solver may spend with --solve")
+    ("timeout", po::value<std::string>()->default_value("60"), "seconds the solver may spend with --solve")
     ("out,o", po::value<std::string>()->required(), "the HTML file to write")
     ("title", po::value<std::string>(), "title shown on the page (default: the instance and the schedule)");
   po::variables_map vm;
@@ -40,35 +42,27 @@ int run_animate(const std::vector<std::string>& args) {
   if (given != 1) throw UserError("give exactly one of --order, --order-file, --times, --solve");
   const std::string path = vm["instance"].as<std::string>();
   const std::string out = vm["out"].as<std::string>();
+  cli::refuse_overwriting_input(out, {path});
+  const double timeout = cli::seconds_arg(vm, "timeout");
   Instance inst = cli::load_instance(path);
+  std::string what = vm.count("times")        ? "start times " + vm["times"].as<std::string>()
+                     : vm.count("order-file") ? "order " + vm["order-file"].as<std::string>()
+                                              : "the given order";
+  std::optional<Schedule> given_schedule = cli::schedule_from_options(vm, inst);
   Schedule sched;
-  std::string what;
-  if (vm.count("times")) {
-    if (auto e = read_times_file(inst, vm["times"].as<std::string>(), sched)) throw UserError(*e);
-    what = "start times " + vm["times"].as<std::string>();
-  } else {
+  if (given_schedule) {
+    sched = std::move(*given_schedule);
+  } else {  // --solve
+    SolveOptions so;
+    so.seconds = timeout;
+    SolveResult r = solve_discrete(inst, so);
     std::vector<CouplingId> order;
-    if (vm.count("order")) {
-      std::istringstream ss(vm["order"].as<std::string>());
-      std::vector<std::string> names;
-      for (std::string w; ss >> w;) names.push_back(w);
-      if (auto e = parse_order(inst, names, "--order", 0, order)) throw UserError(*e);
-      what = "the given order";
-    } else if (vm.count("order-file")) {
-      if (auto e = read_order_file(inst, vm["order-file"].as<std::string>(), order)) throw UserError(*e);
-      what = "order " + vm["order-file"].as<std::string>();
+    if (r.status == SolveResult::Status::Yes) {
+      order = r.order;
+      what = "the solver's collision-free order";
     } else {
-      SolveOptions so;
-      so.seconds = vm["timeout"].as<double>();
-      if (!(so.seconds > 0)) throw UserError("--timeout must be a positive number of seconds");
-      SolveResult r = solve_discrete(inst, so);
-      if (r.status == SolveResult::Status::Yes) {
-        order = r.order;
-        what = "the solver's collision-free order";
-      } else {
-        for (CouplingId q = 0; q < inst.couplings().size(); ++q) order.push_back(q);
-        what = std::string("the couplings in file order (the solver answered ") + solve_status_name(r.status) + ")";
-      }
+      for (CouplingId q = 0; q < inst.couplings().size(); ++q) order.push_back(q);
+      what = std::string("the couplings in file order (the solver answered ") + solve_status_name(r.status) + ")";
     }
     sched = schedule_from_order(order);
   }

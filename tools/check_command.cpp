@@ -33,24 +33,8 @@ int run_check(const std::vector<std::string>& args) {
   const std::string path = vm["instance"].as<std::string>();
   if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
   Instance inst = cli::load_instance(path);
-  Schedule sched;
-  std::string model;
-  if (vm.count("times")) {
-    if (auto e = read_times_file(inst, vm["times"].as<std::string>(), sched)) throw UserError(*e);
-    model = "continuous";
-  } else {
-    std::vector<CouplingId> order;
-    if (vm.count("order")) {
-      std::istringstream ss(vm["order"].as<std::string>());
-      std::vector<std::string> names;
-      for (std::string w; ss >> w;) names.push_back(w);
-      if (auto e = parse_order(inst, names, "--order", 0, order)) throw UserError(*e);
-    } else if (auto e = read_order_file(inst, vm["order-file"].as<std::string>(), order)) {
-      throw UserError(*e);
-    }
-    sched = schedule_from_order(order);
-    model = "discrete";
-  }
+  const Schedule sched = *cli::schedule_from_options(vm, inst);  // exactly one was given
+  const std::string model = vm.count("times") ? "continuous" : "discrete";
   Answer ans("check", vm.count("json") > 0);
   ans.comment("gridlock check " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.edges().size()) + " edges, " + std::to_string(inst.ops().size()) + " operations, " +

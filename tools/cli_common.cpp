@@ -117,6 +117,26 @@ bool parse_args_one_input(const std::vector<std::string>& args, const po::option
   return parse_args(args, visible, pos, vm, usage, description, &hidden);
 }
 
+std::optional<Schedule> schedule_from_options(const boost::program_options::variables_map& vm, const Instance& inst) {
+  Schedule sched;
+  if (vm.count("times")) {
+    if (auto e = read_times_file(inst, vm["times"].as<std::string>(), sched)) throw UserError(*e);
+    return sched;
+  }
+  std::vector<CouplingId> order;
+  if (vm.count("order")) {
+    std::istringstream ss(vm["order"].as<std::string>());
+    std::vector<std::string> names;
+    for (std::string w; ss >> w;) names.push_back(w);
+    if (auto e = parse_order(inst, names, "--order", 0, order)) throw UserError(*e);
+  } else if (vm.count("order-file")) {
+    if (auto e = read_order_file(inst, vm["order-file"].as<std::string>(), order)) throw UserError(*e);
+  } else {
+    return std::nullopt;
+  }
+  return schedule_from_order(order);
+}
+
 void parse_shard(const std::string& text, uint64_t& k, uint64_t& n) {
   const size_t slash = text.find('/');
   if (slash == std::string::npos) throw UserError("--shard: want K/N with 0 <= K < N, not '" + text + "'");

@@ -2,6 +2,7 @@
 // UserErrors) and the common option parsing pattern.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 
 #include "cnf/formula.hpp"
 #include "lattice/instance.hpp"
+#include "lattice/schedule.hpp"
 
 namespace gridlock::cli {
 
@@ -65,6 +67,11 @@ void write_text_files(const std::vector<std::pair<std::string, std::string>>& fi
 // path out names the same file as one of inputs (same path, or the same file
 // through links). "-" never conflicts. Call it before reading the inputs.
 void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs);
+
+// The schedule given by exactly one of --order "Q..." (names in order),
+// --order-file F or --times F (start times) in vm, for inst; nullopt if none
+// of the three is given. Errors name the file and line (UserError).
+std::optional<Schedule> schedule_from_options(const boost::program_options::variables_map& vm, const Instance& inst);
 
 // Standard output is checked at exit (tools/main.cpp): a failed write or
 // flush makes the command fail with "<stdout>: write failed: REASON", exit 1.
