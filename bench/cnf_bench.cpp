@@ -16,16 +16,16 @@ namespace gridlock {
 namespace {
 
 Formula satlib(const std::string& set, int index) {
-  std::string path = std::string(GRIDLOCK_DATA_DIR) + "/satlib/" + set + "-218/" + set + "-0" +
-                     std::to_string(index) + ".cnf";
+  std::string path = std::string(GRIDLOCK_DATA_DIR) + "/satlib/" + set + "-218/" + set + "-0" + std::to_string(index) +
+                     ".cnf";
   Formula f;
   if (auto e = read_dimacs_file(path, f)) throw std::runtime_error(e->str());
   return f;
 }
 
 void BM_ReadDimacs(benchmark::State& state) {
-  const std::string text = to_dimacs(random_ksat({static_cast<int>(state.range(0)),
-                                                  clauses_for_ratio(static_cast<int>(state.range(0)), 4.26), 3, 1}));
+  const std::string text = to_dimacs(
+      random_ksat({static_cast<int>(state.range(0)), clauses_for_ratio(static_cast<int>(state.range(0)), 4.26), 3, 1}));
   for (auto _ : state) {
     Formula f;
     benchmark::DoNotOptimize(read_dimacs_string(text, "bench.cnf", f));

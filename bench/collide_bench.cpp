@@ -52,7 +52,7 @@ void tree_bench(benchmark::State& state, const std::string& fam, bool pairwise) 
 void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
   const int64_t n = state.range(0), c = state.range(1);
   Instance inst = mixed ? bench::comb(n / 4, 3, n / 4, bench::CombOps::Mixed, c, 7)
-                       : bench::comb(n, 0, n / 4, bench::CombOps::Spine, c, 7);
+                        : bench::comb(n, 0, n / 4, bench::CombOps::Spine, c, 7);
   bool yes = false;
   CollideResult r;
   for (auto _ : state) {
@@ -97,15 +97,30 @@ void register_large() {
     benchmark::RegisterBenchmark("BM_TreeCentroidRandom", BM_TreeCentroidRandom)->Arg(n)->Unit(benchmark::kMillisecond);
   }
   for (int64_t n : {16000, 32000}) {
-    benchmark::RegisterBenchmark("BM_TreePairwisePath", BM_TreePairwisePath)->Arg(n)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_TreePairwisePath", BM_TreePairwisePath)
+        ->Arg(n)
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   }
   for (int64_t n : {2000, 4000, 8000, 16000}) {
-    benchmark::RegisterBenchmark("BM_ZonotopeAxis", BM_ZonotopeAxis)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("BM_ZonotopeMixed", BM_ZonotopeMixed)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_ZonotopeAxis", BM_ZonotopeAxis)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_ZonotopeMixed", BM_ZonotopeMixed)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   }
   for (int64_t n : {800, 1600, 3200, 6400}) {
-    benchmark::RegisterBenchmark("BM_SubsetSumAxis", BM_SubsetSumAxis)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("BM_SubsetSumMixed", BM_SubsetSumMixed)->Args({n, 3})->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SubsetSumAxis", BM_SubsetSumAxis)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SubsetSumMixed", BM_SubsetSumMixed)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   }
 }
 

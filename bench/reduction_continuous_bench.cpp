@@ -40,10 +40,7 @@ void BM_ContinuousReduction(benchmark::State& state) {
   state.counters["nodes"] = static_cast<double>(c.stats.nodes);
   state.counters["z3_conflicts"] = static_cast<double>(r.stats.refuted);
 }
-BENCHMARK(BM_ContinuousReduction)
-    ->ArgsProduct({{1, 2, 3, 4}, {0, 1}})
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContinuousReduction)->ArgsProduct({{1, 2, 3, 4}, {0, 1}})->Iterations(1)->Unit(benchmark::kMillisecond);
 
 void BM_DiscreteReduction(benchmark::State& state) {
   const Formula f = chain(static_cast<int>(state.range(0)), state.range(1) != 0);

@@ -42,10 +42,11 @@ void run(benchmark::State& state, bool teeth, bool at_once) {
   }
   state.counters["nodes"] = static_cast<double>(inst.num_nodes());
   state.counters["couplings"] = static_cast<double>(inst.couplings().size());
-  state.counters["moved_per_interval"] =
-      static_cast<double>(stats.moved_regions) / static_cast<double>(std::max<uint64_t>(stats.intervals, 1));
+  state.counters["moved_per_interval"] = static_cast<double>(stats.moved_regions) /
+                                         static_cast<double>(std::max<uint64_t>(stats.intervals, 1));
   state.counters["ns_per_moved_region"] = benchmark::Counter(
-      static_cast<double>(stats.moved_regions), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+      static_cast<double>(stats.moved_regions),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_CombSpine(benchmark::State& s) { run(s, false, false); }
@@ -54,12 +55,33 @@ void BM_AllAtOnce(benchmark::State& s) { run(s, false, true); }
 
 // n from 10^3 to 10^6; k from 10^2 to 10^4 (spine runs with n k <= 10^9 only:
 // they move O(n) regions per step by design).
-BENCHMARK(BM_CombSpine)->Args({1000, 100})->Args({10000, 100})->Args({10000, 1000})->Args({100000, 100})
-    ->Args({100000, 1000})->Args({100000, 10000})->Args({1000000, 100})->Args({1000000, 1000})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CombTeeth)->Args({1000, 100})->Args({10000, 100})->Args({10000, 1000})->Args({100000, 100})
-    ->Args({100000, 1000})->Args({100000, 10000})->Args({1000000, 100})->Args({1000000, 1000})->Args({1000000, 10000})
+BENCHMARK(BM_CombSpine)
+    ->Args({1000, 100})
+    ->Args({10000, 100})
+    ->Args({10000, 1000})
+    ->Args({100000, 100})
+    ->Args({100000, 1000})
+    ->Args({100000, 10000})
+    ->Args({1000000, 100})
+    ->Args({1000000, 1000})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_AllAtOnce)->Args({1000, 50})->Args({2000, 100})->Args({4000, 200})->Args({8000, 400})->Args({16000, 800})
+BENCHMARK(BM_CombTeeth)
+    ->Args({1000, 100})
+    ->Args({10000, 100})
+    ->Args({10000, 1000})
+    ->Args({100000, 100})
+    ->Args({100000, 1000})
+    ->Args({100000, 10000})
+    ->Args({1000000, 100})
+    ->Args({1000000, 1000})
+    ->Args({1000000, 10000})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AllAtOnce)
+    ->Args({1000, 50})
+    ->Args({2000, 100})
+    ->Args({4000, 200})
+    ->Args({8000, 400})
+    ->Args({16000, 800})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

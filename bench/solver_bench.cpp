@@ -155,7 +155,8 @@ ConstraintSystem gadget_system(const Formula& f) {
   for (CouplingId h = 0; h < m; ++h) {
     std::vector<std::pair<CouplingId, int64_t>> t{{U(h), -1}};
     // The clause operation of literal l runs with the coupling that makes l false.
-    for (int l : f.clauses[h]) t.push_back({l > 0 ? F(static_cast<CouplingId>(l - 1)) : T(static_cast<CouplingId>(-l - 1)), 1});
+    for (int l : f.clauses[h])
+      t.push_back({l > 0 ? F(static_cast<CouplingId>(l - 1)) : T(static_cast<CouplingId>(-l - 1)), 1});
     add_form(s, -static_cast<int64_t>(f.clauses[h].size()) + 1, t);
   }
   s.index();
@@ -208,7 +209,8 @@ void BM_GadgetSystemSatlib(benchmark::State& state, const std::string& set, bool
   }
   state.counters["samples"] = static_cast<double>(systems.size());
   state.counters["worst_s"] = worst;
-  state.counters["states_per_sample"] = static_cast<double>(states) / static_cast<double>(systems.size() * state.iterations());
+  state.counters["states_per_sample"] = static_cast<double>(states) /
+                                        static_cast<double>(systems.size() * state.iterations());
   state.counters["wrong"] = static_cast<double>(wrong);
   state.counters["couplings"] = static_cast<double>(systems[0].num_couplings);
   state.counters["constraints"] = static_cast<double>(systems[0].constraints.size());
@@ -216,9 +218,15 @@ void BM_GadgetSystemSatlib(benchmark::State& state, const std::string& set, bool
   state.counters["orderings_per_sample"] = static_cast<double>(props) / static_cast<double>(systems.size());
   state.counters["unknown"] = static_cast<double>(unknown);
 }
-BENCHMARK_CAPTURE(BM_GadgetSystemSatlib, uf20_91, std::string("uf20-91"), true)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_GadgetSystemSatlib, uf50_218, std::string("uf50-218"), true)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_GadgetSystemSatlib, uuf50_218, std::string("uuf50-218"), false)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GadgetSystemSatlib, uf20_91, std::string("uf20-91"), true)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GadgetSystemSatlib, uf50_218, std::string("uf50-218"), true)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GadgetSystemSatlib, uuf50_218, std::string("uuf50-218"), false)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace gridlock

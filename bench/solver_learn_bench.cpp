@@ -26,11 +26,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
-#include <ctime>
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
@@ -150,8 +150,8 @@ int z3_gap_system(const ConstraintSystem& sys, double seconds) {
       for (size_t j = 0; j < c.rel.size(); ++j) {
         if (j == jt) continue;
         before(c.rel[j], t);  // keeps the two positions apart
-        sum = sum + z3::ite(pos[static_cast<int>(c.rel[j])] < pos[static_cast<int>(t)],
-                            ctx.int_val(c.coef_of(j)[0]), ctx.int_val(0));
+        sum = sum + z3::ite(pos[static_cast<int>(c.rel[j])] < pos[static_cast<int>(t)], ctx.int_val(c.coef_of(j)[0]),
+                            ctx.int_val(0));
       }
       s.add(sum <= 0);
     }
@@ -217,8 +217,8 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
         runs[e].push_back(r);
         if (const char* csv = std::getenv("GRIDLOCK_BENCH_CSV")) {
           std::ofstream out(csv, std::ios::app);
-          out << family << ',' << smp.name << ',' << (smp.sat ? "SAT" : "UNSAT") << ',' << e << ','
-              << r.seconds << ',' << r.cpu << ',' << r.decisions << ',' << r.code << '\n';
+          out << family << ',' << smp.name << ',' << (smp.sat ? "SAT" : "UNSAT") << ',' << e << ',' << r.seconds << ','
+              << r.cpu << ',' << r.decisions << ',' << r.code << '\n';
         }
       }
     }
@@ -261,7 +261,8 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
 }
 
 void BM_Satlib(benchmark::State& state, const std::string& set) { run_family(state, set, satlib(set)); }
-void BM_Random3Sat(benchmark::State& state, int n, int m) { run_family(state, "n" + std::to_string(n) + "-m" + std::to_string(m), random_threshold(n, m, 20));
+void BM_Random3Sat(benchmark::State& state, int n, int m) {
+  run_family(state, "n" + std::to_string(n) + "-m" + std::to_string(m), random_threshold(n, m, 20));
 }
 
 BENCHMARK_CAPTURE(BM_Satlib, uf20_91, std::string("uf20-91"))->Iterations(1)->Unit(benchmark::kSecond);

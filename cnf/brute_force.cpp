@@ -108,7 +108,7 @@ class Dpll {
         continue;
       }
       int lit = choose();
-      if (lit == 0) break;  // every clause satisfied
+      if (lit == 0) break;                          // every clause satisfied
       if (++decisions > max_decisions) return res;  // Unknown
       stack.push_back({trail_.size(), lit, false});
       assign(lit);

@@ -59,7 +59,8 @@ bool is_tautology(const std::vector<int>& clause) {
     return false;
   }
   std::vector<int> s(clause);
-  std::sort(s.begin(), s.end(), [](int a, int b) { return var_of(a) < var_of(b) || (var_of(a) == var_of(b) && a < b); });
+  std::sort(s.begin(), s.end(),
+            [](int a, int b) { return var_of(a) < var_of(b) || (var_of(a) == var_of(b) && a < b); });
   for (size_t i = 0; i + 1 < s.size(); ++i)
     if (s[i] == -s[i + 1]) return true;
   return false;

@@ -14,9 +14,9 @@
 namespace gridlock {
 
 struct Formula {
-  int num_vars = 0;                        // variables are 1..num_vars
-  std::vector<std::vector<int>> clauses;   // nonzero literals, |lit| <= num_vars
-  std::vector<std::string> comments;       // provenance ("c" lines), one line each
+  int num_vars = 0;                       // variables are 1..num_vars
+  std::vector<std::vector<int>> clauses;  // nonzero literals, |lit| <= num_vars
+  std::vector<std::string> comments;      // provenance ("c" lines), one line each
 
   friend bool operator==(const Formula&, const Formula&) = default;
 };

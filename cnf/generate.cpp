@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-
 namespace gridlock {
 
 uint64_t Rng::below(uint64_t bound) {
@@ -85,8 +84,8 @@ Formula random_lsat(const LsatParams& p) {
   require(p.min_len >= 1 && p.min_len <= p.max_len && p.max_len <= 3,
           "clause lengths must satisfy 1 <= min <= max <= 3 (got " + std::to_string(p.min_len) + ".." +
               std::to_string(p.max_len) + ")");
-  require(p.n >= p.max_len, "n must be at least the longest clause length " + std::to_string(p.max_len) +
-                                " (got " + std::to_string(p.n) + ")");
+  require(p.n >= p.max_len, "n must be at least the longest clause length " + std::to_string(p.max_len) + " (got " +
+                                std::to_string(p.n) + ")");
   require(p.m >= 0, "m must be at least 0 (got " + std::to_string(p.m) + ")");
   const int cap = lsat_max_clauses(p.n, p.min_len);
   require(p.m <= cap, "an LSAT formula with " + std::to_string(p.n) + " variables and clauses of at least " +
@@ -128,9 +127,9 @@ Formula random_lsat(const LsatParams& p) {
   f.comments = {std::string("generator: random-lsat (") +
                     (p.min_len == 3 ? "exactly 3 literals per clause" : "clause lengths uniform in [min,max]") +
                     "; clause pairs sharing one literal, all other literals used once)",
-                "parameters: n=" + std::to_string(p.n) + " m=" + std::to_string(p.m) + " min=" +
-                    std::to_string(p.min_len) + " max=" + std::to_string(p.max_len) + " seed=" +
-                    std::to_string(p.seed)};
+                "parameters: n=" + std::to_string(p.n) + " m=" + std::to_string(p.m) +
+                    " min=" + std::to_string(p.min_len) + " max=" + std::to_string(p.max_len) +
+                    " seed=" + std::to_string(p.seed)};
 
   // Literals are drawn without replacement from all 2n literals; a clause
   // skips literals of variables it already holds. Near the cap the pool can

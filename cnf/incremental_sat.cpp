@@ -25,9 +25,7 @@ IncrementalSat::IncrementalSat() : impl_(std::make_unique<Impl>()) {
   impl_->solver.connect_learner(impl_.get());
 }
 
-IncrementalSat::~IncrementalSat() {
-  impl_->solver.disconnect_learner();
-}
+IncrementalSat::~IncrementalSat() { impl_->solver.disconnect_learner(); }
 
 int IncrementalSat::new_var() { return ++vars_; }
 

@@ -66,8 +66,9 @@ LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
   first[f.clauses.size()] = sorted.size();
   std::vector<int> lit_of(sorted.size());
   for (const auto& o : sorted) lit_of[o.slot] = o.lit;
-  std::sort(sorted.begin(), sorted.end(),
-            [](const Occ& a, const Occ& b) { return std::tie(a.lit, a.clause, a.slot) < std::tie(b.lit, b.clause, b.slot); });
+  std::sort(sorted.begin(), sorted.end(), [](const Occ& a, const Occ& b) {
+    return std::tie(a.lit, a.clause, a.slot) < std::tie(b.lit, b.clause, b.slot);
+  });
   // run_of[slot]: the run [begin, end) in `sorted` holding that occurrence;
   // pos_of[slot]: its own place there.
   std::vector<std::pair<size_t, size_t>> run_of(sorted.size());
@@ -93,7 +94,9 @@ LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
     if (!rep.ok && rep.violations.size() >= max_violations) continue;  // only the verdict and tautologies left
     const bool bad_length = form == LsatForm::Exact3 ? c.size() != 3 : (c.empty() || c.size() > 3);
     if (bad_length) {
-      add({LsatRule::ClauseLength, {i}, {},
+      add({LsatRule::ClauseLength,
+           {i},
+           {},
            "clause " + show_clause(f, i) + " has " + std::to_string(c.size()) + " literals, not " +
                (form == LsatForm::Exact3 ? "3" : "1 to 3")});
       continue;
@@ -108,7 +111,9 @@ LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
       if ((p > b && sorted[p - 1].clause == i) || (p + 1 < e && sorted[p + 1].clause == i)) repeated = lit_of[k];
     }
     if (repeated) {
-      add({LsatRule::RepeatedLiteral, {i}, {*repeated},
+      add({LsatRule::RepeatedLiteral,
+           {i},
+           {*repeated},
            "clause " + show_clause(f, i) + " repeats literal " + std::to_string(*repeated)});
       continue;
     }
@@ -135,13 +140,17 @@ LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
       for (const auto& [jj, lit] : nb)
         if (jj == j) shared.push_back(lit);
       if (reported_pairs.insert({std::min(i, j), std::max(i, j)}).second)
-        add({LsatRule::SharesTwoLiterals, {i, j}, shared,
+        add({LsatRule::SharesTwoLiterals,
+             {i, j},
+             shared,
              "clauses " + show_clause(f, i) + " and " + show_clause(f, j) + " share " + std::to_string(shared.size()) +
                  " literals (" + join(shared) + "), not exactly 1"});
     }
     if (found) continue;
     if (nb.size() >= 2) {  // all neighbours distinct here: two or more other clauses
-      add({LsatRule::IntersectsTwoClauses, {i, nb[0].first, nb[1].first}, {nb[0].second, nb[1].second},
+      add({LsatRule::IntersectsTwoClauses,
+           {i, nb[0].first, nb[1].first},
+           {nb[0].second, nb[1].second},
            "clause " + show_clause(f, i) + " intersects clauses " + std::to_string(nb[0].first + 1) + " (in literal " +
                std::to_string(nb[0].second) + ") and " + std::to_string(nb[1].first + 1) + " (in literal " +
                std::to_string(nb[1].second) + "), not at most one"});
@@ -171,7 +180,7 @@ std::optional<std::vector<bool>> hall_assignment(const Formula& f) {
   std::vector<std::vector<size_t>> cvars(m);  // clause -> its dense variables
   for (size_t c = 0; c < m; ++c)
     for (int lit : f.clauses[c]) cvars[c].push_back(dense(lit));
-  std::vector<long> owner(k, -1);        // variable -> clause it represents
+  std::vector<long> owner(k, -1);           // variable -> clause it represents
   std::vector<size_t> chosen(m, SIZE_MAX);  // clause -> its variable
   // Augmenting paths by breadth-first search from each clause in turn
   // (iterative: no recursion depth to overflow on large formulas).

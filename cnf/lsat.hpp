@@ -55,9 +55,9 @@ struct LsatViolation {
 };
 
 struct LsatReport {
-  bool ok = true;                          // the formula is LSAT in the form asked for
-  std::vector<LsatViolation> violations;   // the first ones in clause order (at most max_violations)
-  std::vector<size_t> tautologies;         // 0-based clauses holding x and -x (allowed)
+  bool ok = true;                         // the formula is LSAT in the form asked for
+  std::vector<LsatViolation> violations;  // the first ones in clause order (at most max_violations)
+  std::vector<size_t> tautologies;        // 0-based clauses holding x and -x (allowed)
 };
 
 // Checks f against the form. Clauses are visited in order and each clause

@@ -15,8 +15,8 @@ std::string shown(const std::string& tok) { return tok.size() > 40 ? tok.substr(
 
 // Literal parsing shared by files and command-line literals: records lit in
 // value/seen; sets ended on 0. Returns an error message or "".
-std::string take_literal(const std::string& tok, int num_vars, std::vector<bool>& value,
-                         std::vector<signed char>& seen, bool& ended) {
+std::string take_literal(const std::string& tok, int num_vars, std::vector<bool>& value, std::vector<signed char>& seen,
+                         bool& ended) {
   if (ended) return "text after the terminating 0: '" + shown(tok) + "'";
   long long lit = 0;
   auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), lit);
@@ -27,8 +27,7 @@ std::string take_literal(const std::string& tok, int num_vars, std::vector<bool>
     return "";
   }
   long long var = lit < 0 ? -lit : lit;
-  if (var > num_vars)
-    return "literal " + tok + " beyond the formula's " + std::to_string(num_vars) + " variables";
+  if (var > num_vars) return "literal " + tok + " beyond the formula's " + std::to_string(num_vars) + " variables";
   auto v = static_cast<size_t>(var);
   signed char sign = lit > 0 ? 1 : -1;
   if (seen[v] == -sign) return "variable " + std::to_string(var) + " given both values";
@@ -65,7 +64,8 @@ MaybeError read_assignment(std::istream& in, const std::string& name, int num_va
       if (status_line > 0)
         return Diagnostic{name, lineno, "second status line (the first is line " + std::to_string(status_line) + ")"};
       if (status != "SATISFIABLE" || (ss >> extra))
-        return Diagnostic{name, lineno, "the answer is not 's SATISFIABLE' but '" + shown(line) + "': it holds no model"};
+        return Diagnostic{name, lineno,
+                          "the answer is not 's SATISFIABLE' but '" + shown(line) + "': it holds no model"};
       status_line = lineno;
       continue;
     }
@@ -78,12 +78,12 @@ MaybeError read_assignment(std::istream& in, const std::string& name, int num_va
   if (in.bad()) return Diagnostic{name, 0, "read error"};
   const long last = std::max<long>(lineno, 1);
   if (!any) return Diagnostic{name, 1, "empty model: want 's SATISFIABLE' and 'v' lines ending in 0"};
-  if (status_line == 0)
-    return Diagnostic{name, last, "no 's SATISFIABLE' line: not a SAT-competition answer"};
+  if (status_line == 0) return Diagnostic{name, last, "no 's SATISFIABLE' line: not a SAT-competition answer"};
   if (!ended) return Diagnostic{name, last, "the 'v' lines do not end in 0 (truncated?)"};
   if (int v = first_missing(seen))
-    return Diagnostic{name, last, "variable " + std::to_string(v) + " is missing: the model must give all " +
-                                      std::to_string(num_vars) + " variables"};
+    return Diagnostic{name, last,
+                      "variable " + std::to_string(v) + " is missing: the model must give all " +
+                          std::to_string(num_vars) + " variables"};
   return std::nullopt;
 }
 
@@ -114,8 +114,9 @@ MaybeError parse_assignment_literals(const std::string& text, const std::string&
   for (std::string tok; ss >> tok;)
     if (std::string e = take_literal(tok, num_vars, value, seen, ended); !e.empty()) return Diagnostic{name, 0, e};
   if (int v = first_missing(seen))
-    return Diagnostic{name, 0, "variable " + std::to_string(v) + " is missing: the model must give all " +
-                                   std::to_string(num_vars) + " variables"};
+    return Diagnostic{name, 0,
+                      "variable " + std::to_string(v) + " is missing: the model must give all " +
+                          std::to_string(num_vars) + " variables"};
   return std::nullopt;
 }
 

@@ -56,11 +56,10 @@ SatResult solve_sat(const Formula& f, const SatLimits& limits) {
     for (int lit : clause) solver.add(lit);
     solver.add(0);
   }
-  if (limits.conflicts >= 0)
-    solver.limit("conflicts", static_cast<int>(std::min<int64_t>(limits.conflicts, INT_MAX)));
-  SatDeadline deadline(start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                                   std::max(limits.seconds, 0.0))),
-                       limits.seconds > 0);
+  if (limits.conflicts >= 0) solver.limit("conflicts", static_cast<int>(std::min<int64_t>(limits.conflicts, INT_MAX)));
+  SatDeadline deadline(
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(limits.seconds, 0.0))),
+      limits.seconds > 0);
   solver.connect_terminator(&deadline);
   const int code = solver.solve();
   solver.disconnect_terminator();

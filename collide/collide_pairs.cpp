@@ -349,8 +349,7 @@ bool pair_may_meet(const RegionForm& A, const RegionForm& B, int64_t reach_x, in
   return true;
 }
 
-bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& nets,
-                      const std::vector<Rational>& p) {
+bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& nets, const std::vector<Rational>& p) {
   Rational dx, dy;
   for (const auto& [q, w] : nets) dx = dx + p[q] * Rational(w.x), dy = dy + p[q] * Rational(w.y);
   auto face = [&](const RegionForm& R, int f, bool is_b) {
@@ -563,8 +562,8 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
   return false;
 }
 
-std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree,
-                                                const Regions& regions, TimeModel model, PairwiseStats* stats) {
+std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                                TimeModel model, PairwiseStats* stats) {
   const size_t n = inst.num_nodes(), nq = inst.couplings().size();
   std::vector<RegionForm> forms = region_forms(inst, regions);
   std::vector<std::vector<uint32_t>> regs_of(n);

@@ -74,8 +74,7 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
 
 // True iff the eight inequalities hold at p (progress of every coupling that
 // appears in A, B or nets; the others are irrelevant). For checking witnesses.
-bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& nets,
-                      const std::vector<Rational>& p);
+bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& nets, const std::vector<Rational>& p);
 
 enum class TimeModel { Continuous, Discrete };
 
@@ -94,8 +93,7 @@ struct PairCollision {
 // vector of every coupling on the path (the paper's T(v, w), here a plain
 // array with a list of non-zero entries), and every pair of regions is tested
 // as above. Returns the first colliding pair found (with its witness).
-std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree,
-                                                const Regions& regions, TimeModel model,
-                                                PairwiseStats* stats = nullptr);
+std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                                TimeModel model, PairwiseStats* stats = nullptr);
 
 }  // namespace gridlock

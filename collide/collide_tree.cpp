@@ -9,18 +9,18 @@ namespace {
 
 struct Copy {
   uint32_t region;
-  NodeId at;        // the node it is fixed to
-  Vec2 cell;        // its cell when `at` has not moved
-  uint32_t excl;    // instance edge it must not be compared across, or kNone
-  OpId own;         // its own operation (done: Inserted/Grown), or kNone
-  bool own_done;    // the state of `own` that gives the full width
+  NodeId at;      // the node it is fixed to
+  Vec2 cell;      // its cell when `at` has not moved
+  uint32_t excl;  // instance edge it must not be compared across, or kNone
+  OpId own;       // its own operation (done: Inserted/Grown), or kNone
+  bool own_done;  // the state of `own` that gives the full width
 };
 
 struct Arc {
   NodeId to;
   uint32_t edge;  // instance edge index
   OpId op;
-  Vec2 vec;       // displacement of `to` relative to the source at full progress
+  Vec2 vec;  // displacement of `to` relative to the source at full progress
 };
 
 struct Model {
@@ -121,9 +121,7 @@ struct Rect {
   NodeId node;
 };
 
-bool rects_meet(const Rect& a, const Rect& b) {
-  return a.x1 <= b.x2 && b.x1 <= a.x2 && a.y1 <= b.y2 && b.y1 <= a.y2;
-}
+bool rects_meet(const Rect& a, const Rect& b) { return a.x1 <= b.x2 && b.x1 <= a.x2 && a.y1 <= b.y2 && b.y1 <= a.y2; }
 
 // Red-blue (here: up to four colours) intersection by a plane sweep over x
 // with one segment tree per colour over the compressed y coordinates.
@@ -144,7 +142,8 @@ std::optional<std::pair<size_t, size_t>> bichromatic_pair(const std::vector<Rect
   };
   std::vector<Ev> ev;
   ev.reserve(2 * rects.size());
-  for (size_t i = 0; i < rects.size(); ++i) ev.push_back({rects[i].x1, true, i}), ev.push_back({rects[i].x2 + 1, false, i});
+  for (size_t i = 0; i < rects.size(); ++i)
+    ev.push_back({rects[i].x1, true, i}), ev.push_back({rects[i].x2 + 1, false, i});
   std::sort(ev.begin(), ev.end(), [](const Ev& a, const Ev& b) {
     return a.x != b.x ? a.x < b.x : (a.insert != b.insert ? !a.insert : a.i < b.i);
   });
@@ -296,8 +295,8 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
           uint32_t ci = M.copy_list[j];
           const Copy& cp = M.copies[ci];
           if (cp.excl != kNone && cp.excl == in_edge[w]) continue;  // faces the centroid across its own edge
-          rects.push_back({cp.cell.x + lo[w].x, cp.cell.x + hi[w].x, cp.cell.y + lo[w].y, cp.cell.y + hi[w].y, col,
-                           ci, w});
+          rects.push_back(
+              {cp.cell.x + lo[w].x, cp.cell.x + hi[w].x, cp.cell.y + lo[w].y, cp.cell.y + hi[w].y, col, ci, w});
         }
         for (uint32_t j = M.arc_start[w]; j < M.arc_start[w + 1]; ++j) {
           const Arc& a = M.arcs[j];

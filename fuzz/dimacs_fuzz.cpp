@@ -33,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!(back == f)) __builtin_trap();
   LsatReport exact = check_lsat(f, LsatForm::Exact3, 4);
   LsatReport le3 = check_lsat(f, LsatForm::AtMost3, 4);
-  if (exact.ok && !le3.ok) __builtin_trap();  // exactly-3 LSAT is a special case of LSAT<=3
+  if (exact.ok && !le3.ok) __builtin_trap();              // exactly-3 LSAT is a special case of LSAT<=3
   if (exact.ok && !hall_assignment(f)) __builtin_trap();  // the theorem of docs/formulas.md
   if (f.num_vars > 12 || f.clauses.size() > 200 || num_literals(f) > 800) return 0;
   const SatResult ex = exhaustive_sat(f);

@@ -33,7 +33,10 @@ class Canvas {
   void any_expansion(const std::string& name, Vec2 u, Dir d);
   // Puts the operations named in ops into one coupling called name.
   void couple(const std::string& name, const std::vector<std::string>& ops);
-  void anchor(Vec2 c) { anchor_ = c; has_anchor_ = true; }
+  void anchor(Vec2 c) {
+    anchor_ = c;
+    has_anchor_ = true;
+  }
 
   size_t num_nodes() const { return nodes_.size(); }
   size_t num_ops() const { return ops_.size(); }

@@ -2,9 +2,9 @@
 //
 // Every gadget of the discrete reduction is a small tree with horizontal
 // expansions only (the separation gadget of the continuous reduction adds a
-// vertical one and a contract of its own kind, Separation below). Nodes never leave their rows, so a collision is a gap (the empty
-// cells between two consecutive nodes of a row) going negative (docs/model.md,
-// "Consequences worth testing"). A gap's size after a set S of operations is
+// vertical one and a contract of its own kind, Separation below). Nodes never leave their rows, so a collision is a gap
+// (the empty cells between two consecutive nodes of a row) going negative (docs/model.md, "Consequences worth
+// testing"). A gap's size after a set S of operations is
 //   size + sum over the operations k on the tree path between its two nodes
 //          of sign(k) * [k in S],      sign = +1 widens, -1 narrows.
 // In the discrete model sizes change linearly while a coupling runs, so an

@@ -24,8 +24,7 @@ GadgetPlacement place_gap_gadget(Canvas& canvas, int64_t row, const GapGadgetSpe
   for (int64_t x = 0; x < end; ++x) {
     if (!spec.detach_widening && is_op_edge(x, 0, nw))
       canvas.expansion(spec.widen[static_cast<size_t>(x / 2)], {x, row}, Dir::PosX);
-    else
-      canvas.edge({x, row}, {x + 1, row});
+    else canvas.edge({x, row}, {x + 1, row});
   }
   if (spec.detach_widening) {  // a tail o - o =w1= o - o =w2= o to the right
     for (int64_t j = 0; j < nw; ++j) {
@@ -42,10 +41,8 @@ GadgetPlacement place_gap_gadget(Canvas& canvas, int64_t row, const GapGadgetSpe
   // B and the hook: (b, top) .. (end, top).
   for (int64_t x = b; x <= end; ++x) canvas.node({x, top});
   for (int64_t x = b; x < end; ++x) {
-    if (is_op_edge(x, b, nn))
-      canvas.expansion(spec.narrow[static_cast<size_t>((x - b) / 2)], {x, top}, Dir::PosX);
-    else
-      canvas.edge({x, top}, {x + 1, top});
+    if (is_op_edge(x, b, nn)) canvas.expansion(spec.narrow[static_cast<size_t>((x - b) / 2)], {x, top}, Dir::PosX);
+    else canvas.edge({x, top}, {x + 1, top});
   }
   canvas.edge({end, top}, {end, row});
 

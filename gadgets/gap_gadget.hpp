@@ -28,9 +28,9 @@
 namespace gridlock {
 
 struct GapGadgetSpec {
-  int64_t gap = 0;                   // g >= 0
-  std::vector<std::string> widen;    // operation names
-  std::vector<std::string> narrow;   // operation names
+  int64_t gap = 0;                  // g >= 0
+  std::vector<std::string> widen;   // operation names
+  std::vector<std::string> narrow;  // operation names
   bool detach_widening = false;
 };
 

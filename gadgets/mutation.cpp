@@ -3,8 +3,8 @@
 namespace gridlock {
 
 namespace {
-constexpr Mutation kAll[] = {Mutation::None,       Mutation::VariableLooseY, Mutation::ClauseLoose,
-                             Mutation::ClauseTight, Mutation::OrderLoose,     Mutation::OrderDropRelease,
+constexpr Mutation kAll[] = {Mutation::None,           Mutation::VariableLooseY, Mutation::ClauseLoose,
+                             Mutation::ClauseTight,    Mutation::OrderLoose,     Mutation::OrderDropRelease,
                              Mutation::SeparationLoose};
 }
 

@@ -24,8 +24,7 @@ GadgetPlacement place_separation_gadget(Canvas& canvas, int64_t row, const std::
   p.bottom_row = row;
   p.top_row = top;
   p.attach_row = row;
-  if (shift == 0)
-    p.contract.separations.push_back({first, second});
+  if (shift == 0) p.contract.separations.push_back({first, second});
   else  // one empty cell between Y and X, which only b narrows
     p.contract.gaps.push_back({shift, {{second, -1}}});
   return p;

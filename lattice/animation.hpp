@@ -34,27 +34,27 @@
 namespace gridlock {
 
 struct Animation {
-  int64_t den = 1;                       // D
-  std::vector<int64_t> events;           // event times * D, increasing; at least one
-  std::vector<int64_t> start;            // per coupling: start time * D
-  std::vector<uint32_t> part_of_node;    // per node: its rigid part
+  int64_t den = 1;                     // D
+  std::vector<int64_t> events;         // event times * D, increasing; at least one
+  std::vector<int64_t> start;          // per coupling: start time * D
+  std::vector<uint32_t> part_of_node;  // per node: its rigid part
   struct Part {
-    NodeId top = kNone;                  // the node just below the cut edge (the root for part 0)
-    uint32_t parent = kNone;             // the part above the cut edge (kNone for part 0)
-    CouplingId coupling = kNone;         // the cut edge operation's coupling (kNone for part 0)
+    NodeId top = kNone;           // the node just below the cut edge (the root for part 0)
+    uint32_t parent = kNone;      // the part above the cut edge (kNone for part 0)
+    CouplingId coupling = kNone;  // the cut edge operation's coupling (kNone for part 0)
     // Displacement relative to the parent part, * D, at these events (indices
     // into events, increasing), linear in between and constant outside:
     // part 0 {0: (0,0)}; others {start: (0,0), end: D * v}.
     std::vector<uint32_t> key_event;
     std::vector<Vec2> key_disp;
   };
-  std::vector<Part> parts;               // parents before children
-  std::optional<Collision> collision;    // the simulator's first collision
+  std::vector<Part> parts;             // parents before children
+  std::optional<Collision> collision;  // the simulator's first collision
   // Where a player stops: the last event; with a collision, the moment the
   // still pictures draw it (half way from its start to the next event, where
   // the overlap shows and motion is still linear).
   Rational stop;
-  size_t keyframes() const;              // total over the parts (at most 2 per part)
+  size_t keyframes() const;  // total over the parts (at most 2 per part)
 };
 
 // Runs the simulator on s and builds the keyframes. Requires

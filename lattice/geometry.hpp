@@ -15,8 +15,14 @@ struct Vec2 {
   friend Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
   friend Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
   friend Vec2 operator*(int64_t k, Vec2 a) { return {k * a.x, k * a.y}; }
-  Vec2& operator+=(Vec2 b) { x += b.x, y += b.y; return *this; }
-  Vec2& operator-=(Vec2 b) { x -= b.x, y -= b.y; return *this; }
+  Vec2& operator+=(Vec2 b) {
+    x += b.x, y += b.y;
+    return *this;
+  }
+  Vec2& operator-=(Vec2 b) {
+    x -= b.x, y -= b.y;
+    return *this;
+  }
   friend bool operator==(Vec2 a, Vec2 b) = default;
   bool is_zero() const { return x == 0 && y == 0; }
 };

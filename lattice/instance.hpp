@@ -39,9 +39,9 @@ const char* op_kind_name(OpKind k);  // "expand", "grow", "contract"
 struct Operation {
   std::string name;
   OpKind kind = OpKind::Expand;
-  NodeId u = kNone;        // the node that performs it
-  Dir dir = Dir::PosX;     // from u toward the cell c = u + dir
-  NodeId v = kNone;        // the node in c (expand, contract); kNone for grow
+  NodeId u = kNone;     // the node that performs it
+  Dir dir = Dir::PosX;  // from u toward the cell c = u + dir
+  NodeId v = kNone;     // the node in c (expand, contract); kNone for grow
   CouplingId coupling = kNone;
   bool is_edge_op() const { return kind != OpKind::Grow; }
 };
@@ -96,8 +96,8 @@ class Instance {
   std::unordered_map<uint64_t, NodeId> cell_index_;
   std::unordered_map<std::string, OpId> op_index_;
   std::unordered_map<std::string, CouplingId> coupling_index_;
-  std::vector<NodeId> adj_;        // 4 per node
-  std::vector<uint32_t> adj_edge_; // 4 per node
+  std::vector<NodeId> adj_;         // 4 per node
+  std::vector<uint32_t> adj_edge_;  // 4 per node
   std::vector<OpId> op_of_node_;
 };
 

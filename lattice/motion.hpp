@@ -29,13 +29,13 @@ namespace gridlock {
 // the subtree of w is the node range order[tin[w] .. tout[w]).
 struct SpanningTree {
   NodeId root = 0;
-  std::vector<NodeId> parent;      // kNone for the root
-  std::vector<Dir> parent_dir;     // direction parent -> node
-  std::vector<OpId> parent_op;     // operation on the edge to the parent, or kNone
-  std::vector<uint32_t> tin, tout; // Euler interval of each node
-  std::vector<NodeId> order;       // nodes by tin
-  std::vector<uint32_t> subtree;   // subtree sizes
-  std::vector<char> tree_edge;     // per edge of the instance: 1 iff in the tree
+  std::vector<NodeId> parent;       // kNone for the root
+  std::vector<Dir> parent_dir;      // direction parent -> node
+  std::vector<OpId> parent_op;      // operation on the edge to the parent, or kNone
+  std::vector<uint32_t> tin, tout;  // Euler interval of each node
+  std::vector<NodeId> order;        // nodes by tin
+  std::vector<uint32_t> subtree;    // subtree sizes
+  std::vector<char> tree_edge;      // per edge of the instance: 1 iff in the tree
 
   // O(n). root defaults to the instance's anchor.
   static SpanningTree build(const Instance& inst, NodeId root = kNone);
@@ -50,10 +50,10 @@ enum class RegionKind : uint8_t { Node, Inserted, Grown };
 
 struct RegionShape {
   RegionKind kind = RegionKind::Node;
-  uint32_t id = 0;             // node id (Node) or operation id (Inserted, Grown)
+  uint32_t id = 0;                 // node id (Node) or operation id (Inserted, Grown)
   int64_t base[4] = {0, 0, 0, 0};  // xlo, xhi, ylo, yhi at zero displacement
   NodeId ref[4] = {kNone, kNone, kNone, kNone};
-  OpId grow_op = kNone;        // Grown: this op's progress moves face grow_face
+  OpId grow_op = kNone;  // Grown: this op's progress moves face grow_face
   int grow_face = 0;
   int grow_sign = 0;
 };
@@ -78,8 +78,8 @@ std::string region_label(const Instance& inst, const Regions& regions, uint32_t 
 // Built in O(n + e log e); total size O(e).
 struct FaceNets {
   struct Face {
-    std::vector<NodeId> walk;                              // the nodes in walk order
-    std::vector<std::pair<CouplingId, Vec2>> nets;         // non-zero nets only
+    std::vector<NodeId> walk;                       // the nodes in walk order
+    std::vector<std::pair<CouplingId, Vec2>> nets;  // non-zero nets only
   };
   std::vector<Face> faces;  // only faces with at least one non-zero net
   // For each coupling: true iff it has a non-zero net around some face, so

@@ -71,7 +71,8 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     for (const Vec2& c : cells)
       for (Dir d : {Dir::PosX, Dir::PosY}) {
         Vec2 o = c + unit(d);
-        if (taken.count(cell_key(o)) && draw_below(s, 100) < p.extra_edge_percent) b.add_edge(c, o);  // may repeat: ignored
+        if (taken.count(cell_key(o)) && draw_below(s, 100) < p.extra_edge_percent)
+          b.add_edge(c, o);  // may repeat: ignored
       }
   // Operations on distinct nodes.
   std::vector<char> used(cells.size(), 0);

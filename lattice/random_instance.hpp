@@ -23,8 +23,8 @@ struct RandomInstanceParams {
   bool allow_grow = true;
   bool allow_contract = true;
   bool horizontal_only = false;
-  bool path_shape = false;          // grow only from the newest node (long paths)
-  uint32_t spread = 0;              // 0: compact blobs; larger: sparser shapes
+  bool path_shape = false;  // grow only from the newest node (long paths)
+  uint32_t spread = 0;      // 0: compact blobs; larger: sparser shapes
 };
 
 // O(nodes) expected.

@@ -28,7 +28,9 @@ class Rational {
   // Parses "7", "-3", "3/2", "-10/4" (reduced). Rejects anything else,
   // zero denominators and values whose parts do not fit in 64 bits.
   static std::optional<Rational> parse(std::string_view text);
-  std::string str() const { return den_ == 1 ? std::to_string(num_) : std::to_string(num_) + "/" + std::to_string(den_); }
+  std::string str() const {
+    return den_ == 1 ? std::to_string(num_) : std::to_string(num_) + "/" + std::to_string(den_);
+  }
   // For drawing only (SVG coordinates); never used in a verdict.
   double approx() const { return static_cast<double>(num_) / static_cast<double>(den_); }
 

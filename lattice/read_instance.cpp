@@ -136,7 +136,8 @@ MaybeError Reader::run(Instance& out) {
       header = true;
       continue;
     }
-    if (!header) return error("missing header 'p grid NODES EDGES OPS COUPLINGS' before the first " + std::string(t[0]) + " line");
+    if (!header)
+      return error("missing header 'p grid NODES EDGES OPS COUPLINGS' before the first " + std::string(t[0]) + " line");
     std::optional<std::string> problem;
     switch (kind) {
       case 'n': {
@@ -175,15 +176,13 @@ MaybeError Reader::run(Instance& out) {
       }
       case 'a': {
         Vec2 c;
-        if (anchor_line > 0)
-          return error("second anchor line (the first is line " + std::to_string(anchor_line) + ")");
+        if (anchor_line > 0) return error("second anchor line (the first is line " + std::to_string(anchor_line) + ")");
         anchor_line = line_no_;
         if (!want(3, "a X Y") || !cell(t, 1, c)) return err_;
         problem = b.set_anchor(c);
         break;
       }
-      default:
-        return error("unknown line type '" + std::string(t[0]) + "'");
+      default: return error("unknown line type '" + std::string(t[0]) + "'");
     }
     if (problem) return error(*problem);
   }

@@ -85,9 +85,11 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
   // Light grid of the cells in view.
   o << "<g stroke=\"#eeeeee\" stroke-width=\"1\">\n";
   for (double x = std::ceil(minx); x <= maxx; x += 1)
-    o << "<line x1=\"" << fmt(X(x)) << "\" y1=\"" << fmt(Y(maxy)) << "\" x2=\"" << fmt(X(x)) << "\" y2=\"" << fmt(Y(miny)) << "\"/>\n";
+    o << "<line x1=\"" << fmt(X(x)) << "\" y1=\"" << fmt(Y(maxy)) << "\" x2=\"" << fmt(X(x)) << "\" y2=\""
+      << fmt(Y(miny)) << "\"/>\n";
   for (double y = std::ceil(miny); y <= maxy; y += 1)
-    o << "<line x1=\"" << fmt(X(minx)) << "\" y1=\"" << fmt(Y(y)) << "\" x2=\"" << fmt(X(maxx)) << "\" y2=\"" << fmt(Y(y)) << "\"/>\n";
+    o << "<line x1=\"" << fmt(X(minx)) << "\" y1=\"" << fmt(Y(y)) << "\" x2=\"" << fmt(X(maxx)) << "\" y2=\""
+      << fmt(Y(y)) << "\"/>\n";
   o << "</g>\n";
   auto centre = [&](NodeId w) {
     return std::pair<double, double>{(box[w].x0 + box[w].x1) / 2, (box[w].y0 + box[w].y1) / 2};
@@ -98,7 +100,8 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
     if (e.op != kNone) continue;
     auto [ax, ay] = centre(e.a);
     auto [bx, by] = centre(e.b);
-    o << "<line x1=\"" << fmt(X(ax)) << "\" y1=\"" << fmt(Y(ay)) << "\" x2=\"" << fmt(X(bx)) << "\" y2=\"" << fmt(Y(by)) << "\"/>\n";
+    o << "<line x1=\"" << fmt(X(ax)) << "\" y1=\"" << fmt(Y(ay)) << "\" x2=\"" << fmt(X(bx)) << "\" y2=\"" << fmt(Y(by))
+      << "\"/>\n";
   }
   o << "</g>\n";
   // Growth targets (initial picture only): dashed cells.
@@ -166,7 +169,8 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
   // Anchor.
   {
     auto [ax, ay] = centre(inst.anchor());
-    o << "<circle cx=\"" << fmt(X(ax - 0.25)) << "\" cy=\"" << fmt(Y(ay + 0.25)) << "\" r=\"4\" fill=\"black\"><title>anchor</title></circle>\n";
+    o << "<circle cx=\"" << fmt(X(ax - 0.25)) << "\" cy=\"" << fmt(Y(ay + 0.25))
+      << "\" r=\"4\" fill=\"black\"><title>anchor</title></circle>\n";
   }
   // Legend: couplings by colour.
   double ly = title_h + H + 18;
@@ -227,8 +231,9 @@ std::string render_ascii(const Instance& inst) {
   for (const auto& p : c) grow_box(p);
   for (const auto& op : inst.ops())
     if (op.kind == OpKind::Grow) grow_box(c[op.u] + unit(op.dir));
-  if (maxx - minx > 400 || maxy - miny > 400) return "(too large for ASCII: " + std::to_string(maxx - minx + 1) + " x " +
-                                                      std::to_string(maxy - miny + 1) + " cells)\n";
+  if (maxx - minx > 400 || maxy - miny > 400)
+    return "(too large for ASCII: " + std::to_string(maxx - minx + 1) + " x " + std::to_string(maxy - miny + 1) +
+           " cells)\n";
   size_t W = static_cast<size_t>(2 * (maxx - minx) + 1), H = static_cast<size_t>(2 * (maxy - miny) + 1);
   std::vector<std::string> canvas(H, std::string(W, ' '));
   auto at = [&](int64_t x2, int64_t y2) -> char& {  // doubled coordinates

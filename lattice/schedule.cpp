@@ -126,15 +126,15 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
     if (tok.size() != 2) return Diagnostic{name, no, "expected 'COUPLING TIME'"};
     CouplingId q = inst.find_coupling(tok[0]);
     if (q == kNone) return Diagnostic{name, no, "unknown coupling '" + tok[0] + "'"};
-    if (line_of[q]) return Diagnostic{name, no, "coupling '" + tok[0] + "' given a time twice (first on line " +
-                                                     std::to_string(line_of[q]) + ")"};
+    if (line_of[q])
+      return Diagnostic{
+          name, no, "coupling '" + tok[0] + "' given a time twice (first on line " + std::to_string(line_of[q]) + ")"};
     auto t = Rational::parse(tok[1]);
     if (!t) return Diagnostic{name, no, "bad time '" + tok[1] + "' (an integer or a fraction a/b)"};
     if (t->num() / t->den() > kMaxStartTime || t->num() / t->den() < -kMaxStartTime)
       return Diagnostic{name, no, "time out of range: '" + tok[1] + "' (|t| <= 2^30)"};
     lcm = std::lcm(lcm, t->den());
-    if (lcm > kMaxDenominator)
-      return Diagnostic{name, no, "the common denominator of the times exceeds 2^20"};
+    if (lcm > kMaxDenominator) return Diagnostic{name, no, "the common denominator of the times exceeds 2^20"};
     line_of[q] = no;
     out.start[q] = *t;
     return std::nullopt;

@@ -15,8 +15,8 @@
 namespace gridlock {
 
 // Start times are bounded so that the simulator's scaled integers fit 64 bits.
-inline constexpr int64_t kMaxStartTime = int64_t{1} << 30;   // |t| <= 2^30
-inline constexpr int64_t kMaxDenominator = int64_t{1} << 20; // lcm of denominators
+inline constexpr int64_t kMaxStartTime = int64_t{1} << 30;    // |t| <= 2^30
+inline constexpr int64_t kMaxDenominator = int64_t{1} << 20;  // lcm of denominators
 
 struct Schedule {
   std::vector<Rational> start;    // per coupling id

@@ -88,8 +88,7 @@ class CellLists {
  public:
   CellLists() = default;
   // Box: cells x0 .. x0 + w - 1, y0 .. y0 + h - 1 (w = 0: none).
-  CellLists(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h)
-      : x0_(x0), y0_(y0), w_(w), h_(h) {
+  CellLists(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h) : x0_(x0), y0_(y0), w_(w), h_(h) {
     size_t cap = 16;
     while (cap < (w > 0 ? 64 : 4 * num_regions + 16)) cap <<= 1;
     slots_.assign(cap, Slot{});
@@ -184,7 +183,8 @@ CellLists make_cell_lists(const Regions& regions) {
     ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
   }
   constexpr int64_t margin = 2;
-  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + 2 * margin, h = static_cast<__int128>(yhi) - ylo + 1 + 2 * margin;
+  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + 2 * margin,
+                 h = static_cast<__int128>(yhi) - ylo + 1 + 2 * margin;
   if (w * h > static_cast<__int128>(16 * nr + 4096)) return CellLists(nr, 0, 0, 0, 0);
   return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
 }
@@ -240,8 +240,7 @@ struct Simulator::Scratch {
   }
 };
 
-Simulator::Simulator(const Instance& inst)
-    : owned_(std::make_unique<PreparedInstance>(inst)), prep_(owned_.get()) {}
+Simulator::Simulator(const Instance& inst) : owned_(std::make_unique<PreparedInstance>(inst)), prep_(owned_.get()) {}
 Simulator::Simulator(const PreparedInstance& prep) : prep_(&prep) {}
 Simulator::~Simulator() = default;
 Simulator::Simulator(Simulator&&) noexcept = default;
@@ -297,9 +296,8 @@ SimResult Simulator::run(const Schedule& s) {
   std::vector<Event>& events = sc.events;
   events.clear();
   for (CouplingId q = 0; q < nq; ++q) events.push_back({T[q], q, true}), events.push_back({T[q] + D, q, false});
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    return a.time != b.time ? a.time < b.time : a.start < b.start;
-  });
+  std::sort(events.begin(), events.end(),
+            [](const Event& a, const Event& b) { return a.time != b.time ? a.time < b.time : a.start < b.start; });
 
   std::vector<char>& running = sc.running;
   running.assign(nq, 0);

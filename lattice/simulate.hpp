@@ -41,10 +41,10 @@ namespace gridlock {
 struct Collision {
   enum class Kind { Node, Cycle };
   Kind kind = Kind::Node;
-  Rational time;                    // the first moment (infimum) of the collision
-  uint32_t a = kNone, b = kNone;    // the two regions (node collision), a < b
-  std::vector<NodeId> cycle;        // the face walk (cycle collision)
-  std::vector<CouplingId> moving;   // couplings running right after `time`
+  Rational time;                   // the first moment (infimum) of the collision
+  uint32_t a = kNone, b = kNone;   // the two regions (node collision), a < b
+  std::vector<NodeId> cycle;       // the face walk (cycle collision)
+  std::vector<CouplingId> moving;  // couplings running right after `time`
 };
 
 struct SimStats {

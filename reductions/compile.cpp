@@ -1,7 +1,7 @@
 #include "reductions/compile.hpp"
 
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 #include "gadgets/canvas.hpp"
@@ -119,10 +119,8 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation, ReductionMo
     std::string first = prefix + coupling_names[chain[k]], second = prefix + coupling_names[chain[k + 1]];
     coupling_ops[chain[k]].push_back(first);
     coupling_ops[chain[k + 1]].push_back(second);
-    if (k == separated_link)
-      place(place_separation_gadget(canvas, row, first, second, mutation));
-    else
-      place(place_order_gadget(canvas, row, first, second, mutation));
+    if (k == separated_link) place(place_separation_gadget(canvas, row, first, second, mutation));
+    else place(place_order_gadget(canvas, row, first, second, mutation));
   }
   // The spine: rows 0 .. last used row (a single node for an empty formula).
   const int64_t top = std::max<int64_t>(row - 2, 0);
@@ -196,8 +194,7 @@ std::vector<bool> assignment_from_schedule(const CompiledFormula& c, const std::
     pos[order[i]] = i;
   }
   std::vector<bool> value(static_cast<size_t>(c.num_vars) + 1, false);
-  for (size_t i = 0; i < static_cast<size_t>(c.num_vars); ++i)
-    value[i + 1] = pos[c.set_true[i]] < pos[c.set_false[i]];
+  for (size_t i = 0; i < static_cast<size_t>(c.num_vars); ++i) value[i + 1] = pos[c.set_true[i]] < pos[c.set_false[i]];
   return value;
 }
 
@@ -233,18 +230,18 @@ std::vector<std::string> describe_compiled(const CompiledFormula& c) {
                   "), " + std::to_string(s.couplings) + " couplings, " + std::to_string(s.rows) + " rows");
   lines.push_back("model: " + std::string(reduction_model_name(c.model)) + " time" +
                   (c.model == ReductionModel::Continuous ? " (the link y_n < z_1 is a separation gadget)" : ""));
-  lines.push_back("gadgets: " + std::to_string(s.variable_gadgets) + " variable, " +
-                  std::to_string(s.clause_gadgets) + " clause, " + std::to_string(s.order_gadgets) + " order" +
-                  (c.model == ReductionModel::Continuous
-                       ? ", " + std::to_string(s.separation_gadgets) + " separation"
-                       : std::string()));
+  lines.push_back("gadgets: " + std::to_string(s.variable_gadgets) + " variable, " + std::to_string(s.clause_gadgets) +
+                  " clause, " + std::to_string(s.order_gadgets) + " order" +
+                  (c.model == ReductionModel::Continuous ? ", " + std::to_string(s.separation_gadgets) + " separation"
+                                                         : std::string()));
   if (c.num_vars >= 1) {
     const auto n = static_cast<long long>(c.num_vars), m = static_cast<long long>(c.num_clauses),
                L = static_cast<long long>(s.literals);
     const bool cont = c.model == ReductionModel::Continuous;
     lines.push_back("size formulas (n=" + std::to_string(n) + ", m=" + std::to_string(m) + ", L=" + std::to_string(L) +
-                    "): nodes " + (cont ? "43n+5L+15m-9 = " + std::to_string(43 * n + 5 * L + 15 * m - 9)
-                                        : "43n+5L+15m-11 = " + std::to_string(43 * n + 5 * L + 15 * m - 11)) +
+                    "): nodes " +
+                    (cont ? "43n+5L+15m-9 = " + std::to_string(43 * n + 5 * L + 15 * m - 9)
+                          : "43n+5L+15m-11 = " + std::to_string(43 * n + 5 * L + 15 * m - 11)) +
                     ", operations 8n+L+3m-2 = " + std::to_string(8 * n + L + 3 * m - 2) +
                     ", couplings 4n+m = " + std::to_string(4 * n + m));
   }

@@ -64,12 +64,12 @@ const char* reduction_model_name(ReductionModel m);  // "discrete", "continuous"
 struct CompileStats {
   size_t nodes = 0, edges = 0, ops = 0, couplings = 0;
   size_t variable_gadgets = 0, clause_gadgets = 0, order_gadgets = 0, rows = 0;
-  size_t separation_gadgets = 0;         // continuous model: 1 (n >= 1), else 0
-  size_t vertical_ops = 0;               // one per separation gadget
-  size_t literals = 0;                   // L
-  size_t max_coupling = 0;               // largest coupling (operations)
+  size_t separation_gadgets = 0;  // continuous model: 1 (n >= 1), else 0
+  size_t vertical_ops = 0;        // one per separation gadget
+  size_t literals = 0;            // L
+  size_t max_coupling = 0;        // largest coupling (operations)
   std::string max_coupling_name;
-  std::vector<std::string> oversize;     // one line per coupling above 3 operations, naming the literal
+  std::vector<std::string> oversize;  // one line per coupling above 3 operations, naming the literal
 };
 
 struct CompiledFormula {

@@ -37,9 +37,7 @@ Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
   };
   Formula f;
   switch (kind) {
-    case FuzzKind::Ksat:
-      f = random_ksat(three_sat(KSatParams{}));
-      break;
+    case FuzzKind::Ksat: f = random_ksat(three_sat(KSatParams{})); break;
     case FuzzKind::Lsat: {
       LsatParams l;
       l.n = n;
@@ -50,9 +48,7 @@ Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
       f = random_lsat(l);
       break;
     }
-    case FuzzKind::Planted:
-      f = planted_ksat(three_sat(PlantedParams{}));
-      break;
+    case FuzzKind::Planted: f = planted_ksat(three_sat(PlantedParams{})); break;
   }
   f.comments.insert(f.comments.begin(), "gridlock fuzz formula " + std::to_string(index) + " of campaign seed " +
                                             std::to_string(p.seed) + " (" + fuzz_kind_name(kind) + ", formula seed " +

@@ -18,7 +18,7 @@ const char* fuzz_kind_name(FuzzKind k);  // "ksat", "lsat", "planted"
 
 struct FuzzParams {
   uint64_t seed = 1;
-  int min_vars = 3, max_vars = 6;  // 1 <= min_vars <= max_vars <= 64
+  int min_vars = 3, max_vars = 6;                                                     // 1 <= min_vars <= max_vars <= 64
   std::vector<FuzzKind> kinds = {FuzzKind::Ksat, FuzzKind::Lsat, FuzzKind::Planted};  // non-empty
 };
 

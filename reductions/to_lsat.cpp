@@ -230,14 +230,14 @@ LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt) {
   red.recipe_.resize(static_cast<size_t>(out.num_vars) + 1);
   st.out_vars = out.num_vars;
   st.out_clauses = out.clauses.size();
-  out.comments = {
-      "to-lsat: variables 1.." + std::to_string(in.num_vars) + " are the input's; " + std::to_string(st.chain_vars) +
-          " chain, " + std::to_string(st.copies - st.cycle_vars) + " copy, " + std::to_string(st.links) +
-          " occurrence and " + std::to_string(st.empty_clauses) + " false variables follow",
-      "to-lsat: " + std::to_string(st.cycle_vars) + " variables occur with a literal more than once: " +
-          std::to_string(st.copies - st.cycle_vars) + " path clauses, " + std::to_string(st.links) + " links; " +
-          std::to_string(st.tautologies) + " tautologies dropped, " + std::to_string(st.split_clauses) +
-          " long clauses split"};
+  out.comments = {"to-lsat: variables 1.." + std::to_string(in.num_vars) + " are the input's; " +
+                      std::to_string(st.chain_vars) + " chain, " + std::to_string(st.copies - st.cycle_vars) +
+                      " copy, " + std::to_string(st.links) + " occurrence and " + std::to_string(st.empty_clauses) +
+                      " false variables follow",
+                  "to-lsat: " + std::to_string(st.cycle_vars) +
+                      " variables occur with a literal more than once: " + std::to_string(st.copies - st.cycle_vars) +
+                      " path clauses, " + std::to_string(st.links) + " links; " + std::to_string(st.tautologies) +
+                      " tautologies dropped, " + std::to_string(st.split_clauses) + " long clauses split"};
   return red;
 }
 

@@ -55,18 +55,18 @@ struct ToLsatOptions {
 };
 
 struct ToLsatStats {
-  bool identity = false;            // passed through unchanged
+  bool identity = false;  // passed through unchanged
   int in_vars = 0;
   size_t in_clauses = 0;
-  size_t repeated_literals = 0;     // literals dropped as repeats within a clause
-  size_t tautologies = 0;           // clauses dropped as always true
-  size_t empty_clauses = 0;         // e: each became (u)(-u)
-  size_t split_clauses = 0;         // clauses of more than 3 literals
-  size_t chain_vars = 0;            // A
-  size_t normalised_clauses = 0;    // m'
-  size_t cycle_vars = 0;            // |X|
-  size_t copies = 0;                // sum of k_x (path variables, the pivots x included)
-  size_t links = 0;                 // d
+  size_t repeated_literals = 0;   // literals dropped as repeats within a clause
+  size_t tautologies = 0;         // clauses dropped as always true
+  size_t empty_clauses = 0;       // e: each became (u)(-u)
+  size_t split_clauses = 0;       // clauses of more than 3 literals
+  size_t chain_vars = 0;          // A
+  size_t normalised_clauses = 0;  // m'
+  size_t cycle_vars = 0;          // |X|
+  size_t copies = 0;              // sum of k_x (path variables, the pivots x included)
+  size_t links = 0;               // d
   int out_vars = 0;
   size_t out_clauses = 0;
 };

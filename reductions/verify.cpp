@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,7 +55,8 @@ Tri tri(bool yes) { return yes ? Tri::Yes : Tri::No; }
 
 std::vector<std::string> times_of(const Instance& inst, const Schedule& s) {
   std::vector<std::string> out;
-  for (CouplingId q = 0; q < inst.couplings().size(); ++q) out.push_back(inst.couplings()[q].name + " " + s.start[q].str());
+  for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+    out.push_back(inst.couplings()[q].name + " " + s.start[q].str());
   return out;
 }
 
@@ -132,7 +133,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   // 2. to-lsat if needed, compile.
   t0 = std::chrono::steady_clock::now();
   const bool direct = opt.direct && std::none_of(f.clauses.begin(), f.clauses.end(),
-                                                  [](const std::vector<int>& cl) { return cl.empty(); });
+                                                 [](const std::vector<int>& cl) { return cl.empty(); });
   std::optional<LsatReduction> lsat;
   Lift red;
   if (direct) {
@@ -211,9 +212,11 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   if (r.discrete != Tri::Unknown && r.sat != Tri::Unknown && r.discrete != r.sat)
     problem(std::string("exact solver says ") + tri_name(r.discrete) + ", CaDiCaL says " +
             (r.sat == Tri::Yes ? "SAT" : "UNSAT"));
-  if (r.continuous != Tri::Yes) problem("gap checker says the continuous model collides: " + describe_gap_verdict(inst, gv));
+  if (r.continuous != Tri::Yes)
+    problem("gap checker says the continuous model collides: " + describe_gap_verdict(inst, gv));
   if (r.sat_witness == Check::Invalid) problem("the SAT model's schedule collides in the simulator");
-  if (r.solver_witness == Check::Invalid) problem("the solver's schedule lifts to an assignment that falsifies the formula");
+  if (r.solver_witness == Check::Invalid)
+    problem("the solver's schedule lifts to an assignment that falsifies the formula");
   if (r.gaps_witness == Check::Invalid) problem("running every coupling at time 0 collides in the simulator");
   if (r.ran_continuous) append_continuous_problems(r, problem);
   r.problem = p;
@@ -257,22 +260,25 @@ std::string write_reproducer(const VerifyResult& r, const std::string& dir, cons
   if (opt.model != VerifyModel::Discrete) flags += std::string(" --model ") + verify_model_name(opt.model);
   if (opt.mutation != Mutation::None) flags += std::string(" --break-gadget ") + mutation_name(opt.mutation);
   if (opt.direct) flags += " --direct";
-  write("README.txt", "gridlock verify found a disagreement on " + r.name + ":\n  " + r.problem +
-                          "\n\nCaDiCaL: " + tri_name(r.sat) + "  exact solver: " + tri_name(r.discrete) +
-                          "  gap checker: " + tri_name(r.continuous) +
-                          (r.ran_continuous ? std::string("  exact continuous solver: ") + tri_name(r.continuous_solver)
-                                            : std::string()) +
-                          "\n\nformula.cnf          the formula\n"
-                          "lsat.cnf             its LSAT<=3 form (the compiled one)\n" +
-                          (r.ran_discrete ? std::string("instance.grid        the compiled instance\n"
-                          "sat-schedule.txt     CaDiCaL's model lifted to a schedule (gridlock check instance.grid "
-                          "--order-file sat-schedule.txt)\n"
-                          "solver-schedule.txt  the exact solver's schedule\n") : std::string()) +
-                          continuous_files +
-                          "run.sh               replays the check\n");
-  write("run.sh", "#!/bin/sh\n# Replays the disagreement (run from this folder, gridlock on PATH or GRIDLOCK set).\n"
-                  "exec \"${GRIDLOCK:-gridlock}\" verify formula.cnf" +
-                      flags + "\n");
+  write(
+      "README.txt",
+      "gridlock verify found a disagreement on " + r.name + ":\n  " + r.problem + "\n\nCaDiCaL: " + tri_name(r.sat) +
+          "  exact solver: " + tri_name(r.discrete) + "  gap checker: " + tri_name(r.continuous) +
+          (r.ran_continuous ? std::string("  exact continuous solver: ") + tri_name(r.continuous_solver)
+                            : std::string()) +
+          "\n\nformula.cnf          the formula\n"
+          "lsat.cnf             its LSAT<=3 form (the compiled one)\n" +
+          (r.ran_discrete
+               ? std::string("instance.grid        the compiled instance\n"
+                             "sat-schedule.txt     CaDiCaL's model lifted to a schedule (gridlock check instance.grid "
+                             "--order-file sat-schedule.txt)\n"
+                             "solver-schedule.txt  the exact solver's schedule\n")
+               : std::string()) +
+          continuous_files + "run.sh               replays the check\n");
+  write("run.sh",
+        "#!/bin/sh\n# Replays the disagreement (run from this folder, gridlock on PATH or GRIDLOCK set).\n"
+        "exec \"${GRIDLOCK:-gridlock}\" verify formula.cnf" +
+            flags + "\n");
   std::filesystem::permissions(dir + "/run.sh", std::filesystem::perms::owner_exec, std::filesystem::perm_options::add);
   return dir;
 }

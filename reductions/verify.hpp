@@ -59,23 +59,23 @@ enum class Check { None, Valid, Invalid };
 
 struct VerifyResult {
   std::string name;
-  Formula source, lsat;  // F and G
-  bool reduced = false;  // G came from to-lsat
+  Formula source, lsat;      // F and G
+  bool reduced = false;      // G came from to-lsat
   CompiledFormula compiled;  // G compiled (with the mutation, if any): the instance checked
   const Instance& instance() const { return compiled.instance; }
   size_t nodes = 0, ops = 0, couplings = 0, max_coupling = 0;
   Tri sat = Tri::Unknown, discrete = Tri::Unknown, continuous = Tri::Unknown;
-  Check sat_witness = Check::None;     // F's model -> schedule -> simulator
-  Check solver_witness = Check::None;  // solver's schedule -> assignment -> F
-  Check gaps_witness = Check::None;    // gaps YES: all couplings at time 0 -> simulator
+  Check sat_witness = Check::None;                         // F's model -> schedule -> simulator
+  Check solver_witness = Check::None;                      // solver's schedule -> assignment -> F
+  Check gaps_witness = Check::None;                        // gaps YES: all couplings at time 0 -> simulator
   std::vector<std::string> sat_schedule, solver_schedule;  // coupling names
   // The continuous reduction (when VerifyOptions::model asks for it).
   bool ran_discrete = false, ran_continuous = false;
-  CompiledFormula compiled_continuous;   // G compiled for continuous time
-  Tri continuous_solver = Tri::Unknown;  // the exact continuous solver on it
-  Check csat_witness = Check::None;      // F's model -> start times -> simulator
-  Check csolver_witness = Check::None;   // solver's start times -> simulator -> assignment -> F
-  std::string csolver_issue;             // why csolver_witness is Invalid
+  CompiledFormula compiled_continuous;                 // G compiled for continuous time
+  Tri continuous_solver = Tri::Unknown;                // the exact continuous solver on it
+  Check csat_witness = Check::None;                    // F's model -> start times -> simulator
+  Check csolver_witness = Check::None;                 // solver's start times -> simulator -> assignment -> F
+  std::string csolver_issue;                           // why csolver_witness is Invalid
   std::vector<std::string> csat_times, csolver_times;  // "NAME TIME" lines
   size_t cnodes = 0;
   double ms_csolve = 0;

@@ -6,7 +6,7 @@
 # clang-tidy needs a compile database: it uses BUILD_DIR (default build/),
 # configuring it if needed. Headers are checked through the .cpp files that
 # include them (HeaderFilterRegex in .clang-tidy).
-# Not yet a CI gate: the one-time reformat of the tree comes first.
+# scripts/test.sh runs the format check as a CI gate (no change allowed).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 format=1

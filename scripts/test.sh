@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The test command (CI runs exactly this). In order:
-#  1. no file of the repository reaches beside it (scripts/check_self_contained.sh);
+#  1. no file of the repository reaches beside it (scripts/check_self_contained.sh),
+#     and clang-format would change nothing (scripts/lint.sh --format-only);
 #  2. the optimised build and the whole suite, in a copy of the repository in
 #     a fresh temporary folder with nothing beside it: this proves the suite
 #     needs nothing outside the repository;
@@ -18,6 +19,9 @@ bash scripts/setup.sh
 
 echo "== self-contained: no file reaches outside the repository"
 bash scripts/check_self_contained.sh
+
+echo "== format: clang-format changes nothing (.clang-format)"
+bash scripts/lint.sh --format-only
 
 echo "== optimised build and tests, from a copy of the repository with nothing beside it"
 work=$(mktemp -d)

@@ -49,8 +49,8 @@ LinForm operator-(const LinForm& a, const LinForm& b) {
 bool make_constraint(std::vector<LinForm> forms, uint32_t ra, uint32_t rb, CollisionConstraint& out) {
   std::vector<LinForm> kept;
   for (auto& f : forms) {
-    if (f.max_value() <= 0) return false;       // never positive: the pair never overlaps
-    if (f.terms.empty()) continue;              // constant and positive: no information
+    if (f.max_value() <= 0) return false;  // never positive: the pair never overlaps
+    if (f.terms.empty()) continue;         // constant and positive: no information
     kept.push_back(std::move(f));
   }
   if (kept.empty()) {

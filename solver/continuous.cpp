@@ -64,7 +64,13 @@ class ComponentEncoder {
   ComponentEncoder(z3::context& ctx, z3::solver& s, const Component& comp, const ConstraintSystem& sys,
                    const FaceNets& faces, std::vector<int>& var_of, PairEncoding encoding,
                    std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& offsets_cache)
-      : ctx_(ctx), s_(s), comp_(comp), sys_(sys), faces_(faces), var_of_(var_of), encoding_(encoding),
+      : ctx_(ctx),
+        s_(s),
+        comp_(comp),
+        sys_(sys),
+        faces_(faces),
+        var_of_(var_of),
+        encoding_(encoding),
         cache_(offsets_cache) {}
 
   void encode() {
@@ -362,7 +368,10 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     // Cheap sufficient test: the whole component at once.
     bool at_once = true;
     for (uint32_t ci : comp.pairs)
-      if (!pair_free_all_at_once(sys.constraints[ci])) { at_once = false; break; }
+      if (!pair_free_all_at_once(sys.constraints[ci])) {
+        at_once = false;
+        break;
+      }
     for (uint32_t fi = 0; at_once && fi < comp.faces.size(); ++fi) {
       Vec2 sum{0, 0};
       for (auto& [q, v] : faces.faces[comp.faces[fi]].nets) sum += v;
@@ -386,11 +395,17 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     enc.encode();
     if (opt.seconds > 0) {
       double left = opt.seconds - elapsed();
-      if (left <= 0) { unknown = true; break; }
+      if (left <= 0) {
+        unknown = true;
+        break;
+      }
       s.set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
     }
     if (opt.max_states > 0) {
-      if (conflicts >= opt.max_states) { unknown = true; break; }
+      if (conflicts >= opt.max_states) {
+        unknown = true;
+        break;
+      }
       s.set("max_conflicts", static_cast<unsigned>(std::min<uint64_t>(opt.max_states - conflicts, UINT32_MAX)));
     }
     z3::check_result cr = s.check();
@@ -416,10 +431,16 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     for (CouplingId q : comp.couplings) {
       z3::expr v = m.eval(enc.time_of(q), true);
       auto parsed = Rational::parse(Z3_get_numeral_string(ctx, v));
-      if (!parsed) { fits = false; break; }
+      if (!parsed) {
+        fits = false;
+        break;
+      }
       vals.push_back(*parsed);
     }
-    if (!fits) { unknown = true; break; }
+    if (!fits) {
+      unknown = true;
+      break;
+    }
     Rational lo = *std::min_element(vals.begin(), vals.end());
     for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = vals[j] - lo;
   }

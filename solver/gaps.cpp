@@ -62,7 +62,7 @@ GapVerdict check_gaps(const Instance& inst) {
         parent[x] = w;
         int64_t step = 0;
         if (OpId k = edges[e].op; k != kNone) {
-          step = unit(d).x;  // x moves away from w by one unit along d ...
+          step = unit(d).x;                                   // x moves away from w by one unit along d ...
           if (ops[k].kind == OpKind::Contract) step = -step;  // ... or toward it
         }
         D[x] = D[w] + step;
@@ -159,11 +159,12 @@ std::string describe_gap_verdict(const Instance& inst, const GapVerdict& v) {
     }
     case GapVerdict::Reason::Gap: {
       std::string s = "gap in row " + std::to_string(v.row) + " between " + inst.node_label(v.left) + " and " +
-                      inst.node_label(v.right) + ": initial size " + std::to_string(v.initial_size) +
-                      ", final size " + std::to_string(v.final_size);
+                      inst.node_label(v.right) + ": initial size " + std::to_string(v.initial_size) + ", final size " +
+                      std::to_string(v.final_size);
       std::string widen, narrow;
       for (const GapChange& c : v.changes) {
-        std::string item = " " + inst.ops()[c.op].name + " (" + (c.delta > 0 ? "+" : "") + std::to_string(c.delta) + ")";
+        std::string item = " " + inst.ops()[c.op].name + " (" + (c.delta > 0 ? "+" : "") + std::to_string(c.delta) +
+                           ")";
         (c.delta > 0 ? widen : narrow) += item;
       }
       s += "; widened by" + (widen.empty() ? std::string(" none") : widen);

@@ -41,12 +41,12 @@ struct GapVerdict {
   int64_t final_size = 0;              // < 0
   std::vector<GapChange> changes;      // the operations that change it
   // Reason::Cycle: a non-tree edge whose fundamental cycle does not close.
-  std::vector<NodeId> cycle;           // the cycle's nodes, from one end of the edge around to the other
-  int64_t mismatch = 0;                // net horizontal displacement around it at the end
+  std::vector<NodeId> cycle;  // the cycle's nodes, from one end of the edge around to the other
+  int64_t mismatch = 0;       // net horizontal displacement around it at the end
   // Statistics.
-  uint64_t gaps_checked = 0;           // consecutive pairs in rows
+  uint64_t gaps_checked = 0;  // consecutive pairs in rows
   uint64_t negative_gaps = 0;
-  uint64_t cycles_checked = 0;         // non-tree edges
+  uint64_t cycles_checked = 0;  // non-tree edges
   uint64_t open_cycles = 0;
 };
 

@@ -51,11 +51,11 @@ class OpTree {
   Vec2 child_vector(OpId op) const { return op_vec_[op]; }
 
  private:
-  std::vector<uint32_t> comp_;       // per node
-  std::vector<uint32_t> parent_;     // per component; kNone at the root
-  std::vector<OpId> parent_op_;      // per component: the operation on the edge to the parent
-  std::vector<uint32_t> depth_;      // per component
-  std::vector<Vec2> op_vec_;         // per operation (zero for growths and non-tree edges)
+  std::vector<uint32_t> comp_;    // per node
+  std::vector<uint32_t> parent_;  // per component; kNone at the root
+  std::vector<OpId> parent_op_;   // per component: the operation on the edge to the parent
+  std::vector<uint32_t> depth_;   // per component
+  std::vector<Vec2> op_vec_;      // per operation (zero for growths and non-tree edges)
 };
 
 }  // namespace gridlock

@@ -66,7 +66,7 @@ class SearchBudget {
     const double t = elapsed();
     if (t - last_shown_ < 0.5) return;
     last_shown_ = t;
-    std::fprintf(stderr, "\r\033[Ksolve: %llu states, depth %zu, %.0f states/s, %.1f s", 
+    std::fprintf(stderr, "\r\033[Ksolve: %llu states, depth %zu, %.0f states/s, %.1f s",
                  static_cast<unsigned long long>(st.states), depth_, static_cast<double>(st.states) / t, t);
     std::fflush(stderr);
     drawn_ = true;

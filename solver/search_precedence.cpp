@@ -144,7 +144,6 @@ class PrecedenceSearch {
     }
   }
 
-
   void perform(CouplingId q) {
     for (auto [c, j] : sys_.of_coupling[q]) {
       int64_t coef = sys_.constraints[c].coef_of(j)[0];

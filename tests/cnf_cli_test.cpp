@@ -154,8 +154,9 @@ TEST(CnfCli, CheckAnswersAndNamesTheRule) {
   std::string f = test::write_file(dir + "/two.cnf", "p cnf 4 2\n1 2 3 0\n4 2 1 0\n");
   auto no = run_gridlock({"cnf", "check", f});
   EXPECT_EQ(no.exit_code, 20);
-  EXPECT_NE(no.out.find("c exactly-3 LSAT: no: clauses 1 (1 2 3) and 2 (4 2 1) share 2 literals (1 2), not exactly 1\n"),
-            std::string::npos)
+  EXPECT_NE(
+      no.out.find("c exactly-3 LSAT: no: clauses 1 (1 2 3) and 2 (4 2 1) share 2 literals (1 2), not exactly 1\n"),
+      std::string::npos)
       << no.out;
   EXPECT_NE(no.out.find("\ns NO\n"), std::string::npos);
   std::string short_clauses = test::write_file(dir + "/short.cnf", "p cnf 3 2\n1 2 0\n-1 3 0\n");
@@ -198,8 +199,7 @@ TEST(CnfCli, ErrorsAreFileLineMessage) {
   EXPECT_EQ(run_gridlock({"cnf", "gen", "ksat", "--n", "5"}).err,
             "gridlock: error: cnf gen: give exactly one of --m and --ratio\n");
   EXPECT_EQ(run_gridlock({"cnf", "gen", "nope", "--n", "5", "--m", "1"}).exit_code, 1);
-  EXPECT_EQ(run_gridlock({"cnf", "solve", "--solver", "exhaustive",
-                          GRIDLOCK_DATA_DIR "/satlib/uf50-218/uf50-01.cnf"})
+  EXPECT_EQ(run_gridlock({"cnf", "solve", "--solver", "exhaustive", GRIDLOCK_DATA_DIR "/satlib/uf50-218/uf50-01.cnf"})
                 .exit_code,
             1);
   std::filesystem::remove_all(dir);
@@ -268,7 +268,8 @@ TEST(CnfCli, SolveLimitsAndOracles) {
   }
   for (int j = 0; j < 9; ++j)
     for (int a = 0; a < 10; ++a)
-      for (int b = a + 1; b < 10; ++b) php += std::to_string(-(a * 9 + j + 1)) + " " + std::to_string(-(b * 9 + j + 1)) + " 0\n";
+      for (int b = a + 1; b < 10; ++b)
+        php += std::to_string(-(a * 9 + j + 1)) + " " + std::to_string(-(b * 9 + j + 1)) + " 0\n";
   auto r = run_gridlock({"cnf", "solve", "--conflicts", "10", "-"}, php);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("\ns UNKNOWN\n"), std::string::npos);

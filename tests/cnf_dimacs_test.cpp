@@ -46,8 +46,8 @@ TEST(Dimacs, SatlibOriginalForm) {
 TEST(Dimacs, AcceptedForms) {
   EXPECT_EQ(read_ok("p  cnf\t3   2  \n1 2 0 -3 0\n").clauses, (Clauses{{1, 2}, {-3}}));  // spacing, 2 per line
   EXPECT_EQ(read_ok("p cnf 3 1\n1\n-2\nc inside a clause\n3 0\n").clauses, (Clauses{{1, -2, 3}}));  // spans lines
-  EXPECT_EQ(read_ok("p cnf 2 1\r\n1 -2 0\r\n").clauses, (Clauses{{1, -2}}));                      // CRLF
-  EXPECT_EQ(read_ok("p cnf 2 2\n0\n\t 2\v\f0").clauses, (Clauses{{}, {2}}));  // empty clause, no final newline
+  EXPECT_EQ(read_ok("p cnf 2 1\r\n1 -2 0\r\n").clauses, (Clauses{{1, -2}}));                        // CRLF
+  EXPECT_EQ(read_ok("p cnf 2 2\n0\n\t 2\v\f0").clauses, (Clauses{{}, {2}}));   // empty clause, no final newline
   EXPECT_EQ(read_ok("p cnf 7 1\n007 -0002 0\n").clauses, (Clauses{{7, -2}}));  // leading zeros
   EXPECT_EQ(read_ok("  c indented comment\np cnf 0 0\nc trailing\n").comments,
             (std::vector<std::string>{"indented comment", "trailing"}));
@@ -68,7 +68,8 @@ TEST(Dimacs, EveryRejectionHasItsMessage) {
       {"empty", "", "t.cnf:1: empty input: no 'p cnf' header"},
       {"blank", " \n\n\t\n", "t.cnf:1: empty input: no 'p cnf' header"},
       {"only comments", "c hello\n", "t.cnf: missing header 'p cnf VARIABLES CLAUSES'"},
-      {"clause first", "1 2 0\np cnf 2 1\n", "t.cnf:1: missing header 'p cnf VARIABLES CLAUSES' before the first clause"},
+      {"clause first", "1 2 0\np cnf 2 1\n",
+       "t.cnf:1: missing header 'p cnf VARIABLES CLAUSES' before the first clause"},
       {"% first", "c x\n%\n", "t.cnf:2: missing header 'p cnf VARIABLES CLAUSES' before '%'"},
       {"second header", "p cnf 1 0\np cnf 1 0\n", "t.cnf:2: second header line (the first is line 1)"},
       {"format", "p wcnf 1 1\n", "t.cnf:1: unsupported format 'wcnf' (expected 'p cnf VARIABLES CLAUSES')"},

@@ -166,9 +166,14 @@ TEST(Generate, InvalidParametersAreExplained) {
   EXPECT_EQ(message([] { random_ksat({0, 1, 3, 1}); }), "n must be at least 1 (got 0)");
   EXPECT_EQ(message([] { random_ksat({5, -1, 3, 1}); }), "m must be at least 0 (got -1)");
   EXPECT_EQ(message([] { random_ksat({2, 1, 3, 1}); }), "k must be between 1 and n = 2 (got 3)");
-  EXPECT_EQ(message([] { random_lsat({10, 9, 3, 3, 1}); }),
+  EXPECT_EQ(message([] {
+              random_lsat({10, 9, 3, 3, 1});
+            }),
             "an LSAT formula with 10 variables and clauses of at least 3 literals has at most 8 clauses (got m=9)");
-  EXPECT_EQ(message([] { random_lsat({10, 2, 2, 4, 1}); }), "clause lengths must satisfy 1 <= min <= max <= 3 (got 2..4)");
+  EXPECT_EQ(message([] {
+              random_lsat({10, 2, 2, 4, 1});
+            }),
+            "clause lengths must satisfy 1 <= min <= max <= 3 (got 2..4)");
   EXPECT_EQ(message([] { random_lsat({2, 1, 3, 3, 1}); }), "n must be at least the longest clause length 3 (got 2)");
   EXPECT_EQ(message([] { planted_ksat({3, 1, 0, 1}); }), "k must be between 1 and n = 3 (got 0)");
 }

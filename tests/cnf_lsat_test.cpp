@@ -34,21 +34,25 @@ TEST(Lsat, LiteralsNotVariables) {
   // Every variable in all three clauses, but no literal twice: no intersection.
   Formula f = test::make_formula(3, {{1, 2, 3}, {-1, -2, -3}, {-1, 2, -3}});
   EXPECT_FALSE(is_lsat(f, LsatForm::Exact3));  // -1 and -3 shared by clauses 2 and 3
-  EXPECT_EQ(first_message(f, LsatForm::Exact3), "clauses 2 (-1 -2 -3) and 3 (-1 2 -3) share 2 literals (-3 -1), not exactly 1");
+  EXPECT_EQ(first_message(f, LsatForm::Exact3),
+            "clauses 2 (-1 -2 -3) and 3 (-1 2 -3) share 2 literals (-3 -1), not exactly 1");
   EXPECT_TRUE(is_lsat(test::make_formula(3, {{1, 2, 3}, {-1, -2, -3}}), LsatForm::Exact3));
 }
 
 TEST(Lsat, EachRuleWithItsMessage) {
   // Length.
-  EXPECT_EQ(first_message(test::make_formula(5, {{1, 2, 3}, {4, 5}}), LsatForm::Exact3), "clause 2 (4 5) has 2 literals, not 3");
+  EXPECT_EQ(first_message(test::make_formula(5, {{1, 2, 3}, {4, 5}}), LsatForm::Exact3),
+            "clause 2 (4 5) has 2 literals, not 3");
   EXPECT_EQ(first_message(test::make_formula(3, {{1, 2}}), LsatForm::AtMost3), "OK");
-  EXPECT_EQ(first_message(test::make_formula(4, {{1, 2, 3, 4}}), LsatForm::AtMost3), "clause 1 (1 2 3 4) has 4 literals, not 1 to 3");
+  EXPECT_EQ(first_message(test::make_formula(4, {{1, 2, 3, 4}}), LsatForm::AtMost3),
+            "clause 1 (1 2 3 4) has 4 literals, not 1 to 3");
   EXPECT_EQ(first_message(test::make_formula(1, {{}}), LsatForm::AtMost3), "clause 1 () has 0 literals, not 1 to 3");
   EXPECT_EQ(first_message(test::make_formula(8, {{1, 2, 3, 4, 5, 6, 7, 8}}), LsatForm::Exact3),
             "clause 1 (1 2 3 4 5 6 ... 8 literals) has 8 literals, not 3");
   // Repeated literal.
   EXPECT_EQ(first_message(test::make_formula(2, {{1, 1, 2}}), LsatForm::Exact3), "clause 1 (1 1 2) repeats literal 1");
-  EXPECT_EQ(first_message(test::make_formula(2, {{-2, 1, -2}}), LsatForm::AtMost3), "clause 1 (-2 1 -2) repeats literal -2");
+  EXPECT_EQ(first_message(test::make_formula(2, {{-2, 1, -2}}), LsatForm::AtMost3),
+            "clause 1 (-2 1 -2) repeats literal -2");
   // Two clauses sharing two literals.
   EXPECT_EQ(first_message(test::make_formula(4, {{1, 2, 3}, {4, 2, 1}}), LsatForm::Exact3),
             "clauses 1 (1 2 3) and 2 (4 2 1) share 2 literals (1 2), not exactly 1");

@@ -188,8 +188,8 @@ TEST(ToLsat, LsatInputsPassThroughOrAreRebuilt) {
   const int cases = test::scaled(300);
   for (int t = 0; t < cases; ++t) {
     SCOPED_TRACE(t);
-    Formula in = random_lsat({static_cast<int>(6 + t % 10), static_cast<int>(4 + t % 6), 1, 3,
-                              static_cast<uint64_t>(t)});
+    Formula in = random_lsat(
+        {static_cast<int>(6 + t % 10), static_cast<int>(4 + t % 6), 1, 3, static_cast<uint64_t>(t)});
     LsatReduction same = reduce_to_lsat(in);
     EXPECT_TRUE(same.stats().identity);
     std::vector<bool> v(static_cast<size_t>(in.num_vars) + 1, true);
@@ -228,8 +228,7 @@ TEST(ToLsat, SmallCasesByHand) {
     g.num_vars = 2;
     g.clauses = {{1, 2}, {1, 2}, {-1}};
     LsatReduction r2 = reduce_to_lsat(g);
-    EXPECT_EQ(r2.output().clauses,
-              (std::vector<std::vector<int>>{{3, 4}, {1, 5}, {-5, 2}, {-1}, {-3, 1}, {-4, 2}}));
+    EXPECT_EQ(r2.output().clauses, (std::vector<std::vector<int>>{{3, 4}, {1, 5}, {-5, 2}, {-1}, {-3, 1}, {-4, 2}}));
     EXPECT_EQ(r2.stats().links, 1u);
   }
   // Tautologies vanish; a formula of tautologies becomes empty (when built:

@@ -36,8 +36,8 @@ TEST(CollideCommand, ContinuousWitnessReadBackByCheck) {
 
 TEST(CollideCommand, DrawsTheCollision) {
   std::string dir = test::temp_dir();
-  auto r = run_gridlock({"collide", kExamples + "model-case2-order-gadget.grid", "--model", "discrete", "--svg",
-                         dir + "/c.svg"});
+  auto r = run_gridlock(
+      {"collide", kExamples + "model-case2-order-gadget.grid", "--model", "discrete", "--svg", dir + "/c.svg"});
   ASSERT_EQ(r.exit_code, 10) << r.err;
   std::string svg = test::read_file(dir + "/c.svg");
   EXPECT_NE(svg.find("collision from time 0 (drawn at 1/2)"), std::string::npos);

@@ -52,7 +52,8 @@ TEST(CollidePairs, AgainstVertexEnumeration) {
       info += " A" + std::to_string(f) + "=" + std::to_string(A.base[f]) + "+" + std::to_string(A.own_coef[f]) + "p";
     for (int f = 0; f < 4; ++f)
       info += " B" + std::to_string(f) + "=" + std::to_string(B.base[f]) + "+" + std::to_string(B.own_coef[f]) + "p";
-    for (auto& [q, w] : nets) info += " net" + std::to_string(q) + "=(" + std::to_string(w.x) + "," + std::to_string(w.y) + ")";
+    for (auto& [q, w] : nets)
+      info += " net" + std::to_string(q) + "=(" + std::to_string(w.x) + "," + std::to_string(w.y) + ")";
     SCOPED_TRACE(info);
     bool c = continuous_pair_collides(A, B, nets);
     ASSERT_EQ(c, test::brute_pair_continuous(A, B, nets, nq));

@@ -26,8 +26,8 @@ RandomInstanceParams tiny_params(uint64_t& s, uint32_t max_coupling, uint32_t ma
 
 std::string describe_seed(uint64_t seed, const RandomInstanceParams& p) {
   return "seed " + std::to_string(seed) + " (nodes " + std::to_string(p.nodes) + ", ops " + std::to_string(p.ops) +
-         ", max_coupling " + std::to_string(p.max_coupling) + ", extra edges " +
-         std::to_string(p.extra_edge_percent) + "%); replay with GRIDLOCK_TEST_SEED";
+         ", max_coupling " + std::to_string(p.max_coupling) + ", extra edges " + std::to_string(p.extra_edge_percent) +
+         "%); replay with GRIDLOCK_TEST_SEED";
 }
 
 // Every method that applies, in one model; all must agree with `expect`.

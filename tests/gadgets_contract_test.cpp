@@ -148,8 +148,14 @@ TEST(GadgetContract, EveryMutationChangesItsGadget) {
   };
   std::vector<Case> cases = {
       {Mutation::VariableLooseY, [](Canvas& c, Mutation m) { return place_variable_gadget(c, 0, var_ops(), m); }},
-      {Mutation::ClauseLoose, [](Canvas& c, Mutation m) { return place_clause_gadget(c, 0, {"p", "q", "r"}, "u", m); }},
-      {Mutation::ClauseTight, [](Canvas& c, Mutation m) { return place_clause_gadget(c, 0, {"p", "q", "r"}, "u", m); }},
+      {Mutation::ClauseLoose,
+       [](Canvas& c, Mutation m) {
+         return place_clause_gadget(c, 0, {"p", "q", "r"}, "u", m);
+       }},
+      {Mutation::ClauseTight,
+       [](Canvas& c, Mutation m) {
+         return place_clause_gadget(c, 0, {"p", "q", "r"}, "u", m);
+       }},
       {Mutation::OrderLoose, [](Canvas& c, Mutation m) { return place_order_gadget(c, 0, "a", "b", m); }},
       {Mutation::OrderDropRelease, [](Canvas& c, Mutation m) { return place_order_gadget(c, 0, "a", "b", m); }},
       {Mutation::SeparationLoose, [](Canvas& c, Mutation m) { return place_separation_gadget(c, 0, "a", "b", m); }},

@@ -85,8 +85,8 @@ TEST(SeparationGadget, ContractHoldsForEveryRealDelta) {
   Drawn d = draw([](Canvas& c) { return place_separation_gadget(c, 0, "a", "b"); });
   // The breakpoints and one point inside each open interval between them:
   // by the argument above, this decides every real delta.
-  const std::vector<Rational> proof = {Rational(-2), Rational(-1), Rational(-1, 2), Rational(0),
-                                       Rational(1, 2), Rational(1), Rational(2)};
+  const std::vector<Rational> proof = {Rational(-2),   Rational(-1), Rational(-1, 2), Rational(0),
+                                       Rational(1, 2), Rational(1),  Rational(2)};
   // The answer does not depend on t_a (only relative motion matters): try two.
   for (const Rational& ta : {Rational(0), Rational(5, 3)}) {
     for (const Rational& delta : proof) {
@@ -119,8 +119,8 @@ TEST(SeparationGadget, ContractHoldsForEveryRealDelta) {
 TEST(SeparationGadget, LooseMutationNeverCollides) {
   Drawn d = draw([](Canvas& c) { return place_separation_gadget(c, 0, "a", "b", Mutation::SeparationLoose); });
   EXPECT_TRUE(d.contract.separations.empty());
-  for (const Rational& delta : {Rational(-2), Rational(-1), Rational(-1, 2), Rational(0), Rational(1, 2),
-                                Rational(1), Rational(2)}) {
+  for (const Rational& delta :
+       {Rational(-2), Rational(-1), Rational(-1, 2), Rational(0), Rational(1, 2), Rational(1), Rational(2)}) {
     EXPECT_FALSE(run(d.inst, {{"a", Rational(0)}, {"b", delta}})) << "delta " << str(delta);
     EXPECT_FALSE(d.contract.collides_continuous({{"a", Rational(0)}, {"b", delta}}));
   }

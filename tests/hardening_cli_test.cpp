@@ -215,9 +215,11 @@ TEST(HardeningCli, NegativeZeroAndJunkNumbersAreRejectedNamingTheOption) {
 // 6. --break-gadget with a kind that does not apply is an error, never the
 // sound gadget labelled broken.
 TEST(HardeningCli, BreakGadgetMustBreakTheGadgetDrawn) {
-  const std::vector<std::pair<std::string, std::string>> applies = {
-      {"variable", "variable-loose-y"}, {"clause", "clause-loose"}, {"clause", "clause-tight"},
-      {"order", "order-loose"},         {"order", "order-drop-release"}};
+  const std::vector<std::pair<std::string, std::string>> applies = {{"variable", "variable-loose-y"},
+                                                                    {"clause", "clause-loose"},
+                                                                    {"clause", "clause-tight"},
+                                                                    {"order", "order-loose"},
+                                                                    {"order", "order-drop-release"}};
   int refused = 0, drawn = 0;
   for (const std::string kind : {"variable", "clause", "order"})
     for (const std::string m :
@@ -259,9 +261,11 @@ TEST(HardeningCli, HeaderCountsAreCheckedBeforeAllocating) {
   const std::string unused = "gridlock: error: " + big +
                              ":2: the header declares 2000000000 variables but no clause uses one above 1: at most "
                              "1048576 unused variables beyond the last one used are accepted\n";
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"cnf", "solve", big}, {"compile", big, "-o", dir + "/x.grid"},
-        {"cnf", "to-lsat", big}, {"lift", big, "--model", "1"}, {"verify", big}}) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"cnf", "solve", big},
+                                               {"compile", big, "-o", dir + "/x.grid"},
+                                               {"cnf", "to-lsat", big},
+                                               {"lift", big, "--model", "1"},
+                                               {"verify", big}}) {
     SCOPED_TRACE(args[0] + " " + args[1]);
     auto r = run_gridlock(args);
     EXPECT_EQ(r.exit_code, 1);
@@ -334,8 +338,8 @@ TEST(HardeningCli, ModelsAreSatCompetitionAnswersOrLiterals) {
 // is skipped, noted in the output and the manifest) and finishes.
 TEST(HardeningCli, GenInstancesHasAPerFormulaTimeout) {
   std::string dir = test::temp_dir() + "/set";
-  auto r = run_gridlock({"gen-instances", "-o", dir, "--vars", "1000", "--threshold", "1", "--lsat", "0",
-                         "--timeout", "0.5"});
+  auto r = run_gridlock(
+      {"gen-instances", "-o", dir, "--vars", "1000", "--threshold", "1", "--lsat", "0", "--timeout", "0.5"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto m = nlohmann::json::parse(test::read_file(dir + "/manifest.json"));
   EXPECT_EQ(m["interrupted"], false);
@@ -395,8 +399,7 @@ TEST(HardeningCli, SignalsDuringFuzzAndVerifyGiveAPartialSummary) {
 TEST(HardeningCli, NoSilentOverwritesOrMixedSets) {
   std::string dir = test::temp_dir();
   const std::string tiny = kExamples + "tiny-sat.cnf";
-  std::string two = test::write_file(dir + "/two.grid",
-                                     "p grid 1 0 0 0\nn 0 0\na 0 0\na 0 0\n");
+  std::string two = test::write_file(dir + "/two.grid", "p grid 1 0 0 0\nn 0 0\na 0 0\na 0 0\n");
   auto a = run_gridlock({"solve", two});
   EXPECT_EQ(a.exit_code, 1);
   EXPECT_EQ(a.err, "gridlock: error: " + two + ":4: second anchor line (the first is line 3)\n");
@@ -421,8 +424,8 @@ TEST(HardeningCli, NoSilentOverwritesOrMixedSets) {
   auto again = run_gridlock({"gen-instances", "-o", set, "--vars", "5", "--threshold", "1", "--lsat", "0"});
   EXPECT_EQ(again.exit_code, 1);
   EXPECT_EQ(again.err, "gridlock: error: " + set + ": folder is not empty (give --force to replace the set in it)\n");
-  auto forced = run_gridlock({"gen-instances", "-o", set, "--vars", "5", "--threshold", "1", "--lsat", "0",
-                              "--seed", "18446744073709551615", "--force"});
+  auto forced = run_gridlock({"gen-instances", "-o", set, "--vars", "5", "--threshold", "1", "--lsat", "0", "--seed",
+                              "18446744073709551615", "--force"});
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
   auto m = nlohmann::json::parse(test::read_file(set + "/manifest.json"));
   EXPECT_EQ(m["seed"], "18446744073709551615");

@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "cnf/dimacs.hpp"
 #include "lattice/animation.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
-#include "cnf/dimacs.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/verify.hpp"
 #include "support/cli.hpp"
@@ -50,7 +50,8 @@ TEST(AnimateCommand, BadInputIsAnError) {
   EXPECT_NE(none.err.find("gridlock: error: give exactly one of --order, --order-file, --times, --solve"),
             std::string::npos)
       << none.err;
-  auto bad = run_gridlock({"animate", kExamples + "model-case2-order-gadget.grid", "--order", "a zz", "-o", dir + "/v.html"});
+  auto bad = run_gridlock(
+      {"animate", kExamples + "model-case2-order-gadget.grid", "--order", "a zz", "-o", dir + "/v.html"});
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.err.find("gridlock: error: --order"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/v.html"));
@@ -70,8 +71,11 @@ std::string run_chromium(const std::string& chromium, const std::string& what, c
   std::string cmd = "timeout 120 " + chromium +
                     " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
                     " --disable-background-networking --disable-component-update --disable-sync"
-                    " --user-data-dir=" + profile + " --window-size=1000,700 --virtual-time-budget=3000"
-                    " --run-all-compositor-stages-before-draw " + what + " '" + url + "' 2>/dev/null";
+                    " --user-data-dir=" +
+                    profile +
+                    " --window-size=1000,700 --virtual-time-budget=3000"
+                    " --run-all-compositor-stages-before-draw " +
+                    what + " '" + url + "' 2>/dev/null";
   std::string out;
   FILE* f = popen(cmd.c_str(), "r");
   if (!f) return out;
@@ -87,7 +91,8 @@ nlohmann::json page_state(const std::string& dom);
 // loaded machine (no DOM within the time limit) is given two more tries.
 nlohmann::json load_state(const std::string& chromium, const std::string& url) {
   nlohmann::json st;
-  for (int attempt = 0; attempt < 3 && !st.is_object(); ++attempt) st = page_state(run_chromium(chromium, "--dump-dom", url));
+  for (int attempt = 0; attempt < 3 && !st.is_object(); ++attempt)
+    st = page_state(run_chromium(chromium, "--dump-dom", url));
   return st;
 }
 
@@ -99,7 +104,8 @@ nlohmann::json page_state(const std::string& dom) {
   size_t b = dom.find("</pre>", a);
   std::string text = dom.substr(a, b - a);
   // The DOM dump escapes &, < and > in text.
-  for (auto [from, to] : {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
+  for (auto [from, to] :
+       {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
     for (size_t p; (p = text.find(from)) != std::string::npos;) text.replace(p, from.size(), to);
   return nlohmann::json::parse(text, nullptr, false);
 }
@@ -159,7 +165,8 @@ void expect_collision_drawn(const std::string& chromium, const std::string& page
 
 TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
   const std::string chromium = chromium_path();
-  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
+  if (chromium.empty())
+    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
   std::string dir = test::temp_dir();
   {
     SCOPED_TRACE("two growths, continuous");
@@ -168,8 +175,8 @@ TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
     ASSERT_FALSE(read_instance_file(kExamples + "model-case1-two-growths.grid", inst));
     Schedule s;
     ASSERT_FALSE(read_times_file(inst, dir + "/t1", s));
-    auto r = run_gridlock({"animate", kExamples + "model-case1-two-growths.grid", "--times", dir + "/t1", "-o",
-                           dir + "/case1.html"});
+    auto r = run_gridlock(
+        {"animate", kExamples + "model-case1-two-growths.grid", "--times", dir + "/t1", "-o", dir + "/case1.html"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     expect_collision_drawn(chromium, dir + "/case1.html", inst, s, dir + "/case1.png");
   }
@@ -178,8 +185,8 @@ TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
     Instance inst;
     ASSERT_FALSE(read_instance_file(kExamples + "model-case2-order-gadget.grid", inst));
     Schedule s = schedule_from_order({inst.find_coupling("b"), inst.find_coupling("a")});
-    auto r = run_gridlock({"animate", kExamples + "model-case2-order-gadget.grid", "--order", "b a", "-o",
-                           dir + "/case2.html"});
+    auto r = run_gridlock(
+        {"animate", kExamples + "model-case2-order-gadget.grid", "--order", "b a", "-o", dir + "/case2.html"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     expect_collision_drawn(chromium, dir + "/case2.html", inst, s, dir + "/case2.png");
   }
@@ -236,11 +243,12 @@ TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
 // are the simulator's moving ones.
 TEST(AnimateBrowser, BeforeTheCollisionNoOverlap) {
   const std::string chromium = chromium_path();
-  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
+  if (chromium.empty())
+    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
   std::string dir = test::temp_dir();
   test::write_file(dir + "/t1", "g1 0\ng2 1/2\n");
-  auto r = run_gridlock({"animate", kExamples + "model-case1-two-growths.grid", "--times", dir + "/t1", "-o",
-                         dir + "/view.html"});
+  auto r = run_gridlock(
+      {"animate", kExamples + "model-case1-two-growths.grid", "--times", dir + "/t1", "-o", dir + "/view.html"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json st = load_state(chromium, "file://" + dir + "/view.html#t=1/4");
   ASSERT_TRUE(st.is_object());

@@ -42,8 +42,8 @@ TEST(CheckCommand, ContinuousTimesAndJson) {
 TEST(CheckCommand, OrderFileReadsSolverOutputAndSvgIsWritten) {
   std::string dir = test::temp_dir();
   test::write_file(dir + "/order", "c from a solver\ns YES\nv b\nv a\n");
-  auto r = run_gridlock({"check", kExamples + "model-case2-order-gadget.grid", "--order-file", dir + "/order", "--svg",
-                         dir + "/c.svg"});
+  auto r = run_gridlock(
+      {"check", kExamples + "model-case2-order-gadget.grid", "--order-file", dir + "/order", "--svg", dir + "/c.svg"});
   EXPECT_EQ(r.exit_code, 20) << r.err;
   std::string svg = test::read_file(dir + "/c.svg");
   EXPECT_NE(svg.find("<svg"), std::string::npos);

@@ -48,8 +48,9 @@ TEST(GridFormat, RoundTripRandomInstances) {
 
 TEST(GridFormat, AcceptsCommentsBlankLinesCrLfAndImplicitCouplings) {
   Instance inst;
-  std::istringstream in("c hello\r\n\r\n# also a comment\np grid 2 1 1 0\nn 0 0\n  n 1 0\ne 0 0 1 0\t\n"
-                        "c mid\no a expand 0 0 +x\na 1 0\n");
+  std::istringstream in(
+      "c hello\r\n\r\n# also a comment\np grid 2 1 1 0\nn 0 0\n  n 1 0\ne 0 0 1 0\t\n"
+      "c mid\no a expand 0 0 +x\na 1 0\n");
   auto err = read_instance(in, "ok.grid", inst);
   ASSERT_FALSE(err) << err->str();
   ASSERT_EQ(inst.couplings().size(), 1u);
@@ -80,22 +81,26 @@ TEST(GridFormat, RejectsEachBadInputClassWithItsMessage) {
       {"growth into a joined neighbour", kHead + "o g grow 0 0 +x\n",
        "bad.grid:7: growth 'g' into (1,0), which holds a node joined to (0,0) by an edge (use expand)"},
       {"bad direction", kHead + "o a expand 0 0 up\n", "bad.grid:7: bad direction 'up' (one of +x, -x, +y, -y)"},
-      {"bad kind", kHead + "o a push 0 0 +x\n",
-       "bad.grid:7: unknown operation kind 'push' (expand, grow or contract)"},
-      {"node in two operations", "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
-                                 "o b expand 1 0 +x\n",
+      {"bad kind", kHead + "o a push 0 0 +x\n", "bad.grid:7: unknown operation kind 'push' (expand, grow or contract)"},
+      {"node in two operations",
+       "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+       "o b expand 1 0 +x\n",
        "bad.grid:8: node (1,0) already takes part in operation 'a'"},
-      {"operation defined twice", "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a grow 0 0 -x\n"
-                                  "o a grow 2 0 +x\n",
+      {"operation defined twice",
+       "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a grow 0 0 -x\n"
+       "o a grow 2 0 +x\n",
        "bad.grid:8: operation 'a' defined twice"},
-      {"unknown name in a coupling", "p grid 3 2 1 1\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
-                                     "q Q a zz\n",
+      {"unknown name in a coupling",
+       "p grid 3 2 1 1\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+       "q Q a zz\n",
        "bad.grid:8: unknown operation 'zz' in coupling 'Q'"},
-      {"operation in two couplings", "p grid 3 2 1 2\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
-                                     "q Q a\nq R a\n",
+      {"operation in two couplings",
+       "p grid 3 2 1 2\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+       "q Q a\nq R a\n",
        "bad.grid:9: operation 'a' is already in coupling 'Q'"},
-      {"singleton name taken", "p grid 3 2 2 1\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
-                               "o b grow 2 0 +x\nq b a\n",
+      {"singleton name taken",
+       "p grid 3 2 2 1\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
+       "o b grow 2 0 +x\nq b a\n",
        "bad.grid:9: operation 'b' is in no coupling, and its singleton coupling's name is taken"},
       {"disconnected shape", "p grid 3 1 0 0\nn 0 0\nn 1 0\nn 5 5\ne 0 0 1 0\n",
        "bad.grid:4: the shape is not connected: node (5,5) cannot be reached from node (0,0)"},
@@ -112,7 +117,8 @@ TEST(GridFormat, RejectsEachBadInputClassWithItsMessage) {
       {"truncated input", "p grid 3 2 0 0\nn 0 0\nn 1 0\n",
        "bad.grid:3: unexpected end of input: the header promises 3 nodes, the file gives 2 (truncated?)"},
       {"more than the header", "p grid 1 0 0 0\nn 0 0\nn 1 0\n", "bad.grid:3: more nodes than the header's 1"},
-      {"binary input", std::string("p grid 1 0 0 0\nn 0 \0 0\n", 22), "bad.grid:2: binary input: byte 0x00 at column 5"},
+      {"binary input", std::string("p grid 1 0 0 0\nn 0 \0 0\n", 22),
+       "bad.grid:2: binary input: byte 0x00 at column 5"},
       {"binary high byte", "p grid 1 0 0 0\nn 0 \xff\n", "bad.grid:2: binary input: byte 0xff at column 5"},
       {"wrong field count", "p grid 1 0 0 0\nn 0 0 0\n", "bad.grid:2: expected 'n X Y', got 3 fields"},
       {"unknown line type", "p grid 1 0 0 0\nz 0 0\n", "bad.grid:2: unknown line type 'z'"},

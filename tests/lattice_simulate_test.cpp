@@ -50,8 +50,9 @@ TEST(ModelCases, Case1TwoGrowthsAlwaysMeet) {
     ASSERT_TRUE(c);
   }
   // Each alone is fine: a single growth in its own instance.
-  Instance one = parse("p grid 5 4 1 0\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\n"
-                       "o g1 grow 0 0 +x\n");
+  Instance one = parse(
+      "p grid 5 4 1 0\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\n"
+      "o g1 grow 0 0 +x\n");
   EXPECT_FALSE(run_order(one, {"g1"}));
 }
 
@@ -84,8 +85,9 @@ TEST(ModelCases, Case3BlockCycle) {
   Instance coupled = load("model-case3-block.grid");
   EXPECT_FALSE(run_order(coupled, {"Q"}));
   // The same two expansions uncoupled: whichever runs first breaks the cycle.
-  Instance apart = parse("p grid 4 4 2 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\n"
-                         "o a expand 0 0 +x\no b expand 0 1 +x\n");
+  Instance apart = parse(
+      "p grid 4 4 2 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\n"
+      "o a expand 0 0 +x\no b expand 0 1 +x\n");
   EXPECT_TRUE(run_order(apart, {"a", "b"}));
   // ... but in continuous time, started together, they move as one.
   Simulator sim(apart);
@@ -138,22 +140,42 @@ TEST(OperationGeometry, AllKindsAllDirectionsAtZeroHalfOne) {
       Rational w = (m.x1 - m.x0) * (m.y1 - m.y0);
       EXPECT_EQ(w, p);  // width p times height 1
       // The inserted node touches u's face toward d.
-      if (d == Dir::PosX) { EXPECT_EQ(m.x0, Rational(1)); }
-      if (d == Dir::NegX) { EXPECT_EQ(m.x1, Rational(0)); }
-      if (d == Dir::PosY) { EXPECT_EQ(m.y0, Rational(1)); }
-      if (d == Dir::NegY) { EXPECT_EQ(m.y1, Rational(0)); }
+      if (d == Dir::PosX) {
+        EXPECT_EQ(m.x0, Rational(1));
+      }
+      if (d == Dir::NegX) {
+        EXPECT_EQ(m.x1, Rational(0));
+      }
+      if (d == Dir::PosY) {
+        EXPECT_EQ(m.y0, Rational(1));
+      }
+      if (d == Dir::NegY) {
+        EXPECT_EQ(m.y1, Rational(0));
+      }
       // Growth: grown node (region 1) from u's face, width p.
       Geo g = at_progress(OpKind::Grow, d, 1, p);
       EXPECT_EQ((g.x1 - g.x0) * (g.y1 - g.y0), p);
-      if (d == Dir::PosX) { EXPECT_EQ(g.x0, Rational(1)); }
-      if (d == Dir::NegX) { EXPECT_EQ(g.x1, Rational(0)); }
+      if (d == Dir::PosX) {
+        EXPECT_EQ(g.x0, Rational(1));
+      }
+      if (d == Dir::NegX) {
+        EXPECT_EQ(g.x1, Rational(0));
+      }
       // Contraction: v narrows to width 1-p on u's face.
       Geo cv = at_progress(OpKind::Contract, d, 1, p);
       EXPECT_EQ((cv.x1 - cv.x0) * (cv.y1 - cv.y0), Rational(1) - p);
-      if (d == Dir::PosX) { EXPECT_EQ(cv.x0, Rational(1)); }
-      if (d == Dir::NegX) { EXPECT_EQ(cv.x1, Rational(0)); }
-      if (d == Dir::PosY) { EXPECT_EQ(cv.y0, Rational(1)); }
-      if (d == Dir::NegY) { EXPECT_EQ(cv.y1, Rational(0)); }
+      if (d == Dir::PosX) {
+        EXPECT_EQ(cv.x0, Rational(1));
+      }
+      if (d == Dir::NegX) {
+        EXPECT_EQ(cv.x1, Rational(0));
+      }
+      if (d == Dir::PosY) {
+        EXPECT_EQ(cv.y0, Rational(1));
+      }
+      if (d == Dir::NegY) {
+        EXPECT_EQ(cv.y1, Rational(0));
+      }
       // u never moves (it is the anchor).
       Geo u0 = at_progress(OpKind::Contract, d, 0, p);
       EXPECT_EQ(u0.x0, Rational(0));
@@ -164,13 +186,15 @@ TEST(OperationGeometry, AllKindsAllDirectionsAtZeroHalfOne) {
 
 TEST(OperationGeometry, TouchingIsNoCollision) {
   // A growth into a cell whose node leaves in lock-step only touches it.
-  Instance inst = parse("p grid 4 3 2 1\nn 0 0\nn 0 1\nn 1 1\nn 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\n"
-                        "o g grow 0 0 +x\no e expand 0 1 +x\nq Q g e\n");
+  Instance inst = parse(
+      "p grid 4 3 2 1\nn 0 0\nn 0 1\nn 1 1\nn 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\n"
+      "o g grow 0 0 +x\no e expand 0 1 +x\nq Q g e\n");
   // (1,0) hangs from (1,1); e pushes (1,1) and (1,0) right while g grows into (1,0).
   EXPECT_FALSE(run_order(inst, {"Q"}));
   // The growth alone, into the occupied cell: collides at once.
-  Instance alone = parse("p grid 4 3 1 0\nn 0 0\nn 0 1\nn 1 1\nn 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\n"
-                         "o g grow 0 0 +x\n");
+  Instance alone = parse(
+      "p grid 4 3 1 0\nn 0 0\nn 0 1\nn 1 1\nn 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 1 0\n"
+      "o g grow 0 0 +x\n");
   auto c = run_order(alone, {"g"});
   ASSERT_TRUE(c);
   EXPECT_EQ(c->time, Rational(0));

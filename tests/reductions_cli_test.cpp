@@ -50,7 +50,8 @@ TEST(CompileCli, Errors) {
   std::string f = test::write_file(dir + "/e.cnf", "p cnf 2 2\n1 2 0\n0\n");
   auto r = run_gridlock({"compile", f, "-o", dir + "/i.grid"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "gridlock: error: " + f + ": clause 2 is empty; the reduction needs at least one literal per clause\n");
+  EXPECT_EQ(r.err,
+            "gridlock: error: " + f + ": clause 2 is empty; the reduction needs at least one literal per clause\n");
   std::string g = test::write_file(dir + "/g.cnf", "p cnf 2 1\n1 3 0\n");
   r = run_gridlock({"compile", g});
   EXPECT_EQ(r.exit_code, 1);
@@ -105,10 +106,11 @@ TEST(LiftCli, ContinuousCertificatesBothWays) {
   EXPECT_EQ(run_gridlock({"check", dir + "/c.grid", "--times", times}).exit_code, 10);
   // Everything at time 0 collides on the continuous instance (the separation).
   std::string zero;
-  for (const char* q : {"x1:T", "x1:F", "x2:T", "x2:F", "x3:T", "x3:F", "y1", "y2", "y3", "z1", "z2", "z3", "u1", "u2",
-                        "u3"})
+  for (const char* q :
+       {"x1:T", "x1:F", "x2:T", "x2:F", "x3:T", "x3:F", "y1", "y2", "y3", "z1", "z2", "z3", "u1", "u2", "u3"})
     zero += std::string(q) + " 0\n";
-  EXPECT_EQ(run_gridlock({"check", dir + "/c.grid", "--times", test::write_file(dir + "/zero.txt", zero)}).exit_code, 20);
+  EXPECT_EQ(run_gridlock({"check", dir + "/c.grid", "--times", test::write_file(dir + "/zero.txt", zero)}).exit_code,
+            20);
   auto back = run_gridlock({"lift", f, "--times", times});
   EXPECT_EQ(back.exit_code, 10) << back.out;
   EXPECT_NE(back.out.find("c the lifted assignment satisfies the formula"), std::string::npos);
@@ -116,7 +118,8 @@ TEST(LiftCli, ContinuousCertificatesBothWays) {
   ASSERT_EQ(solved.exit_code, 10) << solved.out;
   auto back2 = run_gridlock({"lift", f, "--times", test::write_file(dir + "/solver.txt", solved.out)});
   EXPECT_EQ(back2.exit_code, 10) << back2.out;
-  auto bad = run_gridlock({"lift", f, "--continuous", "--model", test::write_file(dir + "/bad.txt", "s SATISFIABLE\nv -1 -2 -3 0\n")});
+  auto bad = run_gridlock(
+      {"lift", f, "--continuous", "--model", test::write_file(dir + "/bad.txt", "s SATISFIABLE\nv -1 -2 -3 0\n")});
   EXPECT_EQ(bad.exit_code, 20) << bad.out;
   auto err = run_gridlock({"lift", f, "--continuous", "--schedule", times});
   EXPECT_EQ(err.err, "gridlock: error: --schedule is a discrete order; use --times for the continuous instance\n");

@@ -9,9 +9,9 @@
 
 #include "cnf/brute_force.hpp"
 #include "cnf/dimacs.hpp"
-#include "cnf/sat_solver.hpp"
 #include "cnf/generate.hpp"
 #include "cnf/lsat.hpp"
+#include "cnf/sat_solver.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
@@ -210,7 +210,8 @@ TEST(Compile, RandomLsatFormulasEndToEnd) {
     SatResult s = solve_sat(f);
     SolveResult r = solve_discrete(c.instance);
     ASSERT_NE(r.status, SolveResult::Status::Unknown);
-    ASSERT_EQ(r.status == SolveResult::Status::Yes, s.status == SatResult::Sat) << "seed " << p.seed << "\n" << to_dimacs(f);
+    ASSERT_EQ(r.status == SolveResult::Status::Yes, s.status == SatResult::Sat) << "seed " << p.seed << "\n"
+                                                                                << to_dimacs(f);
     if (s.status == SatResult::Sat) {
       ++sat;
       EXPECT_TRUE(satisfies(f, assignment_from_schedule(c, r.order))) << "seed " << p.seed;
@@ -244,15 +245,16 @@ TEST(Compile, ContinuousAlwaysCollisionFree) {
 // and on the lattice itself the simulator confirms the wrong answer.
 TEST(Compile, EveryMutationIsCaughtEndToEnd) {
   std::vector<Formula> probes = {
-      test::make_formula(1, {{1}, {-1}}),                        // UNSAT
+      test::make_formula(1, {{1}, {-1}}),                           // UNSAT
       test::make_formula(2, {{1, 2}, {1, -2}, {-1, 2}, {-1, -2}}),  // UNSAT
-      test::make_formula(2, {{1, 2}, {-1}, {-2, 1}}),            // UNSAT
-      test::make_formula(3, {{1, 2, 3}, {-1}, {-2}}),            // SAT, first clause has one true literal
-      test::make_formula(2, {{1, 2}}),                           // SAT
+      test::make_formula(2, {{1, 2}, {-1}, {-2, 1}}),               // UNSAT
+      test::make_formula(3, {{1, 2, 3}, {-1}, {-2}}),               // SAT, first clause has one true literal
+      test::make_formula(2, {{1, 2}}),                              // SAT
   };
   for (Mutation m : all_mutations()) {
-    if (m == Mutation::SeparationLoose) continue;  // no separation gadget in the discrete reduction: see
-                                                   // reductions_continuous_test
+    if (m == Mutation::SeparationLoose)
+      continue;  // no separation gadget in the discrete reduction: see
+                 // reductions_continuous_test
     SCOPED_TRACE(mutation_name(m));
     bool caught = false;
     for (const Formula& f : probes) {

@@ -22,7 +22,9 @@ namespace {
 
 constexpr ReductionModel kCont = ReductionModel::Continuous;
 
-bool collides(const CompiledFormula& c, const Schedule& s) { return Simulator(c.instance).run(s).collision.has_value(); }
+bool collides(const CompiledFormula& c, const Schedule& s) {
+  return Simulator(c.instance).run(s).collision.has_value();
+}
 
 // Some gadget's continuous contract breaks under s.
 bool breaks_contracts(const CompiledFormula& c, const Schedule& s) {

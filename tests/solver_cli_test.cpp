@@ -71,8 +71,8 @@ TEST(SolveCommand, JsonAndLimits) {
     EXPECT_EQ(o.exit_code, 10) << e << o.err;
     EXPECT_EQ(nlohmann::json::parse(o.out)["witness"], nlohmann::json::array({"a", "b"})) << e;
   }
-  auto u = run_gridlock({"solve", kExamples + "model-case2-order-gadget.grid", "--max-states", "1", "--engine",
-                         "states"});
+  auto u = run_gridlock(
+      {"solve", kExamples + "model-case2-order-gadget.grid", "--max-states", "1", "--engine", "states"});
   EXPECT_EQ(u.exit_code, 0) << u.out << u.err;
   EXPECT_TRUE(has_line(u.out, "s UNKNOWN")) << u.out;
 }
@@ -96,7 +96,8 @@ TEST(SolveCommand, Errors) {
     EXPECT_EQ(e.exit_code, 1) << args.back() << ": " << e.out;
     EXPECT_NE(e.err.find("gridlock: error: "), std::string::npos) << e.err;
   }
-  std::string vertical = test::write_file(dir + "/v.grid", "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no a expand 0 0 +y\n");
+  std::string vertical = test::write_file(dir + "/v.grid",
+                                          "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no a expand 0 0 +y\n");
   for (std::string e : {"precedence", "sat"}) {
     auto pv = run_gridlock({"solve", vertical, "--engine", e});
     EXPECT_EQ(pv.exit_code, 1) << e;
@@ -138,7 +139,8 @@ TEST(GapsCommand, OpenCycleAndErrors) {
   EXPECT_EQ(c.exit_code, 20) << c.err;
   auto j = nlohmann::json::parse(c.out);
   EXPECT_NE(j["cycle"]["mismatch"], 0);
-  std::string vertical = test::write_file(dir + "/v.grid", "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no up expand 0 0 +y\n");
+  std::string vertical = test::write_file(dir + "/v.grid",
+                                          "p grid 2 1 1 0\nn 0 0\nn 0 1\ne 0 0 0 1\no up expand 0 0 +y\n");
   auto v = run_gridlock({"gaps", vertical});
   EXPECT_EQ(v.exit_code, 1);
   EXPECT_NE(v.err.find("gridlock: error: "), std::string::npos);

@@ -238,8 +238,8 @@ TEST(ContinuousRandom, AgreesWithQuantifiedTwin) {
         continue;
       }
       ASSERT_NE(r.status, Status::Unknown) << fam.name << " seed " << seed;
-      ASSERT_EQ(r.status == Status::Yes, *ref)
-          << fam.name << " seed " << seed << " (GRIDLOCK_TEST_SEED replays)\n" << text_of(inst);
+      ASSERT_EQ(r.status == Status::Yes, *ref) << fam.name << " seed " << seed << " (GRIDLOCK_TEST_SEED replays)\n"
+                                               << text_of(inst);
       if (r.status == Status::Yes) {
         expect_witness(inst, r);
         ++yes;
@@ -351,7 +351,8 @@ TEST(ContinuousPairs, FreeOffsetsMatchTheSimulator) {
       iv.push_back(free_offsets(c));
       for (auto& x : iv.back())
         for (auto& e : {x.lo, x.hi})
-          if (e) probes.push_back(*e), probes.push_back(*e + Rational(1, 1000)), probes.push_back(*e - Rational(1, 1000));
+          if (e)
+            probes.push_back(*e), probes.push_back(*e + Rational(1, 1000)), probes.push_back(*e - Rational(1, 1000));
     }
     Simulator sim(inst);
     for (const Rational& d : probes) {

@@ -96,9 +96,8 @@ TEST(RowOrder, MatchesComparisonSort) {
     std::vector<NodeId> want(inst.num_nodes());
     std::iota(want.begin(), want.end(), 0);
     const auto& c = inst.cells();
-    std::sort(want.begin(), want.end(), [&](NodeId a, NodeId b) {
-      return c[a].y != c[b].y ? c[a].y < c[b].y : c[a].x < c[b].x;
-    });
+    std::sort(want.begin(), want.end(),
+              [&](NodeId a, NodeId b) { return c[a].y != c[b].y ? c[a].y < c[b].y : c[a].x < c[b].x; });
     ASSERT_EQ(got, want) << "seed " << base + static_cast<uint64_t>(i);
     size_t total = 0;
     for (const RowRun& r : row_runs(inst, got)) {

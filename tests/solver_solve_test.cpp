@@ -132,8 +132,8 @@ void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally&
   for (auto e : engines) {
     SolveResult r = solve_with(inst, e);
     ASSERT_EQ(r.status == Status::Yes, ref.has_value())
-        << family << " seed " << seed << " engine " << r.stats.engine << ": solver says "
-        << solve_status_name(r.status) << ", reference says " << (ref ? "YES" + names(inst, *ref) : "NO") << "\n"
+        << family << " seed " << seed << " engine " << r.stats.engine << ": solver says " << solve_status_name(r.status)
+        << ", reference says " << (ref ? "YES" + names(inst, *ref) : "NO") << "\n"
         << write_instance_string(inst);
     if (r.status == Status::Yes) {
       Simulator sim(inst);

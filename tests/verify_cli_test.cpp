@@ -54,7 +54,8 @@ TEST(VerifyCli, SatlibSamplesAgree) {
   // A spread of uf20-91 (the full folder is the README's acceptance run,
   // docs/verify.md) plus a formula read from standard input.
   std::vector<std::string> args = {"verify", "--json"};
-  for (int i = 1; i <= 100; i += 100 / test::scaled(4)) args.push_back(kSatlib + "uf20-91/uf20-0" + std::to_string(i) + ".cnf");
+  for (int i = 1; i <= 100; i += 100 / test::scaled(4))
+    args.push_back(kSatlib + "uf20-91/uf20-0" + std::to_string(i) + ".cnf");
   args.push_back("-");
   auto r = run_gridlock(args, "p cnf 2 2\n1 2 0\n-1 0\n");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -64,17 +65,19 @@ TEST(VerifyCli, SatlibSamplesAgree) {
 
 TEST(VerifyCli, BrokenGadgetIsCaughtWithAReproducer) {
   std::string dir = test::temp_dir();
-  auto r = run_gridlock({"verify", kExamples + "/tiny-unsat.cnf", "--reproducers", dir, "--break-gadget", "clause-loose"});
+  auto r = run_gridlock(
+      {"verify", kExamples + "/tiny-unsat.cnf", "--reproducers", dir, "--break-gadget", "clause-loose"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("DISAGREE: exact solver says YES, CaDiCaL says UNSAT"), std::string::npos) << r.out;
   EXPECT_EQ(r.err, "gridlock: error: verify: 1 disagreement; reproducers in " + dir + "\n");
-  for (const char* f : {"formula.cnf", "lsat.cnf", "instance.grid", "sat-schedule.txt", "solver-schedule.txt",
-                        "README.txt", "run.sh"})
+  for (const char* f :
+       {"formula.cnf", "lsat.cnf", "instance.grid", "sat-schedule.txt", "solver-schedule.txt", "README.txt", "run.sh"})
     EXPECT_TRUE(fs::exists(dir + "/tiny-unsat/" + f)) << f;
   EXPECT_NE(test::read_file(dir + "/tiny-unsat/run.sh").find("verify formula.cnf --break-gadget clause-loose"),
             std::string::npos);
   // The reproducer replays: the solver's schedule is collision-free on the broken instance.
-  auto c = run_gridlock({"check", dir + "/tiny-unsat/instance.grid", "--order-file", dir + "/tiny-unsat/solver-schedule.txt"});
+  auto c = run_gridlock(
+      {"check", dir + "/tiny-unsat/instance.grid", "--order-file", dir + "/tiny-unsat/solver-schedule.txt"});
   EXPECT_EQ(c.exit_code, 10) << c.out;
 }
 
@@ -195,8 +198,8 @@ TEST(GenInstancesCli, LabelsAreConfirmedByOtherSubcommands) {
 
 TEST(GenInstancesCli, YesNoMix) {
   std::string dir = test::temp_dir();
-  auto r = run_gridlock({"gen-instances", "-o", dir, "--vars", "5", "--threshold", "4", "--lsat", "0", "--yes", "2",
-                         "--no", "2"});
+  auto r = run_gridlock(
+      {"gen-instances", "-o", dir, "--vars", "5", "--threshold", "4", "--lsat", "0", "--yes", "2", "--no", "2"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto m = nlohmann::json::parse(test::read_file(dir + "/manifest.json"));
   EXPECT_EQ(m["yes"], 2);
@@ -242,8 +245,8 @@ TEST(VerifyContinuousCli, LooseSeparationIsCaughtWithAReproducer) {
                 .find("verify formula.cnf --model continuous --break-gadget separation-loose --direct"),
             std::string::npos);
   // The reproducer replays: the solver's start times are collision-free on the broken instance...
-  auto c = run_gridlock({"check", dir + "/tiny-unsat/instance-continuous.grid", "--times",
-                         dir + "/tiny-unsat/solver-times.txt"});
+  auto c = run_gridlock(
+      {"check", dir + "/tiny-unsat/instance-continuous.grid", "--times", dir + "/tiny-unsat/solver-times.txt"});
   EXPECT_EQ(c.exit_code, 10) << c.out;
   // ...and the real gadget says NO.
   auto good = run_gridlock({"verify", kExamples + "/tiny-unsat.cnf", "--model", "continuous", "--direct"});

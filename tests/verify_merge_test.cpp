@@ -46,8 +46,8 @@ void expect_same(const json& unsharded, const json& merged) {
 
 TEST(Merge, FuzzFourShardsEqualUnsharded) {
   std::string dir = test::temp_dir();
-  std::vector<std::string> common = {"fuzz", "--seed", "11", "--count", "60", "--max-vars", "5", "--keep-going",
-                                     "--out", dir + "/fail"};
+  std::vector<std::string> common = {"fuzz",       "--seed", "11",           "--count", "60",
+                                     "--max-vars", "5",      "--keep-going", "--out",   dir + "/fail"};
   auto whole = common;
   whole.push_back("--json");
   auto u = run_gridlock(whole);
@@ -71,8 +71,9 @@ TEST(Merge, FuzzFourShardsEqualUnsharded) {
 // are the unsharded ones in index order, and merge exits 1 as fuzz does.
 TEST(Merge, FuzzFindingsMergeInOrder) {
   std::string dir = test::temp_dir();
-  std::vector<std::string> common = {"fuzz", "--seed", "3", "--count", "12", "--max-vars", "4", "--keep-going",
-                                     "--break-gadget", "clause-loose", "--out", dir + "/fail"};
+  std::vector<std::string> common = {
+      "fuzz",           "--seed",       "3",     "--count",    "12", "--max-vars", "4", "--keep-going",
+      "--break-gadget", "clause-loose", "--out", dir + "/fail"};
   auto whole = common;
   whole.insert(whole.end(), {"--json-out", dir + "/whole.json"});
   auto u = run_gridlock(whole);
@@ -101,9 +102,14 @@ TEST(Merge, FuzzFindingsMergeInOrder) {
 
 TEST(Merge, VerifyFourShardsEqualUnsharded) {
   std::string dir = test::temp_dir();
-  std::vector<std::string> common = {"verify", kFormulas + "tiny-sat.cnf", kFormulas + "tiny-unsat.cnf",
-                                     kFormulas + "lsat-sat.cnf", kFormulas + "unsat-3cnf.cnf",
-                                     kFormulas + "uf20-01.cnf", "--reproducers", dir + "/rep"};
+  std::vector<std::string> common = {"verify",
+                                     kFormulas + "tiny-sat.cnf",
+                                     kFormulas + "tiny-unsat.cnf",
+                                     kFormulas + "lsat-sat.cnf",
+                                     kFormulas + "unsat-3cnf.cnf",
+                                     kFormulas + "uf20-01.cnf",
+                                     "--reproducers",
+                                     dir + "/rep"};
   auto whole = common;
   whole.push_back("--json");
   auto u = run_gridlock(whole);
@@ -125,8 +131,9 @@ TEST(Merge, VerifyFourShardsEqualUnsharded) {
 
 TEST(Merge, GenInstancesThreeShardsEqualUnsharded) {
   std::string dir = test::temp_dir();
-  std::vector<std::string> common = {"gen-instances", "--vars", "6", "--threshold", "3", "--lsat", "2", "--seed", "3",
-                                     "--formula", kFormulas + "tiny-sat.cnf"};
+  std::vector<std::string> common = {
+      "gen-instances",           "--vars", "6", "--threshold", "3", "--lsat", "2", "--seed", "3", "--formula",
+      kFormulas + "tiny-sat.cnf"};
   auto whole = common;
   whole.insert(whole.end(), {"-o", dir + "/whole"});
   ASSERT_EQ(run_gridlock(whole).exit_code, 0);

@@ -19,24 +19,24 @@ namespace {
 int run_animate(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("order", po::value<std::string>(), "discrete schedule: all coupling names in order, e.g. \"Q3 Q1 Q2\"")
-    ("order-file", po::value<std::string>(), "discrete schedule from a file ('v' lines of 'gridlock solve' work)")
-    ("times", po::value<std::string>(), "continuous schedule: a file of lines 'COUPLING TIME' (TIME like 3 or 5/2)")
-    ("solve", "play the exact solver's collision-free order (if it finds none: the couplings in file order)")
-    ("timeout", po::value<std::string>()->default_value("60"), "seconds the solver may spend with --solve")
-    ("out,o", po::value<std::string>()->required(), "the HTML file to write")
-    ("title", po::value<std::string>(), "title shown on the page (default: the instance and the schedule)");
+  opts.add_options()("help,h", "show this help")("order", po::value<std::string>(),
+                                                 "discrete schedule: all coupling names in order, e.g. \"Q3 Q1 Q2\"")(
+      "order-file", po::value<std::string>(), "discrete schedule from a file ('v' lines of 'gridlock solve' work)")(
+      "times", po::value<std::string>(), "continuous schedule: a file of lines 'COUPLING TIME' (TIME like 3 or 5/2)")(
+      "solve", "play the exact solver's collision-free order (if it finds none: the couplings in file order)")(
+      "timeout", po::value<std::string>()->default_value("60"), "seconds the solver may spend with --solve")(
+      "out,o", po::value<std::string>()->required(), "the HTML file to write")(
+      "title", po::value<std::string>(), "title shown on the page (default: the instance and the schedule)");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "instance", vm,
-                                 "animate INSTANCE.grid (--order \"Q...\" | --order-file F | --times F | --solve) -o VIEW.html",
-                                 "Writes one self-contained HTML file (no network) that plays the schedule: play/pause,\n"
-                                 "a time slider, previous/next event, speed; the running couplings highlighted and\n"
-                                 "listed; the first collision marked, the overlap shaded, the player stopping there;\n"
-                                 "hovering a node names it. Positions are exact: the page gets the event times and each\n"
-                                 "rigid part's displacement at its events from the simulator and interpolates linearly\n"
-                                 "in between. The fragment #t=P/Q opens the page at time P/Q."))
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm,
+          "animate INSTANCE.grid (--order \"Q...\" | --order-file F | --times F | --solve) -o VIEW.html",
+          "Writes one self-contained HTML file (no network) that plays the schedule: play/pause,\n"
+          "a time slider, previous/next event, speed; the running couplings highlighted and\n"
+          "listed; the first collision marked, the overlap shaded, the player stopping there;\n"
+          "hovering a node names it. Positions are exact: the page gets the event times and each\n"
+          "rigid part's displacement at its events from the simulator and interpolates linearly\n"
+          "in between. The fragment #t=P/Q opens the page at time P/Q."))
     return 0;
   int given = static_cast<int>(vm.count("order") + vm.count("order-file") + vm.count("times") + vm.count("solve"));
   if (given != 1) throw UserError("give exactly one of --order, --order-file, --times, --solve");

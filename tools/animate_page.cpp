@@ -509,8 +509,8 @@ std::string animation_html(const Instance& inst, const Schedule& s, const Animat
   d["resizing"] = std::move(resizing);
   json ops = json::array();
   for (const Operation& op : inst.ops())
-    ops.push_back(json::array({op.name, static_cast<int>(op.kind), op.u, op.v == kNone ? -1 : static_cast<int64_t>(op.v),
-                               op.coupling}));
+    ops.push_back(json::array(
+        {op.name, static_cast<int>(op.kind), op.u, op.v == kNone ? -1 : static_cast<int64_t>(op.v), op.coupling}));
   d["ops"] = std::move(ops);
   json names = json::array(), coupling_ops = json::array(), first_op = json::array();
   for (const Coupling& q : inst.couplings()) {
@@ -568,8 +568,9 @@ std::vector<std::string> write_result_animations(const VerifyResult& r, const st
     write_animation(path, inst, schedule_from_order(order), r.name + ": " + what);
     files.push_back(path);
   };
-  for (auto [names, file, what] : {std::tuple{&r.sat_schedule, "sat-schedule.html", "CaDiCaL's model lifted"},
-                                   std::tuple{&r.solver_schedule, "solver-schedule.html", "the exact solver's order"}}) {
+  for (auto [names, file, what] :
+       {std::tuple{&r.sat_schedule, "sat-schedule.html", "CaDiCaL's model lifted"},
+        std::tuple{&r.solver_schedule, "solver-schedule.html", "the exact solver's order"}}) {
     std::vector<CouplingId> order;
     if (names->empty() || parse_order(inst, *names, r.name, 0, order)) continue;
     one(order, file, what);

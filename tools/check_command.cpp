@@ -14,19 +14,21 @@ namespace {
 int run_check(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("order", po::value<std::string>(), "discrete schedule: all coupling names in order, e.g. \"Q3 Q1 Q2\"")
-    ("order-file", po::value<std::string>(), "discrete schedule from a file (whitespace-separated names; "
-                                             "'v' lines of 'gridlock solve' output work)")
-    ("times", po::value<std::string>(), "continuous schedule: a file of lines 'COUPLING TIME' (TIME like 3 or 5/2)")
-    ("svg", po::value<std::string>(), "draw the configuration at the collision (or at the end) to this SVG file")
-    ("json", "print one JSON object instead of c/s/v lines");
+  opts.add_options()("help,h", "show this help")("order", po::value<std::string>(),
+                                                 "discrete schedule: all coupling names in order, e.g. \"Q3 Q1 Q2\"")(
+      "order-file", po::value<std::string>(),
+      "discrete schedule from a file (whitespace-separated names; "
+      "'v' lines of 'gridlock solve' output work)")(
+      "times", po::value<std::string>(), "continuous schedule: a file of lines 'COUPLING TIME' (TIME like 3 or 5/2)")(
+      "svg", po::value<std::string>(), "draw the configuration at the collision (or at the end) to this SVG file")(
+      "json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "instance", vm, "check INSTANCE.grid (--order \"Q...\" | --order-file F | --times F) [--svg OUT.svg]",
-                       "Runs one schedule and answers: is it collision-free? s YES (exit 10) or s NO (exit 20)\n"
-                       "with the first collision: its exact moment, kind, the two nodes (or the cycle) and\n"
-                       "the couplings moving then."))
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm,
+          "check INSTANCE.grid (--order \"Q...\" | --order-file F | --times F) [--svg OUT.svg]",
+          "Runs one schedule and answers: is it collision-free? s YES (exit 10) or s NO (exit 20)\n"
+          "with the first collision: its exact moment, kind, the two nodes (or the cycle) and\n"
+          "the couplings moving then."))
     return 0;
   int given = static_cast<int>(vm.count("order") + vm.count("order-file") + vm.count("times"));
   if (given != 1) throw UserError("give exactly one of --order, --order-file, --times");
@@ -42,8 +44,8 @@ int run_check(const std::vector<std::string>& args) {
   Simulator sim(inst);
   SimResult res = sim.run(sched);
   ans.comment("simulated " + std::to_string(res.stats.intervals) + " intervals, " +
-              std::to_string(res.stats.moved_regions) + " region moves, " +
-              std::to_string(res.stats.candidate_pairs) + " candidate pairs");
+              std::to_string(res.stats.moved_regions) + " region moves, " + std::to_string(res.stats.candidate_pairs) +
+              " candidate pairs");
   ans.data()["model"] = model;
   Rational draw_time;
   for (const auto& t : sched.start) draw_time = std::max(draw_time, t + Rational(1));

@@ -80,8 +80,8 @@ std::string command_of(const std::string& usage) {
 }  // namespace
 
 bool parse_args(const std::vector<std::string>& args, const po::options_description& visible,
-                const po::positional_options_description& positional, po::variables_map& vm,
-                const std::string& usage, const std::string& description, const po::options_description* hidden) {
+                const po::positional_options_description& positional, po::variables_map& vm, const std::string& usage,
+                const std::string& description, const po::options_description* hidden) {
   po::options_description all;
   all.add(visible);
   if (hidden) all.add(*hidden);
@@ -195,9 +195,7 @@ std::string stdout_error() {
 }
 
 namespace {
-extern "C" void on_stop_signal(int sig) {
-  stop_signal().store(sig, std::memory_order_relaxed);
-}
+extern "C" void on_stop_signal(int sig) { stop_signal().store(sig, std::memory_order_relaxed); }
 }  // namespace
 
 void install_stop_handlers() {

@@ -38,9 +38,8 @@ Instance load_instance(const std::string& path);
 // line, description, options) and returns false when --help is given. Throws
 // UserError on bad usage. `usage` is the synopsis line after "usage: gridlock ".
 bool parse_args(const std::vector<std::string>& args, const po::options_description& visible,
-                const po::positional_options_description& positional, po::variables_map& vm,
-                const std::string& usage, const std::string& description,
-                const po::options_description* hidden = nullptr);
+                const po::positional_options_description& positional, po::variables_map& vm, const std::string& usage,
+                const std::string& description, const po::options_description* hidden = nullptr);
 
 // parse_args for the common shape "SUBCOMMAND [OPTIONS] INPUT": one required
 // positional argument, stored in vm[input_name]; extra_hidden adds options

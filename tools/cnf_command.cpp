@@ -86,19 +86,19 @@ void add_reader_options(po::options_description& opts) {
 // ---------------------------------------------------------------- check
 int run_check(const std::vector<std::string>& args) {
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("relaxed", "decide LSAT<=3 (clauses of 1 to 3 literals) instead of exactly-3 LSAT")
-    ("max-violations", po::value<std::string>()->default_value("3"), "how many broken rules to list")
-    ("json", "print one JSON object instead of c/s lines");
+  opts.add_options()("help,h", "show this help")(
+      "relaxed", "decide LSAT<=3 (clauses of 1 to 3 literals) instead of exactly-3 LSAT")(
+      "max-violations", po::value<std::string>()->default_value("3"), "how many broken rules to list")(
+      "json", "print one JSON object instead of c/s lines");
   add_reader_options(opts);
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "file", vm, "cnf check FILE.cnf [--relaxed] [--max-violations N]",
-                       "Answers whether FILE is an LSAT formula: every clause has exactly 3 distinct literals\n"
-                       "(1 to 3 with --relaxed), shares literals with at most one other clause, and shares\n"
-                       "exactly one literal with it. Literals, not variables: x and -x do not intersect.\n"
-                       "s YES (exit 10) or s NO (exit 20); c lines give both verdicts and name the first\n"
-                       "clauses that break a rule, and which rule. Tautologies are allowed and listed."))
+  if (!cli::parse_args_one_input(
+          args, opts, "file", vm, "cnf check FILE.cnf [--relaxed] [--max-violations N]",
+          "Answers whether FILE is an LSAT formula: every clause has exactly 3 distinct literals\n"
+          "(1 to 3 with --relaxed), shares literals with at most one other clause, and shares\n"
+          "exactly one literal with it. Literals, not variables: x and -x do not intersect.\n"
+          "s YES (exit 10) or s NO (exit 20); c lines give both verdicts and name the first\n"
+          "clauses that break a rule, and which rule. Tautologies are allowed and listed."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
   const Formula f = load(path, vm.count("no-strict-count") == 0);
@@ -119,8 +119,9 @@ int run_check(const std::vector<std::string>& args) {
     ans.comment("note: clause " + std::to_string(asked.tautologies[i] + 1) +
                 " is a tautology (holds a literal and its negation); LSAT allows it");
   if (exact.ok)
-    ans.comment("every exactly-3 LSAT formula is satisfiable (Hall's theorem, docs/formulas.md); "
-                "the NP-complete form is LSAT<=3");
+    ans.comment(
+        "every exactly-3 LSAT formula is satisfiable (Hall's theorem, docs/formulas.md); "
+        "the NP-complete form is LSAT<=3");
   auto to_json = [](const LsatReport& r) {
     nlohmann::json v = nlohmann::json::array();
     for (const auto& x : r.violations) {
@@ -147,26 +148,24 @@ int run_check(const std::vector<std::string>& args) {
 // ---------------------------------------------------------------- gen
 int run_gen(const std::vector<std::string>& args) {
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("n", po::value<std::string>(), "number of variables (required)")
-    ("m", po::value<std::string>(), "number of clauses")
-    ("ratio", po::value<double>(), "clauses per variable: m = round(ratio * n) (instead of --m)")
-    ("k", po::value<std::string>()->default_value("3"), "literals per clause (ksat, planted)")
-    ("min-len", po::value<std::string>(), "shortest clause (lsat: 3, lsat-le3: 1)")
-    ("max-len", po::value<std::string>(), "longest clause (lsat: 3, lsat-le3: 3)")
-    ("seed", po::value<std::string>()->default_value("1"), "random seed, 0 to 2^64-1")
-    ("output,o", po::value<std::string>()->default_value("-"), "output file ('-' = standard output)")
-    ("json", "print one JSON object (with the DIMACS text when writing to standard output)");
+  opts.add_options()("help,h", "show this help")("n", po::value<std::string>(), "number of variables (required)")(
+      "m", po::value<std::string>(), "number of clauses")(
+      "ratio", po::value<double>(), "clauses per variable: m = round(ratio * n) (instead of --m)")(
+      "k", po::value<std::string>()->default_value("3"), "literals per clause (ksat, planted)")(
+      "min-len", po::value<std::string>(), "shortest clause (lsat: 3, lsat-le3: 1)")(
+      "max-len", po::value<std::string>(), "longest clause (lsat: 3, lsat-le3: 3)")(
+      "seed", po::value<std::string>()->default_value("1"), "random seed, 0 to 2^64-1")(
+      "output,o", po::value<std::string>()->default_value("-"), "output file ('-' = standard output)")(
+      "json", "print one JSON object (with the DIMACS text when writing to standard output)");
   po::variables_map vm;
   if (!cli::parse_args_one_input(args, opts, "kind", vm, "cnf gen KIND --n N (--m M | --ratio R) [--seed S] [-o FILE]",
-                       "Writes a seeded random formula in DIMACS. The same command gives the same bytes on\n"
-                       "every machine. The header comments record the command line, the generator, its\n"
-                       "parameters and the seed. KIND:\n"
-                       "  ksat      uniform random k-SAT: k distinct variables per clause, uniform signs\n"
-                       "  lsat      random exactly-3 LSAT (m <= about 4n/5; always satisfiable)\n"
-                       "  lsat-le3  random LSAT<=3, clause lengths uniform in [min-len, max-len]\n"
-                       "  planted   k-SAT clauses satisfied by a hidden assignment (recorded in a comment)"))
+                                 "Writes a seeded random formula in DIMACS. The same command gives the same bytes on\n"
+                                 "every machine. The header comments record the command line, the generator, its\n"
+                                 "parameters and the seed. KIND:\n"
+                                 "  ksat      uniform random k-SAT: k distinct variables per clause, uniform signs\n"
+                                 "  lsat      random exactly-3 LSAT (m <= about 4n/5; always satisfiable)\n"
+                                 "  lsat-le3  random LSAT<=3, clause lengths uniform in [min-len, max-len]\n"
+                                 "  planted   k-SAT clauses satisfied by a hidden assignment (recorded in a comment)"))
     return 0;
   const std::string kind = vm["kind"].as<std::string>();
   if (!vm.count("n")) throw UserError("cnf gen: --n is required");
@@ -216,21 +215,21 @@ int run_gen(const std::vector<std::string>& args) {
 // ---------------------------------------------------------------- to-lsat
 int run_to_lsat(const std::vector<std::string>& args) {
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("output,o", po::value<std::string>()->default_value("-"), "output file ('-' = standard output)")
-    ("no-passthrough", "build the construction even when the input already is LSAT<=3")
-    ("json", "print one JSON object (sizes; the DIMACS text when writing to standard output)");
+  opts.add_options()("help,h", "show this help")("output,o", po::value<std::string>()->default_value("-"),
+                                                 "output file ('-' = standard output)")(
+      "no-passthrough", "build the construction even when the input already is LSAT<=3")(
+      "json", "print one JSON object (sizes; the DIMACS text when writing to standard output)");
   add_reader_options(opts);
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "file", vm, "cnf to-lsat FILE.cnf [-o OUT.cnf] [--no-passthrough]",
-                       "Writes an LSAT<=3 formula (clauses of 1 to 3 literals; each clause shares literals\n"
-                       "with at most one other, exactly one) that is satisfiable iff FILE is. Any CNF is\n"
-                       "accepted: long clauses are split, tautologies and repeated literals dropped. Output\n"
-                       "variables 1..n are FILE's variables: truncating a model of the output gives a model\n"
-                       "of FILE. Size: at most 5m + n variables and 6m + n clauses for a 3-CNF with m clauses\n"
-                       "(exact formulas in docs/formulas.md). An input that already is LSAT<=3 is written\n"
-                       "unchanged unless --no-passthrough is given."))
+  if (!cli::parse_args_one_input(
+          args, opts, "file", vm, "cnf to-lsat FILE.cnf [-o OUT.cnf] [--no-passthrough]",
+          "Writes an LSAT<=3 formula (clauses of 1 to 3 literals; each clause shares literals\n"
+          "with at most one other, exactly one) that is satisfiable iff FILE is. Any CNF is\n"
+          "accepted: long clauses are split, tautologies and repeated literals dropped. Output\n"
+          "variables 1..n are FILE's variables: truncating a model of the output gives a model\n"
+          "of FILE. Size: at most 5m + n variables and 6m + n clauses for a 3-CNF with m clauses\n"
+          "(exact formulas in docs/formulas.md). An input that already is LSAT<=3 is written\n"
+          "unchanged unless --no-passthrough is given."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
   cli::refuse_overwriting_input(vm["output"].as<std::string>(), {path});
@@ -290,19 +289,18 @@ int run_to_lsat(const std::vector<std::string>& args) {
 // ---------------------------------------------------------------- solve
 int run_solve(const std::vector<std::string>& args) {
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("conflicts", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many conflicts (CaDiCaL)")
-    ("time", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many seconds (CaDiCaL)")
-    ("solver", po::value<std::string>()->default_value("cadical"),
-     "cadical, or an independent oracle: dpll (small formulas), exhaustive (at most 24 variables)")
-    ("json", "print one JSON object instead of c/s/v lines");
+  opts.add_options()("help,h", "show this help")("conflicts", po::value<std::string>(),
+                                                 "give up (s UNKNOWN, exit 0) after this many conflicts (CaDiCaL)")(
+      "time", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many seconds (CaDiCaL)")(
+      "solver", po::value<std::string>()->default_value("cadical"),
+      "cadical, or an independent oracle: dpll (small formulas), exhaustive (at most 24 variables)")(
+      "json", "print one JSON object instead of c/s/v lines");
   add_reader_options(opts);
   po::variables_map vm;
   if (!cli::parse_args_one_input(args, opts, "file", vm, "cnf solve FILE.cnf [--conflicts N] [--time SECONDS]",
-                       "Decides satisfiability with CaDiCaL (linked as a library). Prints s SATISFIABLE and\n"
-                       "the model on v lines ending in 0 (exit 10), s UNSATISFIABLE (exit 20), or s UNKNOWN\n"
-                       "when a limit is hit (exit 0). The model is checked against the formula first."))
+                                 "Decides satisfiability with CaDiCaL (linked as a library). Prints s SATISFIABLE and\n"
+                                 "the model on v lines ending in 0 (exit 10), s UNSATISFIABLE (exit 20), or s UNKNOWN\n"
+                                 "when a limit is hit (exit 0). The model is checked against the formula first."))
     return 0;
   const std::string path = vm["file"].as<std::string>();
   SatLimits lim;  // options first: a bad value is reported before the file is read
@@ -323,8 +321,9 @@ int run_solve(const std::vector<std::string>& args) {
     name = "gridlock DPLL (unit propagation, no learning; gives up after 10^6 decisions)";
   } else if (solver == "exhaustive") {
     if (f.num_vars > kExhaustiveMaxVars)
-      throw UserError(Diagnostic{path, 0, "--solver exhaustive takes at most " + std::to_string(kExhaustiveMaxVars) +
-                                              " variables, the formula has " + std::to_string(f.num_vars)});
+      throw UserError(Diagnostic{path, 0,
+                                 "--solver exhaustive takes at most " + std::to_string(kExhaustiveMaxVars) +
+                                     " variables, the formula has " + std::to_string(f.num_vars)});
     r = exhaustive_sat(f);
     name = "gridlock exhaustive search";
   } else {
@@ -342,14 +341,16 @@ int run_solve(const std::vector<std::string>& args) {
     ans.witness("0");
     ans.data()["model"] = lits;
   }
-  const Verdict v = r.status == SatResult::Sat ? Verdict::Yes : r.status == SatResult::Unsat ? Verdict::No
-                                                                                             : Verdict::Unknown;
+  const Verdict v = r.status == SatResult::Sat     ? Verdict::Yes
+                    : r.status == SatResult::Unsat ? Verdict::No
+                                                   : Verdict::Unknown;
   return ans.finish(v, status_name(r.status));
 }
 
 // ---------------------------------------------------------------- dispatch
 int run_cnf(const std::vector<std::string>& args) {
-  if (args.empty()) throw UserError("cnf: missing subcommand: check, gen, to-lsat or solve (see 'gridlock cnf --help')");
+  if (args.empty())
+    throw UserError("cnf: missing subcommand: check, gen, to-lsat or solve (see 'gridlock cnf --help')");
   const std::string& sub = args[0];
   if (sub == "--help" || sub == "-h" || sub == "help") {
     std::cout << kCnfUsage;

@@ -11,21 +11,21 @@ namespace {
 int run_collide(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("model", po::value<std::string>()->default_value("continuous"), "time model: continuous or discrete")
-    ("method", po::value<std::string>()->default_value("auto"),
-     "auto, tree (no couplings: centroid decomposition), tree-pairwise (no couplings: all pairs), "
-     "pairwise (any instance: exact per-pair tests)")
-    ("svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")
-    ("json", "print one JSON object instead of c/s/v lines");
+  opts.add_options()("help,h", "show this help")("model", po::value<std::string>()->default_value("continuous"),
+                                                 "time model: continuous or discrete")(
+      "method", po::value<std::string>()->default_value("auto"),
+      "auto, tree (no couplings: centroid decomposition), tree-pairwise (no couplings: all pairs), "
+      "pairwise (any instance: exact per-pair tests)")(
+      "svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")(
+      "json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "instance", vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
-                       "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
-                       "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
-                       "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
-                       "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
-                       "s NO (exit 20): no schedule collides."))
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
+          "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
+          "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
+          "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
+          "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
+          "s NO (exit 20): no schedule collides."))
     return 0;
   const std::string model_name = vm["model"].as<std::string>();
   TimeModel model;
@@ -54,10 +54,12 @@ int run_collide(const std::vector<std::string>& args) {
     throw UserError(e.what());
   }
   ans.comment("algorithm: " + res.algorithm + " (" + res.complexity + ")");
-  if (res.stats.pairs) ans.comment("pairs: " + std::to_string(res.stats.pairs) + " considered, " +
-                                   std::to_string(res.stats.full_tests) + " tested in full");
-  if (res.stats.levels) ans.comment("centroid levels: " + std::to_string(res.stats.levels) + ", rectangles swept: " +
-                                    std::to_string(res.stats.rectangles));
+  if (res.stats.pairs)
+    ans.comment("pairs: " + std::to_string(res.stats.pairs) + " considered, " + std::to_string(res.stats.full_tests) +
+                " tested in full");
+  if (res.stats.levels)
+    ans.comment("centroid levels: " + std::to_string(res.stats.levels) +
+                ", rectangles swept: " + std::to_string(res.stats.rectangles));
   ans.data()["model"] = model_name;
   ans.data()["algorithm"] = res.algorithm;
   if (!res.collides) return ans.finish(Verdict::No);

@@ -17,26 +17,27 @@ namespace {
 int run_compile(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("output,o", po::value<std::string>()->default_value("-"), "write the instance (.grid) here ('-': standard output)")
-    ("svg", po::value<std::string>(), "also draw the instance to this SVG file")
-    ("model", po::value<std::string>()->default_value("discrete"),
-     "discrete (the NP-completeness reduction) or continuous (the link y_n < z_1 becomes a separation gadget)")
-    ("json", "print the sizes as one JSON object (needs -o FILE)");
+  opts.add_options()("help,h", "show this help")("output,o", po::value<std::string>()->default_value("-"),
+                                                 "write the instance (.grid) here ('-': standard output)")(
+      "svg", po::value<std::string>(), "also draw the instance to this SVG file")(
+      "model", po::value<std::string>()->default_value("discrete"),
+      "discrete (the NP-completeness reduction) or continuous (the link y_n < z_1 becomes a separation gadget)")(
+      "json", "print the sizes as one JSON object (needs -o FILE)");
   po::options_description hidden;
-  hidden.add_options()
-    ("break-gadget", po::value<std::string>()->default_value("none"), "test only: compile with a broken gadget");
+  hidden.add_options()("break-gadget", po::value<std::string>()->default_value("none"),
+                       "test only: compile with a broken gadget");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "formula", vm, "compile FORMULA.cnf [--model discrete|continuous] [-o INSTANCE.grid] [--svg INSTANCE.svg]",
-                       "Compiles a CNF formula (clauses of 1 or more literals; LSAT<=3 for couplings of at most 3\n"
-                       "operations, see 'gridlock cnf to-lsat') into a lattice instance of Discrete Collision-free\n"
-                       "Schedule: collision-free schedule exists iff the formula is satisfiable (docs/gadgets.md).\n"
-                       "With --model continuous, of continuous Collision-free Schedule (start times), the same\n"
-                       "way: one separation gadget (a vertical expansion) makes z_1 wait until y_n has finished.\n"
-                       "Operations are named after their gadget: x3.T, x3.F, x3.y, x3.z (variable x3), C5.~x3,\n"
-                       "C5.u (clause 5), O7.y2 (order gadget 7); couplings x3:T, x3:F, y3, z3, u5.",
-                       &hidden))
+  if (!cli::parse_args_one_input(
+          args, opts, "formula", vm,
+          "compile FORMULA.cnf [--model discrete|continuous] [-o INSTANCE.grid] [--svg INSTANCE.svg]",
+          "Compiles a CNF formula (clauses of 1 or more literals; LSAT<=3 for couplings of at most 3\n"
+          "operations, see 'gridlock cnf to-lsat') into a lattice instance of Discrete Collision-free\n"
+          "Schedule: collision-free schedule exists iff the formula is satisfiable (docs/gadgets.md).\n"
+          "With --model continuous, of continuous Collision-free Schedule (start times), the same\n"
+          "way: one separation gadget (a vertical expansion) makes z_1 wait until y_n has finished.\n"
+          "Operations are named after their gadget: x3.T, x3.F, x3.y, x3.z (variable x3), C5.~x3,\n"
+          "C5.u (clause 5), O7.y2 (order gadget 7); couplings x3:T, x3:F, y3, z3, u5.",
+          &hidden))
     return 0;
   const std::string path = vm["formula"].as<std::string>();
   const std::string out_path = vm["output"].as<std::string>();
@@ -60,14 +61,16 @@ int run_compile(const std::vector<std::string>& args) {
   }
   std::vector<std::string> lines = describe_compiled(c);
   lines.insert(lines.begin(), "gridlock compile " + path + ": " + summary(f));
-  if (*mutation != Mutation::None) lines.push_back("BROKEN GADGET (test only): " + std::string(mutation_name(*mutation)));
+  if (*mutation != Mutation::None)
+    lines.push_back("BROKEN GADGET (test only): " + std::string(mutation_name(*mutation)));
   std::ostringstream grid;
   write_instance(grid, c.instance, lines);
   // The instance and its picture are written together: both or neither.
   std::vector<std::pair<std::string, std::string>> files;
   if (!svg_path.empty()) {
     RenderOptions ro;
-    ro.title = path + ": " + std::to_string(c.stats.nodes) + " nodes, " + std::to_string(c.stats.couplings) + " couplings";
+    ro.title = path + ": " + std::to_string(c.stats.nodes) + " nodes, " + std::to_string(c.stats.couplings) +
+               " couplings";
     files.emplace_back(svg_path, render_svg(c.instance, ro));
   }
   files.emplace_back(out_path, grid.str());
@@ -90,7 +93,8 @@ int run_compile(const std::vector<std::string>& args) {
   return 0;
 }
 
-Command reg{"compile", "compile a CNF formula into a lattice instance (the paper's NP-hardness reduction)", run_compile};
+Command reg{"compile", "compile a CNF formula into a lattice instance (the paper's NP-hardness reduction)",
+            run_compile};
 
 }  // namespace
 }  // namespace gridlock

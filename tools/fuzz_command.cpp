@@ -41,40 +41,42 @@ int run_fuzz(const std::vector<std::string>& args) {
   cli::install_stop_handlers();  // first: a signal at any moment gives the partial summary
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("seed", po::value<std::string>()->default_value("1"), "campaign seed: formula i is drawn from (seed, i) alone")
-    ("count", po::value<std::string>(), "formulas in the campaign (default 1000 unless --time is given)")
-    ("time", po::value<std::string>(), "stop after this many seconds")
-    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: run only the formulas i with i % N == K")
-    ("index", po::value<std::string>(), "run only formula i (replays a finding)")
-    ("min-vars", po::value<std::string>()->default_value("3"), "fewest variables of a formula (1 to 64)")
-    ("max-vars", po::value<std::string>()->default_value("6"), "most variables of a formula (1 to 64)")
-    ("kinds", po::value<std::string>()->default_value("mix"), "generators, comma-separated: ksat, lsat, planted, mix")
-    ("model", po::value<std::string>()->default_value("discrete"),
-     "which reduction to check, as in 'gridlock verify': discrete, continuous or both")
-    ("direct", "compile each formula as it is, not its LSAT<=3 form (as in 'gridlock verify')")
-    ("timeout", po::value<std::string>()->default_value("10"), "seconds the exact solver may spend on one formula")
-    ("max-states", po::value<std::string>()->default_value("2000000"), "search nodes the exact solver may visit per formula")
-    ("out", po::value<std::string>()->default_value("fuzz-failures"), "folder for shrunk counterexamples")
-    ("keep-going", "do not stop at the first disagreement")
-    ("json", "print one JSON object at the end instead of c/s lines")
-    ("json-out", po::value<std::string>(), "also write that JSON object to this file ('gridlock merge' combines shards)");
+  opts.add_options()("help,h", "show this help")("seed", po::value<std::string>()->default_value("1"),
+                                                 "campaign seed: formula i is drawn from (seed, i) alone")(
+      "count", po::value<std::string>(), "formulas in the campaign (default 1000 unless --time is given)")(
+      "time", po::value<std::string>(), "stop after this many seconds")(
+      "shard", po::value<std::string>()->default_value("0/1"), "K/N: run only the formulas i with i % N == K")(
+      "index", po::value<std::string>(), "run only formula i (replays a finding)")(
+      "min-vars", po::value<std::string>()->default_value("3"), "fewest variables of a formula (1 to 64)")(
+      "max-vars", po::value<std::string>()->default_value("6"), "most variables of a formula (1 to 64)")(
+      "kinds", po::value<std::string>()->default_value("mix"), "generators, comma-separated: ksat, lsat, planted, mix")(
+      "model", po::value<std::string>()->default_value("discrete"),
+      "which reduction to check, as in 'gridlock verify': discrete, continuous or both")(
+      "direct", "compile each formula as it is, not its LSAT<=3 form (as in 'gridlock verify')")(
+      "timeout", po::value<std::string>()->default_value("10"), "seconds the exact solver may spend on one formula")(
+      "max-states", po::value<std::string>()->default_value("2000000"),
+      "search nodes the exact solver may visit per formula")(
+      "out", po::value<std::string>()->default_value("fuzz-failures"), "folder for shrunk counterexamples")(
+      "keep-going", "do not stop at the first disagreement")("json",
+                                                             "print one JSON object at the end instead of c/s lines")(
+      "json-out", po::value<std::string>(),
+      "also write that JSON object to this file ('gridlock merge' combines shards)");
   po::options_description hidden;
   hidden.add_options()("break-gadget", po::value<std::string>()->default_value("none"),
                        "self-test: compile with a broken gadget, so that the fuzzer must find it");
   po::positional_options_description pos;
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "fuzz [--seed S] [--count N | --time T] [--shard K/N]",
-                       "Random small formulas (random 3-SAT around the threshold, random LSAT<=3, planted 3-SAT),\n"
-                       "each checked as 'gridlock verify' does (--model continuous: against the exact continuous\n"
-                       "solver). Every disagreement is shrunk (delta\n"
-                       "debugging over clauses, literals, variables) and saved as a replayable folder before it\n"
-                       "is reported. On a terminal a progress line shows the rate and the counts.\n"
-                       "Exit 0 if no formula disagreed, 1 otherwise. SIGINT/SIGTERM end the campaign after the\n"
-                       "formula in progress is abandoned: the summary (JSON too) is marked interrupted, exit 130/143.\n"
-                       "A campaign over 8 processes:  parallel gridlock fuzz --seed 7 --count 1000000 --shard {}/8 ::: $(seq 0 7)",
-                       &hidden))
+  if (!cli::parse_args(
+          args, opts, pos, vm, "fuzz [--seed S] [--count N | --time T] [--shard K/N]",
+          "Random small formulas (random 3-SAT around the threshold, random LSAT<=3, planted 3-SAT),\n"
+          "each checked as 'gridlock verify' does (--model continuous: against the exact continuous\n"
+          "solver). Every disagreement is shrunk (delta\n"
+          "debugging over clauses, literals, variables) and saved as a replayable folder before it\n"
+          "is reported. On a terminal a progress line shows the rate and the counts.\n"
+          "Exit 0 if no formula disagreed, 1 otherwise. SIGINT/SIGTERM end the campaign after the\n"
+          "formula in progress is abandoned: the summary (JSON too) is marked interrupted, exit 130/143.\n"
+          "A campaign over 8 processes:  parallel gridlock fuzz --seed 7 --count 1000000 --shard {}/8 ::: $(seq 0 7)",
+          &hidden))
     return 0;
   FuzzParams p;
   p.seed = cli::seed_arg(vm, "seed");
@@ -92,7 +94,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   vo.mutation = *mutation;
   auto model = parse_verify_model(vm["model"].as<std::string>());
-  if (!model) throw UserError("--model must be discrete, continuous or both, not '" + vm["model"].as<std::string>() + "'");
+  if (!model)
+    throw UserError("--model must be discrete, continuous or both, not '" + vm["model"].as<std::string>() + "'");
   vo.model = *model;
   vo.direct = vm.count("direct") > 0;
   const bool json = vm.count("json") > 0;
@@ -131,8 +134,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   auto status_line = [&] {
     std::ostringstream s;
     s << done << " formulas (" << sat << " SAT, " << unsat << " UNSAT, " << unknown << " unknown), "
-      << static_cast<uint64_t>(static_cast<double>(done) / std::max(elapsed(), 1e-9)) << "/s, " << certificates << " certificates, "
-      << disagreements << " disagreements, " << static_cast<uint64_t>(elapsed()) << " s";
+      << static_cast<uint64_t>(static_cast<double>(done) / std::max(elapsed(), 1e-9)) << "/s, " << certificates
+      << " certificates, " << disagreements << " disagreements, " << static_cast<uint64_t>(elapsed()) << " s";
     return s.str();
   };
   for (uint64_t i = first; i < last && !stop_requested(); i += shards) {
@@ -163,9 +166,11 @@ int run_fuzz(const std::vector<std::string>& args) {
       std::string replay = "gridlock fuzz --seed " + std::to_string(p.seed) + " --index " + std::to_string(i) +
                            " --min-vars " + std::to_string(p.min_vars) + " --max-vars " + std::to_string(p.max_vars) +
                            " --kinds " + vm["kinds"].as<std::string>() +
-                           (vo.model != VerifyModel::Discrete ? std::string(" --model ") + verify_model_name(vo.model) : "") +
+                           (vo.model != VerifyModel::Discrete ? std::string(" --model ") + verify_model_name(vo.model)
+                                                              : "") +
                            (vo.direct ? " --direct" : "") +
-                           (*mutation != Mutation::None ? std::string(" --break-gadget ") + mutation_name(*mutation) : "");
+                           (*mutation != Mutation::None ? std::string(" --break-gadget ") + mutation_name(*mutation)
+                                                        : "");
       if (!json) {
         std::cout << "c shrunk in " << st.tries << " tries to " << small.num_vars << " variables, "
                   << small.clauses.size() << " clauses: " << rs.problem << "\n";
@@ -174,9 +179,14 @@ int run_fuzz(const std::vector<std::string>& args) {
           if (l.rfind("c ", 0) != 0) std::cout << "c   " << l << "\n";
         std::cout << "c saved to " << dir << " (replay: " << replay << ")" << std::endl;
       }
-      findings.push_back({{"index", i}, {"problem", rs.problem}, {"folder", dir}, {"replay", replay},
-                          {"shrunk_variables", small.num_vars}, {"shrunk_clauses", small.clauses.size()},
-                          {"shrink_tries", st.tries}, {"dimacs", to_dimacs(small)}});
+      findings.push_back({{"index", i},
+                          {"problem", rs.problem},
+                          {"folder", dir},
+                          {"replay", replay},
+                          {"shrunk_variables", small.num_vars},
+                          {"shrunk_clauses", small.clauses.size()},
+                          {"shrink_tries", st.tries},
+                          {"dimacs", to_dimacs(small)}});
       if (!vm.count("keep-going")) break;
     }
     if (i > UINT64_MAX - shards) break;
@@ -203,10 +213,15 @@ int run_fuzz(const std::vector<std::string>& args) {
   j["interrupted"] = interrupted;
   // The campaign's settings, so that 'gridlock merge' only combines shards of one campaign.
   j["campaign"] = {{"count", vm.count("count") ? nlohmann::json(last) : nlohmann::json()},
-                   {"time", time_limit}, {"index", vm.count("index") ? nlohmann::json(first) : nlohmann::json()},
-                   {"min_vars", p.min_vars}, {"max_vars", p.max_vars}, {"kinds", vm["kinds"].as<std::string>()},
-                   {"max_states", vo.max_states}, {"keep_going", vm.count("keep-going") > 0},
-                   {"break_gadget", mutation_name(*mutation)}, {"model", verify_model_name(vo.model)},
+                   {"time", time_limit},
+                   {"index", vm.count("index") ? nlohmann::json(first) : nlohmann::json()},
+                   {"min_vars", p.min_vars},
+                   {"max_vars", p.max_vars},
+                   {"kinds", vm["kinds"].as<std::string>()},
+                   {"max_states", vo.max_states},
+                   {"keep_going", vm.count("keep-going") > 0},
+                   {"break_gadget", mutation_name(*mutation)},
+                   {"model", verify_model_name(vo.model)},
                    {"direct", vo.direct}};
   if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), j.dump(2) + "\n");
   if (json) {

@@ -20,18 +20,19 @@ namespace {
 int run_gadget(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("literals,k", po::value<std::string>()->default_value("3"), "clause gadget: literals in the clause (1 to 16)")
-    ("output,o", po::value<std::string>()->default_value("-"), "write the instance (.grid) here ('-': standard output)")
-    ("svg", po::value<std::string>(), "also draw it to this SVG file")
-    ("break-gadget", po::value<std::string>()->default_value("none"),
-     "draw a deliberately broken version (variable-loose-y, clause-loose, clause-tight, order-loose, "
-     "order-drop-release, separation-loose)");
+  opts.add_options()("help,h", "show this help")("literals,k", po::value<std::string>()->default_value("3"),
+                                                 "clause gadget: literals in the clause (1 to 16)")(
+      "output,o", po::value<std::string>()->default_value("-"),
+      "write the instance (.grid) here ('-': standard output)")("svg", po::value<std::string>(),
+                                                                "also draw it to this SVG file")(
+      "break-gadget", po::value<std::string>()->default_value("none"),
+      "draw a deliberately broken version (variable-loose-y, clause-loose, clause-tight, order-loose, "
+      "order-drop-release, separation-loose)");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "kind", vm, "gadget variable|clause|order|separation [-k K] [-o OUT.grid] [--svg OUT.svg]",
-                       "Draws one gadget of the reduction alone, with its contract (the states of its operations\n"
-                       "that collide) in 'c' lines. Every operation is its own coupling."))
+  if (!cli::parse_args_one_input(
+          args, opts, "kind", vm, "gadget variable|clause|order|separation [-k K] [-o OUT.grid] [--svg OUT.svg]",
+          "Draws one gadget of the reduction alone, with its contract (the states of its operations\n"
+          "that collide) in 'c' lines. Every operation is its own coupling."))
     return 0;
   const std::string kind = vm["kind"].as<std::string>();
   auto mutation = parse_mutation(vm["break-gadget"].as<std::string>());
@@ -40,10 +41,10 @@ int run_gadget(const std::vector<std::string>& args) {
     // A mutation breaks one gadget kind; on another kind it would change
     // nothing, and the drawing labelled broken would be the sound gadget.
     const Mutation m = *mutation;
-    const char* applies = m == Mutation::VariableLooseY                           ? "variable"
+    const char* applies = m == Mutation::VariableLooseY                              ? "variable"
                           : m == Mutation::ClauseLoose || m == Mutation::ClauseTight ? "clause"
-                          : m == Mutation::None                                     ? nullptr
-                                                                                    : "order";
+                          : m == Mutation::None                                      ? nullptr
+                                                                                     : "order";
     if (applies && kind != applies && (kind == "variable" || kind == "clause" || kind == "order"))
       throw UserError("--break-gadget " + std::string(mutation_name(m)) + " breaks the " + applies +
                       " gadget, not the " + kind + " gadget");
@@ -68,8 +69,9 @@ int run_gadget(const std::vector<std::string>& args) {
     title = "order gadget a < b";
   } else if (kind == "separation") {
     p = place_separation_gadget(canvas, 0, "a", "b", *mutation);
-    words = "separation gadget a << b (continuous model): collides iff b starts before a has finished, "
-            "i.e. t(b) < t(a) + 1; a is vertical, the row above the gadget must stay free";
+    words =
+        "separation gadget a << b (continuous model): collides iff b starts before a has finished, "
+        "i.e. t(b) < t(a) + 1; a is vertical, the row above the gadget must stay free";
     title = "separation gadget a << b";
   } else {
     throw UserError("unknown gadget '" + kind + "' (variable, clause, order or separation)");
@@ -77,7 +79,8 @@ int run_gadget(const std::vector<std::string>& args) {
   Instance inst = canvas.build();
   std::vector<std::string> comments = {words, "contract: " + p.contract.str()};
   if (*mutation != Mutation::None)
-    comments.push_back("BROKEN GADGET (" + std::string(mutation_name(*mutation)) + "): the contract above is the broken one");
+    comments.push_back("BROKEN GADGET (" + std::string(mutation_name(*mutation)) +
+                       "): the contract above is the broken one");
   std::ostringstream grid;
   write_instance(grid, inst, comments);
   std::vector<std::pair<std::string, std::string>> files;

@@ -12,16 +12,14 @@ namespace {
 int run_gaps(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("json", "print one JSON object instead of c/s/v lines");
+  opts.add_options()("help,h", "show this help")("json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
   if (!cli::parse_args_one_input(args, opts, "instance", vm, "gaps INSTANCE.grid [--json]",
-                       "Continuous Collision-free Schedule for a horizontal-only instance, in linear time:\n"
-                       "a collision-free schedule exists iff starting every coupling at time 0 is one.\n"
-                       "s YES (exit 10) with that schedule as 'v NAME 0' lines ('gridlock check --times'\n"
-                       "reads them back), or s NO (exit 20) naming the gap that closes (row, end nodes,\n"
-                       "initial size, the operations that widen and narrow it) or the cycle that opens."))
+                                 "Continuous Collision-free Schedule for a horizontal-only instance, in linear time:\n"
+                                 "a collision-free schedule exists iff starting every coupling at time 0 is one.\n"
+                                 "s YES (exit 10) with that schedule as 'v NAME 0' lines ('gridlock check --times'\n"
+                                 "reads them back), or s NO (exit 20) naming the gap that closes (row, end nodes,\n"
+                                 "initial size, the operations that widen and narrow it) or the cycle that opens."))
     return 0;
   const std::string path = vm["instance"].as<std::string>();
   Instance inst = cli::load_instance(path);

@@ -38,7 +38,8 @@ namespace fs = std::filesystem;
 // anything else in it stays.
 void prepare_output_folder(const std::string& out, bool force) {
   std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
   fs::create_directories(out, ec);
   if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder: " + ec.message()});
   std::vector<fs::path> old;
@@ -53,8 +54,7 @@ void prepare_output_folder(const std::string& out, bool force) {
   }
   if (ec) throw UserError(Diagnostic{out, 0, "cannot list folder: " + ec.message()});
   if (!non_empty) return;
-  if (!force)
-    throw UserError(Diagnostic{out, 0, "folder is not empty (give --force to replace the set in it)"});
+  if (!force) throw UserError(Diagnostic{out, 0, "folder is not empty (give --force to replace the set in it)"});
   // The manifest first: a folder is never described by a stale manifest.
   std::sort(old.begin(), old.end(), [](const fs::path& a, const fs::path& b) {
     return (a.filename() == "manifest.json") > (b.filename() == "manifest.json");
@@ -68,14 +68,17 @@ void prepare_output_folder(const std::string& out, bool force) {
 // written twice), unless force, which removes that manifest first.
 void prepare_shard_folder(const std::string& out, const std::string& manifest_name, bool force) {
   std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
   fs::create_directories(out, ec);
   if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder: " + ec.message()});
   const fs::path manifest = fs::path(out) / manifest_name;
   if (!fs::exists(manifest, ec)) return;
   if (!force)
-    throw UserError(Diagnostic{manifest.string(), 0, "this shard was already written here (give --force to write it again)"});
-  if (!fs::remove(manifest, ec) || ec) throw UserError(Diagnostic{manifest.string(), 0, "cannot remove: " + ec.message()});
+    throw UserError(
+        Diagnostic{manifest.string(), 0, "this shard was already written here (give --force to write it again)"});
+  if (!fs::remove(manifest, ec) || ec)
+    throw UserError(Diagnostic{manifest.string(), 0, "cannot remove: " + ec.message()});
 }
 
 struct Source {
@@ -88,33 +91,36 @@ int run_gen_instances(const std::vector<std::string>& args) {
   cli::install_stop_handlers();  // first: a signal at any moment gives the partial summary
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("out,o", po::value<std::string>()->required(), "folder to write (created; must be empty unless --force): "
-                                                   "instances, formulas, witnesses, manifest.json")
-    ("force", "write into a non-empty folder: the files of a previous set there (manifest.json, *.grid, *.cnf, "
-              "*.schedule) are removed first")
-    ("seed", po::value<std::string>()->default_value("1"), "seed of the random formulas")
-    ("threshold", po::value<std::string>()->default_value("10"), "random 3-SAT formulas at the threshold ratio 4.26")
-    ("lsat", po::value<std::string>()->default_value("10"), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")
-    ("vars", po::value<std::string>()->default_value("12"), "variables of each random formula (3 to 1000)")
-    ("yes", po::value<std::string>(), "keep only this many YES instances of the random ones (default: all)")
-    ("no", po::value<std::string>(), "keep only this many NO instances of the random ones (default: all); "
-                                     "with --yes/--no, formulas are drawn until both are met")
-    ("timeout", po::value<std::string>()->default_value("60"),
-     "seconds CaDiCaL may spend labelling one formula; a formula not decided in time is skipped (noted)")
-    ("formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)")
-    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: make only the instances i (given ones first, then "
-                                                             "threshold, then lsat) with i % N == K; the manifest is then "
-                                                             "manifest-shard-K-of-N.json, and shards may share a folder "
-                                                             "(not with --yes/--no)")
-    ("json-out", po::value<std::string>(), "also write the manifest to this file ('gridlock merge' combines shards)")
-    ("model", po::value<std::string>()->default_value("discrete"),
-     "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both "
-     "(NAME.grid and NAME-continuous.grid)");
+  opts.add_options()("help,h", "show this help")("out,o", po::value<std::string>()->required(),
+                                                 "folder to write (created; must be empty unless --force): "
+                                                 "instances, formulas, witnesses, manifest.json")(
+      "force",
+      "write into a non-empty folder: the files of a previous set there (manifest.json, *.grid, *.cnf, "
+      "*.schedule) are removed first")("seed", po::value<std::string>()->default_value("1"),
+                                       "seed of the random formulas")(
+      "threshold", po::value<std::string>()->default_value("10"), "random 3-SAT formulas at the threshold ratio 4.26")(
+      "lsat", po::value<std::string>()->default_value("10"), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")(
+      "vars", po::value<std::string>()->default_value("12"), "variables of each random formula (3 to 1000)")(
+      "yes", po::value<std::string>(), "keep only this many YES instances of the random ones (default: all)")(
+      "no", po::value<std::string>(),
+      "keep only this many NO instances of the random ones (default: all); "
+      "with --yes/--no, formulas are drawn until both are met")(
+      "timeout", po::value<std::string>()->default_value("60"),
+      "seconds CaDiCaL may spend labelling one formula; a formula not decided in time is skipped (noted)")(
+      "formula", po::value<std::vector<std::string>>()->composing(), "also compile this given formula (repeatable)")(
+      "shard", po::value<std::string>()->default_value("0/1"),
+      "K/N: make only the instances i (given ones first, then "
+      "threshold, then lsat) with i % N == K; the manifest is then "
+      "manifest-shard-K-of-N.json, and shards may share a folder "
+      "(not with --yes/--no)")("json-out", po::value<std::string>(),
+                               "also write the manifest to this file ('gridlock merge' combines shards)")(
+      "model", po::value<std::string>()->default_value("discrete"),
+      "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both "
+      "(NAME.grid and NAME-continuous.grid)");
   po::positional_options_description pos;
   po::variables_map vm;
-  if (!cli::parse_args(args, opts, pos, vm, "gen-instances -o DIR [--threshold N] [--lsat N] [--vars V] [--formula F]...",
+  if (!cli::parse_args(args, opts, pos, vm,
+                       "gen-instances -o DIR [--threshold N] [--lsat N] [--vars V] [--formula F]...",
                        "Writes a labelled set of lattice instances: each formula (random 3-SAT at the threshold,\n"
                        "random LSAT<=3, or given) goes through to-lsat and the gadget compiler. Labels are certified:\n"
                        "YES with a witness schedule (CaDiCaL's model lifted, accepted by the exact simulator, saved\n"
@@ -155,10 +161,8 @@ int run_gen_instances(const std::vector<std::string>& args) {
   const std::string manifest_name = shards == 1 ? "manifest.json"
                                                 : "manifest-shard-" + std::to_string(shard) + "-of-" +
                                                       std::to_string(shards) + ".json";
-  if (shards == 1)
-    prepare_output_folder(out, vm.count("force") > 0);
-  else
-    prepare_shard_folder(out, manifest_name, vm.count("force") > 0);
+  if (shards == 1) prepare_output_folder(out, vm.count("force") > 0);
+  else prepare_shard_folder(out, manifest_name, vm.count("force") > 0);
   const bool progress = isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
@@ -237,8 +241,9 @@ int run_gen_instances(const std::vector<std::string>& args) {
         e["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
       }
       std::ostringstream grid;
-      write_instance(grid, c.instance, {name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
-                                        std::string("answer: ") + (is_yes ? "YES" : "NO")});
+      write_instance(grid, c.instance,
+                     {name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
+                      std::string("answer: ") + (is_yes ? "YES" : "NO")});
       write(name + ".grid", grid.str());
       entries.push_back(e);
       std::cout << "c " << name << ": " << (is_yes ? "YES" : "NO") << ", " << c.stats.nodes << " nodes, "
@@ -303,8 +308,8 @@ int run_gen_instances(const std::vector<std::string>& args) {
   manifest["instances"] = entries;
   write(manifest_name, manifest.dump(2) + "\n");  // last: it lists only files already in place
   if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), manifest.dump(2) + "\n");
-  std::cout << "c wrote " << entries.size() << " instances (" << yes << " YES, " << no << " NO) and " << out
-            << "/" << manifest_name << std::endl;
+  std::cout << "c wrote " << entries.size() << " instances (" << yes << " YES, " << no << " NO) and " << out << "/"
+            << manifest_name << std::endl;
   if (interrupted) {
     std::cout << "c INTERRUPTED by signal " << stop_signal().load() << ": the manifest lists the " << entries.size()
               << " instances finished" << std::endl;

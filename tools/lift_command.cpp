@@ -19,30 +19,33 @@ namespace {
 int run_lift(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("model", po::value<std::string>(), "an assignment: a file holding a SAT-competition answer ('s SATISFIABLE' and "
-                                        "'v' lines ending in 0, as 'gridlock cnf solve' prints), or the literals "
-                                        "themselves (\"1 -2 3\"), every variable given: lift it to a schedule")
-    ("schedule", po::value<std::string>(), "a discrete order of the couplings (e.g. 'gridlock solve' output): "
-                                           "lift it to an assignment")
-    ("continuous", "the continuous reduction (compile --model continuous): --model gives start times")
-    ("times", po::value<std::string>(), "start times of the continuous instance ('NAME TIME' lines, e.g. 'gridlock "
-                                        "solve --model continuous' output): lift them to an assignment")
-    ("json", "print one JSON object instead of c/s/v lines");
+  opts.add_options()("help,h", "show this help")(
+      "model", po::value<std::string>(),
+      "an assignment: a file holding a SAT-competition answer ('s SATISFIABLE' and "
+      "'v' lines ending in 0, as 'gridlock cnf solve' prints), or the literals "
+      "themselves (\"1 -2 3\"), every variable given: lift it to a schedule")(
+      "schedule", po::value<std::string>(),
+      "a discrete order of the couplings (e.g. 'gridlock solve' output): "
+      "lift it to an assignment")("continuous",
+                                  "the continuous reduction (compile --model continuous): --model gives start times")(
+      "times", po::value<std::string>(),
+      "start times of the continuous instance ('NAME TIME' lines, e.g. 'gridlock "
+      "solve --model continuous' output): lift them to an assignment")("json",
+                                                                       "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "formula", vm, "lift FORMULA.cnf (--model M [--continuous] | --schedule S | --times T)",
-                       "The certificates of the reduction, each checked by an independent path. The formula is\n"
-                       "compiled exactly as 'gridlock compile' does.\n"
-                       "  --model M: the schedule x_i:T/F (by M), y_1..y_n, z_1..z_n, u_1..u_m, then the other\n"
-                       "    values; run through the exact simulator: s YES (10) with the order on v lines if it\n"
-                       "    is collision-free, s NO (20) with the collision otherwise (M does not satisfy F).\n"
-                       "  --schedule S: simulated first (it must be collision-free), then x_i = [x_i:T before x_i:F];\n"
-                       "    s YES (10) with the assignment on v lines if it satisfies F, s NO (20) otherwise.\n"
-                       "  --continuous: compile for continuous time; --model M then gives start times (the value of\n"
-                       "    each x_i at 0, every y_i at 1, the rest at 2), as 'NAME TIME' v lines.\n"
-                       "  --times T: start times of the continuous instance, simulated first, then\n"
-                       "    x_i = [t(x_i:T) <= t(y_n)]; checked against F as for --schedule."))
+  if (!cli::parse_args_one_input(
+          args, opts, "formula", vm, "lift FORMULA.cnf (--model M [--continuous] | --schedule S | --times T)",
+          "The certificates of the reduction, each checked by an independent path. The formula is\n"
+          "compiled exactly as 'gridlock compile' does.\n"
+          "  --model M: the schedule x_i:T/F (by M), y_1..y_n, z_1..z_n, u_1..u_m, then the other\n"
+          "    values; run through the exact simulator: s YES (10) with the order on v lines if it\n"
+          "    is collision-free, s NO (20) with the collision otherwise (M does not satisfy F).\n"
+          "  --schedule S: simulated first (it must be collision-free), then x_i = [x_i:T before x_i:F];\n"
+          "    s YES (10) with the assignment on v lines if it satisfies F, s NO (20) otherwise.\n"
+          "  --continuous: compile for continuous time; --model M then gives start times (the value of\n"
+          "    each x_i at 0, every y_i at 1, the rest at 2), as 'NAME TIME' v lines.\n"
+          "  --times T: start times of the continuous instance, simulated first, then\n"
+          "    x_i = [t(x_i:T) <= t(y_n)]; checked against F as for --schedule."))
     return 0;
   if (vm.count("model") + vm.count("schedule") + vm.count("times") != 1)
     throw UserError("give exactly one of --model, --schedule, --times");

@@ -33,7 +33,8 @@ ShardFile load(const std::string& path) {
   f.path = path;
   f.j = json::parse(ss.str(), nullptr, false);
   if (f.j.is_discarded() || !f.j.is_object()) fail(path, "not a JSON object (want the file of --json-out)");
-  if (!f.j.contains("shard") || !f.j["shard"].is_string()) fail(path, "no \"shard\" field (want the file of --json-out)");
+  if (!f.j.contains("shard") || !f.j["shard"].is_string())
+    fail(path, "no \"shard\" field (want the file of --json-out)");
   // An interrupted shard holds only part of its formulas: merging it would
   // pass for a complete run.
   if (f.j.value("interrupted", false)) fail(path, "this shard was interrupted: run it again before merging");
@@ -57,9 +58,11 @@ void check_complete(const std::vector<ShardFile>& files, const std::vector<std::
   const uint64_t n = files[0].n;
   std::set<uint64_t> seen;
   for (const auto& f : files) {
-    if (f.n != files[0].n) fail(f.path, "shard " + f.j["shard"].get<std::string>() + " is of another split than " +
-                                            files[0].path + " (" + files[0].j["shard"].get<std::string>() + ")");
-    if (!seen.insert(f.k).second) fail(f.path, "shard " + std::to_string(f.k) + "/" + std::to_string(n) + " given twice");
+    if (f.n != files[0].n)
+      fail(f.path, "shard " + f.j["shard"].get<std::string>() + " is of another split than " + files[0].path + " (" +
+                       files[0].j["shard"].get<std::string>() + ")");
+    if (!seen.insert(f.k).second)
+      fail(f.path, "shard " + std::to_string(f.k) + "/" + std::to_string(n) + " given twice");
     for (const auto& key : same)
       if (f.j.value(key, json()) != files[0].j.value(key, json()))
         fail(f.path, "\"" + key + "\" differs from " + files[0].path + ": shards of different runs");
@@ -128,8 +131,9 @@ json merge_instances(const std::vector<ShardFile>& files) {
     for (const auto& e : f.j["instances"]) entries.push_back(e);
   // With --model both, an index has two entries (discrete, then continuous):
   // the stable sort keeps each shard's order of them.
-  std::stable_sort(entries.begin(), entries.end(),
-                   [](const json& a, const json& b) { return a["index"].get<uint64_t>() < b["index"].get<uint64_t>(); });
+  std::stable_sort(entries.begin(), entries.end(), [](const json& a, const json& b) {
+    return a["index"].get<uint64_t>() < b["index"].get<uint64_t>();
+  });
   out["yes"] = sum(files, "yes");
   out["no"] = sum(files, "no");
   out["skipped"] = sum(files, "skipped");
@@ -140,9 +144,8 @@ json merge_instances(const std::vector<ShardFile>& files) {
 int run_merge(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("out,o", po::value<std::string>()->default_value("-"), "write the combined JSON here (default: standard output)");
+  opts.add_options()("help,h", "show this help")("out,o", po::value<std::string>()->default_value("-"),
+                                                 "write the combined JSON here (default: standard output)");
   po::options_description hidden;
   hidden.add_options()("inputs", po::value<std::vector<std::string>>()->required(), "shard results");
   po::positional_options_description pos;
@@ -168,7 +171,8 @@ int run_merge(const std::vector<std::string>& args) {
     out = merge_fuzz(files);
     code = out["disagreements"].get<uint64_t>() ? 1 : 0;
     summary = std::to_string(out["formulas"].get<uint64_t>()) + " formulas, " +
-              std::to_string(out["disagreements"].get<uint64_t>()) + " disagreements: " + out["status"].get<std::string>();
+              std::to_string(out["disagreements"].get<uint64_t>()) +
+              " disagreements: " + out["status"].get<std::string>();
   } else if (kind == "verify") {
     out = merge_verify(files);
     code = out["exit_code"].get<int>();

@@ -11,15 +11,15 @@ namespace {
 int run_render(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("output,o", po::value<std::string>()->default_value("-"), "output file ('-' = standard output)")
-    ("ascii", "draw with characters for a terminal instead of SVG")
-    ("tikz", "write a TikZ picture for LaTeX instead of SVG")
-    ("title", po::value<std::string>()->default_value(""), "title drawn above the SVG");
+  opts.add_options()("help,h", "show this help")("output,o", po::value<std::string>()->default_value("-"),
+                                                 "output file ('-' = standard output)")(
+      "ascii", "draw with characters for a terminal instead of SVG")(
+      "tikz", "write a TikZ picture for LaTeX instead of SVG")("title", po::value<std::string>()->default_value(""),
+                                                               "title drawn above the SVG");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "instance", vm, "render INSTANCE.grid [-o OUT.svg] [--ascii | --tikz]",
-                       "Draws an instance: nodes, edges, operations as arrows coloured by coupling, the anchor."))
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm, "render INSTANCE.grid [-o OUT.svg] [--ascii | --tikz]",
+          "Draws an instance: nodes, edges, operations as arrows coloured by coupling, the anchor."))
     return 0;
   if (vm.count("ascii") && vm.count("tikz")) throw UserError("give at most one of --ascii and --tikz");
   cli::refuse_overwriting_input(vm["output"].as<std::string>(), {vm["instance"].as<std::string>()});

@@ -23,8 +23,8 @@ std::string fixed(double v, int digits) {
 }
 
 nlohmann::json stats_json(const SolveStats& st) {
-  return {{"states", st.states},          {"refuted", st.refuted},       {"propagations", st.propagations},
-          {"decisions", st.decisions},    {"safe_moves", st.safe_moves}, {"memo_hits", st.memo_hits},
+  return {{"states", st.states},           {"refuted", st.refuted},       {"propagations", st.propagations},
+          {"decisions", st.decisions},     {"safe_moves", st.safe_moves}, {"memo_hits", st.memo_hits},
           {"constraints", st.constraints}, {"seconds", st.seconds}};
 }
 
@@ -65,25 +65,26 @@ int run_solve(const std::vector<std::string>& args) {
   const Deadline since_start;  // --timeout counts from here: reading the instance is part of it
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("timeout", po::value<std::string>(), "give up after S seconds (s UNKNOWN, exit 0)")
-    ("max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")
-    ("model", po::value<std::string>()->default_value("discrete"),
-     "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")
-    ("engine", po::value<std::string>()->default_value("auto"),
-     "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")
-    ("json", "print one JSON object instead of c/s/v lines");
+  opts.add_options()("help,h", "show this help")("timeout", po::value<std::string>(),
+                                                 "give up after S seconds (s UNKNOWN, exit 0)")(
+      "max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")(
+      "model", po::value<std::string>()->default_value("discrete"),
+      "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
+      "engine", po::value<std::string>()->default_value("auto"),
+      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")(
+      "json", "print one JSON object instead of c/s/v lines");
   po::variables_map vm;
-  if (!cli::parse_args_one_input(args, opts, "instance", vm, "solve INSTANCE.grid [--model discrete|continuous] [--timeout S] [--max-states N] [--json]",
-                       "Collision-free Schedule, exactly. Discrete (default): is there an order of the couplings,\n"
-                       "run one at a time, with no collision? s YES (exit 10) with the order as v lines (checked by\n"
-                       "the simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
-                       "exhaustive search, s UNKNOWN (exit 0) when a limit is reached.\n"
-                       "Continuous (--model continuous): are there start times (couplings may overlap) with no\n"
-                       "collision? s YES with lines 'v NAME TIME' (exact rationals, checked by the simulator;\n"
-                       "'gridlock check --times' reads them back), s NO only when proved (Z3, exact), s UNKNOWN on\n"
-                       "a limit (--max-states bounds Z3's conflicts)."))
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm,
+          "solve INSTANCE.grid [--model discrete|continuous] [--timeout S] [--max-states N] [--json]",
+          "Collision-free Schedule, exactly. Discrete (default): is there an order of the couplings,\n"
+          "run one at a time, with no collision? s YES (exit 10) with the order as v lines (checked by\n"
+          "the simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
+          "exhaustive search, s UNKNOWN (exit 0) when a limit is reached.\n"
+          "Continuous (--model continuous): are there start times (couplings may overlap) with no\n"
+          "collision? s YES with lines 'v NAME TIME' (exact rationals, checked by the simulator;\n"
+          "'gridlock check --times' reads them back), s NO only when proved (Z3, exact), s UNKNOWN on\n"
+          "a limit (--max-states bounds Z3's conflicts)."))
     return 0;
   SolveOptions opt;
   opt.seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
@@ -99,8 +100,7 @@ int run_solve(const std::vector<std::string>& args) {
   const std::string model = vm["model"].as<std::string>();
   if (model != "discrete" && model != "continuous")
     throw UserError("--model must be discrete or continuous, not '" + model + "'");
-  if (model == "continuous" && !vm["engine"].defaulted())
-    throw UserError("--engine applies to --model discrete only");
+  if (model == "continuous" && !vm["engine"].defaulted()) throw UserError("--engine applies to --model discrete only");
 
   const std::string path = vm["instance"].as<std::string>();
   // Kept until the process ends (reachable, so no leak report): freeing an
@@ -128,8 +128,8 @@ int run_solve(const std::vector<std::string>& args) {
   } else {
     ans.comment("search " + st.engine + " on " + std::to_string(st.constraints) + " collision constraints");
     ans.comment("states " + std::to_string(st.states) + ", refuted " + std::to_string(st.refuted) + ", decisions " +
-                std::to_string(st.decisions) + ", safe moves " + std::to_string(st.safe_moves) +
-                ", propagations " + std::to_string(st.propagations) + ", memo hits " + std::to_string(st.memo_hits));
+                std::to_string(st.decisions) + ", safe moves " + std::to_string(st.safe_moves) + ", propagations " +
+                std::to_string(st.propagations) + ", memo hits " + std::to_string(st.memo_hits));
   }
   ans.comment("time " + fixed(st.seconds, 3) + " s");
   if (r.status == SolveResult::Status::Yes) ans.comment("order checked by the simulator: collision-free");

@@ -100,27 +100,31 @@ int run_verify(const std::vector<std::string>& args) {
   cli::install_stop_handlers();  // first: a signal at any moment gives the partial summary
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()
-    ("help,h", "show this help")
-    ("model", po::value<std::string>()->default_value("discrete"),
-     "which reduction to check: discrete (exact discrete solver and gap checker), continuous (the continuous "
-     "reduction and the exact continuous solver) or both")
-    ("direct", "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small "
-               "formulas small, e.g. for the continuous solver)")
-    ("timeout", po::value<std::string>()->default_value("60"), "seconds the exact solver may spend on one formula (then UNKNOWN)")
-    ("max-states", po::value<std::string>()->default_value("0"), "search nodes the exact solver may visit per formula (0: no limit)")
-    ("reproducers", po::value<std::string>()->default_value("verify-failures"),
-     "folder for reproducers of disagreements (one subfolder each)")
-    ("pictures", po::value<std::string>(), "draw each compiled instance of at most --picture-nodes nodes, and its "
-                                           "witness (or a collision), into this folder")
-    ("picture-nodes", po::value<std::string>()->default_value("1500"), "largest instance drawn by --pictures")
-    ("json", "print one JSON object instead of the table")
-    ("shard", po::value<std::string>()->default_value("0/1"), "K/N: check only the formulas i (in input order) with i % N == K")
-    ("json-out", po::value<std::string>(), "also write the JSON object to this file ('gridlock merge' combines shards)");
+  opts.add_options()("help,h", "show this help")(
+      "model", po::value<std::string>()->default_value("discrete"),
+      "which reduction to check: discrete (exact discrete solver and gap checker), continuous (the continuous "
+      "reduction and the exact continuous solver) or both")(
+      "direct",
+      "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small "
+      "formulas small, e.g. for the continuous solver)")(
+      "timeout", po::value<std::string>()->default_value("60"),
+      "seconds the exact solver may spend on one formula (then UNKNOWN)")(
+      "max-states", po::value<std::string>()->default_value("0"),
+      "search nodes the exact solver may visit per formula (0: no limit)")(
+      "reproducers", po::value<std::string>()->default_value("verify-failures"),
+      "folder for reproducers of disagreements (one subfolder each)")(
+      "pictures", po::value<std::string>(),
+      "draw each compiled instance of at most --picture-nodes nodes, and its "
+      "witness (or a collision), into this folder")("picture-nodes", po::value<std::string>()->default_value("1500"),
+                                                    "largest instance drawn by --pictures")(
+      "json", "print one JSON object instead of the table")(
+      "shard", po::value<std::string>()->default_value("0/1"),
+      "K/N: check only the formulas i (in input order) with i % N == K")(
+      "json-out", po::value<std::string>(),
+      "also write the JSON object to this file ('gridlock merge' combines shards)");
   po::options_description hidden;
-  hidden.add_options()
-    ("inputs", po::value<std::vector<std::string>>()->required(), "formulas")
-    ("break-gadget", po::value<std::string>()->default_value("none"), "test only: compile with a broken gadget");
+  hidden.add_options()("inputs", po::value<std::vector<std::string>>()->required(), "formulas")(
+      "break-gadget", po::value<std::string>()->default_value("none"), "test only: compile with a broken gadget");
   po::positional_options_description pos;
   pos.add("inputs", -1);
   po::variables_map vm;
@@ -148,7 +152,8 @@ int run_verify(const std::vector<std::string>& args) {
   if (!mutation) throw UserError("unknown --break-gadget '" + vm["break-gadget"].as<std::string>() + "'");
   opt.mutation = *mutation;
   auto model = parse_verify_model(vm["model"].as<std::string>());
-  if (!model) throw UserError("--model must be discrete, continuous or both, not '" + vm["model"].as<std::string>() + "'");
+  if (!model)
+    throw UserError("--model must be discrete, continuous or both, not '" + vm["model"].as<std::string>() + "'");
   opt.model = *model;
   opt.direct = vm.count("direct") > 0;
   const bool with_discrete = opt.model != VerifyModel::Continuous, with_continuous = opt.model != VerifyModel::Discrete;
@@ -167,8 +172,8 @@ int run_verify(const std::vector<std::string>& args) {
         << std::setw(8) << "nodes" << std::setw(7) << "coupl" << std::setw(7) << "SAT" << std::setw(9) << "discrete"
         << std::setw(7) << "contin";
     if (with_continuous) out << std::setw(9) << "c-exact";
-    out << std::setw(6) << "wit" << std::setw(10) << "states" << "  ms sat/compile/solve/gaps"
-        << (with_continuous ? "/c-solve" : "") << '\n';
+    out << std::setw(6) << "wit" << std::setw(10) << "states"
+        << "  ms sat/compile/solve/gaps" << (with_continuous ? "/c-solve" : "") << '\n';
   }
   nlohmann::json rows = nlohmann::json::array();
   size_t agree = 0, unknown = 0, disagree = 0, witnesses = 0, sat = 0, unsat = 0;
@@ -198,12 +203,26 @@ int run_verify(const std::vector<std::string>& args) {
     }
     if (with_discrete && vm.count("pictures") && r.nodes <= picture_nodes) draw(r, vm["pictures"].as<std::string>());
     if (json || vm.count("json-out")) {
-      rows.push_back({{"index", i}, {"formula", files[i]}, {"variables", r.source.num_vars}, {"clauses", r.source.clauses.size()},
-                      {"reduced", r.reduced}, {"nodes", r.nodes}, {"operations", r.ops}, {"couplings", r.couplings},
-                      {"max_coupling", r.max_coupling}, {"sat", tri_name(r.sat)}, {"discrete", tri_name(r.discrete)},
-                      {"continuous", tri_name(r.continuous)}, {"witnesses_checked", r.witnesses_checked()},
-                      {"solver_states", r.solver_states}, {"ms_sat", r.ms_sat}, {"ms_compile", r.ms_compile},
-                      {"ms_solve", r.ms_solve}, {"ms_gaps", r.ms_gaps}, {"status", status}, {"problem", r.problem}});
+      rows.push_back({{"index", i},
+                      {"formula", files[i]},
+                      {"variables", r.source.num_vars},
+                      {"clauses", r.source.clauses.size()},
+                      {"reduced", r.reduced},
+                      {"nodes", r.nodes},
+                      {"operations", r.ops},
+                      {"couplings", r.couplings},
+                      {"max_coupling", r.max_coupling},
+                      {"sat", tri_name(r.sat)},
+                      {"discrete", tri_name(r.discrete)},
+                      {"continuous", tri_name(r.continuous)},
+                      {"witnesses_checked", r.witnesses_checked()},
+                      {"solver_states", r.solver_states},
+                      {"ms_sat", r.ms_sat},
+                      {"ms_compile", r.ms_compile},
+                      {"ms_solve", r.ms_solve},
+                      {"ms_gaps", r.ms_gaps},
+                      {"status", status},
+                      {"problem", r.problem}});
       if (with_continuous) {
         auto& row = rows.back();
         row["continuous_nodes"] = r.cnodes;
@@ -226,7 +245,8 @@ int run_verify(const std::vector<std::string>& args) {
           << (with_discrete ? tri_name(r.discrete) : "-") << std::setw(7)
           << (with_discrete ? tri_name(r.continuous) : "-");
       if (with_continuous) out << std::setw(9) << tri_name(r.continuous_solver);
-      const int expected = with_discrete * ((r.sat == Tri::Yes) + (r.discrete == Tri::Yes) + (r.continuous == Tri::Yes)) +
+      const int expected = with_discrete *
+                               ((r.sat == Tri::Yes) + (r.discrete == Tri::Yes) + (r.continuous == Tri::Yes)) +
                            with_continuous * ((r.sat == Tri::Yes) + (r.continuous_solver == Tri::Yes));
       out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(10)
           << (with_discrete ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/"
@@ -236,11 +256,10 @@ int run_verify(const std::vector<std::string>& args) {
     }
   }
   const bool interrupted = stop_requested();
-  std::string summary = std::to_string(done) + " formulas (" + std::to_string(sat) + " SAT, " +
-                        std::to_string(unsat) + " UNSAT): " + std::to_string(agree) + " agree, " +
-                        std::to_string(unknown) + " unknown (solver limit), " + std::to_string(disagree) +
-                        " disagree; " + std::to_string(witnesses) + " certificates checked; " +
-                        fmt_ms(total_ms / 1000) + " s";
+  std::string summary = std::to_string(done) + " formulas (" + std::to_string(sat) + " SAT, " + std::to_string(unsat) +
+                        " UNSAT): " + std::to_string(agree) + " agree, " + std::to_string(unknown) +
+                        " unknown (solver limit), " + std::to_string(disagree) + " disagree; " +
+                        std::to_string(witnesses) + " certificates checked; " + fmt_ms(total_ms / 1000) + " s";
   if (interrupted)
     summary += "; INTERRUPTED by signal " + std::to_string(stop_signal().load()) + " after " + std::to_string(done) +
                " formulas";
@@ -250,8 +269,13 @@ int run_verify(const std::vector<std::string>& args) {
   j["shard"] = std::to_string(shard) + "/" + std::to_string(shards);
   j["inputs"] = files.size();
   j["formulas"] = rows;
-  j["summary"] = {{"formulas", done}, {"sat", sat}, {"unsat", unsat}, {"agree", agree},
-                  {"unknown", unknown}, {"disagree", disagree}, {"certificates_checked", witnesses}};
+  j["summary"] = {{"formulas", done},
+                  {"sat", sat},
+                  {"unsat", unsat},
+                  {"agree", agree},
+                  {"unknown", unknown},
+                  {"disagree", disagree},
+                  {"certificates_checked", witnesses}};
   j["interrupted"] = interrupted;
   j["exit_code"] = interrupted ? cli::interrupted_exit_code() : disagree ? 1 : 0;
   if (vm.count("json-out")) cli::write_text_file(vm["json-out"].as<std::string>(), j.dump(2) + "\n");
@@ -269,7 +293,8 @@ int run_verify(const std::vector<std::string>& args) {
   return 0;
 }
 
-Command reg{"verify", "is the reduction right on these formulas? CaDiCaL vs exact solver vs gap checker, certificates checked",
+Command reg{"verify",
+            "is the reduction right on these formulas? CaDiCaL vs exact solver vs gap checker, certificates checked",
             run_verify};
 
 }  // namespace

@@ -262,8 +262,10 @@ BruteAnswer brute_continuous(const Instance& inst) {
     if (op.kind == OpKind::Expand) {
       NodeId v = op.v;
       Vec2 vc = inst.cells()[v];
-      far = face == 1 ? shift(vc.x, DX[v]) : face == 0 ? shift(vc.x + 1, DX[v]) : face == 3 ? shift(vc.y, DY[v])
-                                                                                               : shift(vc.y + 1, DY[v]);
+      far = face == 1   ? shift(vc.x, DX[v])
+            : face == 0 ? shift(vc.x + 1, DX[v])
+            : face == 3 ? shift(vc.y, DY[v])
+                        : shift(vc.y + 1, DY[v]);
     } else {
       int sg = (face == 1 || face == 3) ? 1 : -1;
       far.a[op.coupling] = far.a[op.coupling] + Q(sg);
