@@ -21,7 +21,7 @@ void report(benchmark::State& state, const Instance& inst, const ContinuousResul
   state.counters["couplings"] = static_cast<double>(inst.couplings().size());
   state.counters["constraints"] = static_cast<double>(r.stats.constraints);
   state.counters["z3_components"] = static_cast<double>(r.stats.states);
-  state.counters["yes"] = r.status == SolveResult::Status::Yes ? 1 : 0;
+  state.counters["yes"] = r.status == Verdict::Yes ? 1 : 0;
 }
 
 void BM_ContinuousChain(benchmark::State& state) {
@@ -29,7 +29,7 @@ void BM_ContinuousChain(benchmark::State& state) {
   ContinuousResult r;
   for (auto _ : state) {
     r = solve_continuous(inst);
-    if (r.status != SolveResult::Status::Yes) state.SkipWithError("chain must be YES");
+    if (r.status != Verdict::Yes) state.SkipWithError("chain must be YES");
   }
   report(state, inst, r);
 }
@@ -68,7 +68,7 @@ void BM_ContinuousRandom(benchmark::State& state) {
     yes = z3 = 0;
     for (const Instance& inst : set) {
       ContinuousResult r = solve_continuous(inst);
-      yes += r.status == SolveResult::Status::Yes;
+      yes += r.status == Verdict::Yes;
       z3 += r.stats.states > 0;
     }
   }

@@ -9,8 +9,8 @@
 #include <benchmark/benchmark.h>
 
 #include "cnf/sat_solver.hpp"
-#include "reductions/fuzz.hpp"
-#include "reductions/verify.hpp"
+#include "verify/fuzz.hpp"
+#include "verify/verify.hpp"
 
 namespace gridlock {
 namespace {

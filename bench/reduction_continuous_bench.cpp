@@ -34,8 +34,7 @@ void BM_ContinuousReduction(benchmark::State& state) {
   ContinuousResult r;
   for (auto _ : state) r = solve_continuous(c.instance);
   const bool want_yes = state.range(1) == 0;
-  if (r.status != (want_yes ? SolveResult::Status::Yes : SolveResult::Status::No))
-    state.SkipWithError("wrong or no answer");
+  if (r.status != (want_yes ? Verdict::Yes : Verdict::No)) state.SkipWithError("wrong or no answer");
   state.counters["couplings"] = static_cast<double>(c.stats.couplings);
   state.counters["nodes"] = static_cast<double>(c.stats.nodes);
   state.counters["z3_conflicts"] = static_cast<double>(r.stats.refuted);
@@ -48,8 +47,7 @@ void BM_DiscreteReduction(benchmark::State& state) {
   SolveResult r;
   for (auto _ : state) r = solve_discrete(c.instance);
   const bool want_yes = state.range(1) == 0;
-  if (r.status != (want_yes ? SolveResult::Status::Yes : SolveResult::Status::No))
-    state.SkipWithError("wrong or no answer");
+  if (r.status != (want_yes ? Verdict::Yes : Verdict::No)) state.SkipWithError("wrong or no answer");
   state.counters["couplings"] = static_cast<double>(c.stats.couplings);
   state.counters["states"] = static_cast<double>(r.stats.states);
 }

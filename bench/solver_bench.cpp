@@ -204,7 +204,7 @@ void BM_GadgetSystemSatlib(benchmark::State& state, const std::string& set, bool
       states += st.states;
       decisions += st.decisions;
       props += st.propagations;
-      if (out.status != SolveResult::Status::Unknown && (out.status == SolveResult::Status::Yes) != expect_sat) ++wrong;
+      if (out.status != Verdict::Unknown && (out.status == Verdict::Yes) != expect_sat) ++wrong;
     }
   }
   state.counters["samples"] = static_cast<double>(systems.size());

@@ -67,7 +67,7 @@ bool engine_on(const std::string& e) {
 Sample make_sample(const std::string& name, Formula f) {
   Sample s;
   s.name = name;
-  s.sat = solve_sat(f).status == SatResult::Sat;
+  s.sat = solve_sat(f).status == Verdict::Yes;
   s.inst = compile_formula(reduce_to_lsat(f).output()).instance;
   s.source = std::move(f);
   return s;
@@ -103,7 +103,7 @@ std::vector<Sample> random_threshold(int n, int m, size_t each) {
     p.m = m;
     p.seed = seed;
     Formula f = random_ksat(p);
-    const bool is_sat = solve_sat(f).status == SatResult::Sat;
+    const bool is_sat = solve_sat(f).status == Verdict::Yes;
     if ((is_sat && sat >= each) || (!is_sat && unsat >= each)) continue;
     (is_sat ? sat : unsat) += 1;
     out.push_back(make_sample("n" + std::to_string(n) + "-seed" + std::to_string(seed), std::move(f)));
@@ -202,7 +202,7 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
           o.engine = e == "sat" ? SolveOptions::Engine::Sat : SolveOptions::Engine::Precedence;
           SolveResult res = solve_discrete(smp.inst, o);
           r.decisions = res.stats.decisions;
-          r.code = res.status == SolveResult::Status::Yes ? 10 : res.status == SolveResult::Status::No ? 20 : 0;
+          r.code = res.status == Verdict::Yes ? 10 : res.status == Verdict::No ? 20 : 0;
         } else if (e == "z3") {
           const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
           r.code = z3_gap_system(sys, limit);
@@ -210,7 +210,7 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
           SatLimits lim;
           lim.seconds = limit;
           SatResult sr = solve_sat(smp.source, lim);
-          r.code = sr.status == SatResult::Sat ? 10 : sr.status == SatResult::Unsat ? 20 : 0;
+          r.code = sr.status == Verdict::Yes ? 10 : sr.status == Verdict::No ? 20 : 0;
         }
         r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         r.cpu = cpu_now() - c0;

@@ -43,11 +43,11 @@ bool all_true(const std::vector<Masks>& masks, uint32_t a) {
 SatResult exhaustive_sat(const Formula& f) {
   const auto masks = clause_masks(f, "exhaustive_sat");
   SatResult res;
-  res.status = SatResult::Unsat;
+  res.status = Verdict::No;
   const uint64_t end = uint64_t{1} << f.num_vars;
   for (uint64_t a = 0; a < end; ++a) {
     if (!all_true(masks, static_cast<uint32_t>(a))) continue;
-    res.status = SatResult::Sat;
+    res.status = Verdict::Yes;
     res.model.assign(static_cast<size_t>(f.num_vars) + 1, false);
     for (int v = 1; v <= f.num_vars; ++v) res.model[static_cast<size_t>(v)] = (a >> (v - 1)) & 1;
     break;
@@ -77,11 +77,11 @@ class Dpll {
     // Empty and unit clauses are the starting facts.
     for (const auto& c : f_.clauses) {
       if (c.empty()) {
-        res.status = SatResult::Unsat;
+        res.status = Verdict::No;
         return res;
       }
       if (c.size() == 1 && !assign(c[0])) {
-        res.status = SatResult::Unsat;
+        res.status = Verdict::No;
         return res;
       }
     }
@@ -99,7 +99,7 @@ class Dpll {
           stack.pop_back();
         }
         if (stack.empty()) {
-          res.status = SatResult::Unsat;
+          res.status = Verdict::No;
           return res;
         }
         undo(stack.back().trail_size);
@@ -113,7 +113,7 @@ class Dpll {
       stack.push_back({trail_.size(), lit, false});
       assign(lit);
     }
-    res.status = SatResult::Sat;
+    res.status = Verdict::Yes;
     res.model.assign(val_.size(), false);
     for (size_t v = 1; v < val_.size(); ++v) res.model[v] = val_[v] > 0;
     // An oracle that is wrong is worse than none: check before answering.

@@ -37,14 +37,14 @@ void IncrementalSat::add_clause(const std::vector<int>& lits) {
   impl_->solver.add(0);
 }
 
-SatResult::Status IncrementalSat::solve(const std::function<bool(uint64_t)>& stop) {
+Verdict IncrementalSat::solve(const std::function<bool(uint64_t)>& stop) {
   if (vars_ > 0) impl_->solver.reserve(vars_);
   impl_->stop = &stop;
   impl_->solver.connect_terminator(impl_.get());
   const int code = impl_->solver.solve();
   impl_->solver.disconnect_terminator();
   impl_->stop = nullptr;
-  return code == 10 ? SatResult::Sat : code == 20 ? SatResult::Unsat : SatResult::Unknown;
+  return code == 10 ? Verdict::Yes : code == 20 ? Verdict::No : Verdict::Unknown;
 }
 
 bool IncrementalSat::value(int var) const { return impl_->solver.val(var) > 0; }

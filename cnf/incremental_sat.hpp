@@ -30,7 +30,7 @@ class IncrementalSat {
   // with the number of conflicts so far (over all calls); returning true
   // ends the call with Unknown. Sat: value() reads the model until the next
   // add_clause or solve.
-  SatResult::Status solve(const std::function<bool(uint64_t conflicts)>& stop);
+  Verdict solve(const std::function<bool(uint64_t conflicts)>& stop);
   bool value(int var) const;
   uint64_t conflicts() const;  // over all solve calls
 

@@ -30,11 +30,11 @@ class SatDeadline : public CaDiCaL::Terminator {
 
 }  // namespace
 
-const char* status_name(SatResult::Status s) {
+const char* sat_status_name(Verdict s) {
   switch (s) {
-    case SatResult::Sat: return "SATISFIABLE";
-    case SatResult::Unsat: return "UNSATISFIABLE";
-    case SatResult::Unknown: return "UNKNOWN";
+    case Verdict::Yes: return "SATISFIABLE";
+    case Verdict::No: return "UNSATISFIABLE";
+    case Verdict::Unknown: return "UNKNOWN";
   }
   return "UNKNOWN";
 }
@@ -63,8 +63,8 @@ SatResult solve_sat(const Formula& f, const SatLimits& limits) {
   solver.connect_terminator(&deadline);
   const int code = solver.solve();
   solver.disconnect_terminator();
-  res.status = code == 10 ? SatResult::Sat : code == 20 ? SatResult::Unsat : SatResult::Unknown;
-  if (res.status == SatResult::Sat) {
+  res.status = code == 10 ? Verdict::Yes : code == 20 ? Verdict::No : Verdict::Unknown;
+  if (res.status == Verdict::Yes) {
     res.model.assign(static_cast<size_t>(f.num_vars) + 1, false);
     for (int v = 1; v <= f.num_vars; ++v) res.model[static_cast<size_t>(v)] = solver.val(v) > 0;
     long bad = first_falsified_clause(f, res.model);

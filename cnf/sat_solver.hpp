@@ -8,24 +8,24 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "common/verdict.hpp"
 
 namespace gridlock {
 
-// Limits of one solve call; a limit that is hit gives SatResult::Unknown.
+// Limits of one solve call; a limit that is hit gives Verdict::Unknown.
 struct SatLimits {
   int64_t conflicts = -1;  // CaDiCaL conflict limit; < 0 = none (values above INT_MAX are capped)
   double seconds = -1;     // wall-clock limit; <= 0 = none
 };
 
 struct SatResult {
-  enum Status { Sat, Unsat, Unknown };
-  Status status = Unknown;
-  std::vector<bool> model;  // Sat only: indexed 1..num_vars (model[0] unused)
-  double seconds = 0;       // wall-clock time of the call
+  Verdict status = Verdict::Unknown;  // Yes = satisfiable, No = unsatisfiable
+  std::vector<bool> model;            // Yes only: indexed 1..num_vars (model[0] unused)
+  double seconds = 0;                 // wall-clock time of the call
 };
 
 // "SATISFIABLE", "UNSATISFIABLE", "UNKNOWN" (the DIMACS status words).
-const char* status_name(SatResult::Status s);
+const char* sat_status_name(Verdict v);
 
 // Solves f with CaDiCaL. Requires validate(f) empty (throws
 // std::invalid_argument otherwise). A Sat model is checked with satisfies()

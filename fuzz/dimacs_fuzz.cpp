@@ -46,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!is_lsat(red.output(), LsatForm::AtMost3)) __builtin_trap();
   const SatResult out = solve_sat(red.output());
   if (out.status != ex.status) __builtin_trap();
-  if (ex.status == SatResult::Sat) {
+  if (ex.status == Verdict::Yes) {
     if (!satisfies(f, red.lift_to_source(out.model))) __builtin_trap();
     if (!satisfies(red.output(), red.lift_to_target(ex.model))) __builtin_trap();
   }

@@ -317,11 +317,11 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt)
     GapVerdict v = check_gaps(inst);
     res.stats.constraints = v.gaps_checked + v.cycles_checked;
     if (v.collision_free) {
-      res.status = SolveResult::Status::Yes;
+      res.status = Verdict::Yes;
       res.schedule.start.assign(k, Rational(0));
       check_witness(inst, res.schedule);
     } else {
-      res.status = SolveResult::Status::No;
+      res.status = Verdict::No;
     }
     res.stats.seconds = elapsed();
     return res;
@@ -415,7 +415,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     res.stats.decisions += z3_stat(st, "decisions");
     res.stats.propagations += z3_stat(st, "propagations");
     if (cr == z3::unsat) {
-      res.status = SolveResult::Status::No;
+      res.status = Verdict::No;
       res.stats.engine = "z3";
       res.stats.seconds = elapsed();
       res.schedule.start.clear();
@@ -447,10 +447,10 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   res.stats.engine = needed_z3 ? "z3" : "trivial";
   if (!unknown && check_schedule_bounds(inst, res.schedule)) unknown = true;  // see the header: never observed
   if (unknown) {
-    res.status = SolveResult::Status::Unknown;
+    res.status = Verdict::Unknown;
     res.schedule.start.clear();
   } else {
-    res.status = SolveResult::Status::Yes;
+    res.status = Verdict::Yes;
     check_witness(inst, res.schedule);
   }
   res.stats.seconds = elapsed();

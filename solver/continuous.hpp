@@ -72,7 +72,7 @@
 namespace gridlock {
 
 struct ContinuousResult {
-  SolveResult::Status status = SolveResult::Status::Unknown;
+  Verdict status = Verdict::Unknown;
   Schedule schedule;  // Yes: a start time per coupling (exact rationals), accepted by the Simulator
   SolveStats stats;   // engine name, counts, seconds
 };

@@ -80,7 +80,7 @@ class SearchBudget {
 };
 
 struct SearchOutcome {
-  SolveResult::Status status = SolveResult::Status::Unknown;
+  Verdict status = Verdict::Unknown;
   std::vector<CouplingId> order;
 };
 

@@ -59,12 +59,12 @@ class PrecedenceSearch {
     SearchOutcome out;
     for (size_t c = 0; c < val_.size(); ++c)
       if (val_[c] > 0) {  // overlapping from the start: the first coupling of c collides
-        out.status = SolveResult::Status::No;
+        out.status = Verdict::No;
         ++st_.refuted;
         return out;
       }
-    out.status = node() ? SolveResult::Status::Yes : SolveResult::Status::No;
-    if (out.status == SolveResult::Status::Yes) out.order = path_;
+    out.status = node() ? Verdict::Yes : Verdict::No;
+    if (out.status == Verdict::Yes) out.order = path_;
     return out;
   }
 

@@ -36,13 +36,13 @@ class SatSearch {
     for (const CollisionConstraint& c : sys_.constraints) {
       if (c.num_forms != 1) throw std::invalid_argument("the SAT engine needs one form per constraint");
       if (c.base[0] > 0) {  // overlapping from the start: the first step of c collides
-        out.status = SolveResult::Status::No;
+        out.status = Verdict::No;
         ++st_.refuted;
         return out;
       }
     }
     if (!encode() || !add_order_clauses()) {
-      out.status = SolveResult::Status::No;
+      out.status = Verdict::No;
       return out;
     }
     const std::function<bool(uint64_t)> stop = [&](uint64_t conflicts) {
@@ -51,20 +51,20 @@ class SatSearch {
     for (;;) {
       budget_.tick(st_);
       ++st_.decisions;
-      const SatResult::Status s = sat_.solve(stop);
+      const Verdict s = sat_.solve(stop);
       const uint64_t conf = sat_.conflicts();
       st_.refuted += conf - counted_conflicts_;
       st_.states += conf - counted_conflicts_;
       counted_conflicts_ = conf;
-      if (s == SatResult::Unknown) throw SearchBudget::LimitReached{};
-      if (s == SatResult::Unsat) {
-        out.status = SolveResult::Status::No;
+      if (s == Verdict::Unknown) throw SearchBudget::LimitReached{};
+      if (s == Verdict::No) {
+        out.status = Verdict::No;
         return out;
       }
       if (order_of_model(out.order)) {
         if (replay_order(sys_, out.order).failed_step != out.order.size())
           throw std::logic_error("SAT engine: an acyclic model whose order the constraints reject");
-        out.status = SolveResult::Status::Yes;
+        out.status = Verdict::Yes;
         return out;
       }
     }

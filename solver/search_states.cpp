@@ -53,10 +53,10 @@ class StateSearch {
   SearchOutcome run() {
     SearchOutcome out;
     if (dfs()) {
-      out.status = SolveResult::Status::Yes;
+      out.status = Verdict::Yes;
       out.order = path_;
     } else {
-      out.status = SolveResult::Status::No;
+      out.status = Verdict::No;
     }
     return out;
   }

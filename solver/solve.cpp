@@ -10,15 +10,6 @@
 
 namespace gridlock {
 
-const char* solve_status_name(SolveResult::Status s) {
-  switch (s) {
-    case SolveResult::Status::Yes: return "YES";
-    case SolveResult::Status::No: return "NO";
-    case SolveResult::Status::Unknown: return "UNKNOWN";
-  }
-  return "?";
-}
-
 SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
   const PreparedInstance prep(inst);
   return solve_discrete(prep, opt);
@@ -39,7 +30,7 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
   const FaceNets& faces = prep.faces;
   for (CouplingId q = 0; q < inst.couplings().size(); ++q)
     if (faces.coupling_breaks_cycle[q]) {
-      res.status = SolveResult::Status::No;
+      res.status = Verdict::No;
       res.cycle_breaker = q;
       res.stats.engine = "cycle";
       res.stats.seconds = budget.elapsed();
@@ -60,12 +51,12 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
     res.status = out.status;
     res.order = std::move(out.order);
   } catch (const LimitReached&) {
-    res.status = SolveResult::Status::Unknown;
+    res.status = Verdict::Unknown;
     res.order.clear();
   }
   budget.clear_progress();
 
-  if (res.status == SolveResult::Status::Yes) {
+  if (res.status == Verdict::Yes) {
     // Never a silent wrong answer: the order must be a permutation that the
     // constraint system and the exact simulator both accept.
     std::vector<char> seen(inst.couplings().size(), 0);

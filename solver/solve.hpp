@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "common/verdict.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/prepared.hpp"
 #include "lattice/simulate.hpp"
@@ -72,7 +73,7 @@ struct SolveStats {
 };
 
 struct SolveResult {
-  enum class Status { Yes, No, Unknown } status = Status::Unknown;
+  Verdict status = Verdict::Unknown;
   std::vector<CouplingId> order;  // Yes: every coupling once, accepted by the Simulator
   SolveStats stats;
   CouplingId cycle_breaker = kNone;  // No because this coupling breaks a cycle
@@ -88,7 +89,5 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt = {});
 // The YES replay runs on `replay` if it is given and simulates prep (its
 // work arrays are then reused), else on a simulator of its own.
 SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay = nullptr);
-
-const char* solve_status_name(SolveResult::Status s);  // "YES", "NO", "UNKNOWN"
 
 }  // namespace gridlock

@@ -196,7 +196,7 @@ TEST(Lsat, EveryExact3LsatFormulaIsSatisfiable) {
     ASSERT_TRUE(a);
     EXPECT_TRUE(satisfies(f, *a));
     if (t % 5 == 0) {
-      EXPECT_EQ(solve_sat(f).status, SatResult::Sat);
+      EXPECT_EQ(solve_sat(f).status, Verdict::Yes);
     }
   }
 }

@@ -46,12 +46,12 @@ TEST(Solver, OraclesAgreeOnRandomFormulas) {
     SatResult ex = exhaustive_sat(f);
     SatResult cd = solve_sat(f);
     SatResult dp = dpll_sat(f);
-    ASSERT_NE(ex.status, SatResult::Unknown);
+    ASSERT_NE(ex.status, Verdict::Unknown);
     ASSERT_EQ(cd.status, ex.status);
     ASSERT_EQ(dp.status, ex.status);
-    const uint64_t models = t % 4 == 0 ? count_models(f) : (ex.status == SatResult::Sat ? 1 : 0);
-    EXPECT_EQ(models > 0, ex.status == SatResult::Sat);
-    if (ex.status == SatResult::Sat) {
+    const uint64_t models = t % 4 == 0 ? count_models(f) : (ex.status == Verdict::Yes ? 1 : 0);
+    EXPECT_EQ(models > 0, ex.status == Verdict::Yes);
+    if (ex.status == Verdict::Yes) {
       ++sat;
       EXPECT_TRUE(satisfies(f, ex.model));
       EXPECT_TRUE(satisfies(f, cd.model));
@@ -78,20 +78,20 @@ TEST(Solver, CountModelsSmallCases) {
 TEST(Solver, EdgeCases) {
   Formula none;
   SatResult r = solve_sat(none);
-  EXPECT_EQ(r.status, SatResult::Sat);
+  EXPECT_EQ(r.status, Verdict::Yes);
   EXPECT_EQ(r.model.size(), 1u);
   Formula empty_clause;
   empty_clause.num_vars = 2;
   empty_clause.clauses = {{1}, {}};
-  EXPECT_EQ(solve_sat(empty_clause).status, SatResult::Unsat);
-  EXPECT_EQ(dpll_sat(empty_clause).status, SatResult::Unsat);
-  EXPECT_EQ(exhaustive_sat(empty_clause).status, SatResult::Unsat);
+  EXPECT_EQ(solve_sat(empty_clause).status, Verdict::No);
+  EXPECT_EQ(dpll_sat(empty_clause).status, Verdict::No);
+  EXPECT_EQ(exhaustive_sat(empty_clause).status, Verdict::No);
   // Declared but unused variables still get a value.
   Formula unused;
   unused.num_vars = 1000;
   unused.clauses = {{-7}};
   r = solve_sat(unused);
-  ASSERT_EQ(r.status, SatResult::Sat);
+  ASSERT_EQ(r.status, Verdict::Yes);
   EXPECT_EQ(r.model.size(), 1001u);
   EXPECT_FALSE(r.model[7]);
   // Malformed formulas are bugs, not answers.
@@ -111,27 +111,27 @@ TEST(Solver, LimitsGiveUnknown) {
   const Formula php = pigeonhole(10);
   SatLimits few;
   few.conflicts = 20;
-  EXPECT_EQ(solve_sat(php, few).status, SatResult::Unknown);
+  EXPECT_EQ(solve_sat(php, few).status, Verdict::Unknown);
   SatLimits quick;
   quick.seconds = 0.05;
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_EQ(solve_sat(pigeonhole(13), quick).status, SatResult::Unknown);
+  EXPECT_EQ(solve_sat(pigeonhole(13), quick).status, Verdict::Unknown);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
   // Small enough to finish: the limits do not change answers.
   SatLimits generous;
   generous.conflicts = 1000000;
   generous.seconds = 60;
-  EXPECT_EQ(solve_sat(pigeonhole(6), generous).status, SatResult::Unsat);
-  EXPECT_EQ(solve_sat(pigeonhole(6)).status, SatResult::Unsat);
-  EXPECT_EQ(dpll_sat(pigeonhole(6)).status, SatResult::Unsat);
-  EXPECT_EQ(dpll_sat(pigeonhole(8), 10).status, SatResult::Unknown);
+  EXPECT_EQ(solve_sat(pigeonhole(6), generous).status, Verdict::No);
+  EXPECT_EQ(solve_sat(pigeonhole(6)).status, Verdict::No);
+  EXPECT_EQ(dpll_sat(pigeonhole(6)).status, Verdict::No);
+  EXPECT_EQ(dpll_sat(pigeonhole(8), 10).status, Verdict::Unknown);
 }
 
 TEST(Solver, PlantedFormulasAreSatisfiable) {
   for (uint64_t seed = 0; seed < static_cast<uint64_t>(test::scaled(40)); ++seed) {
     Formula f = planted_ksat({60, 250, 3, seed});
     SatResult r = solve_sat(f);
-    ASSERT_EQ(r.status, SatResult::Sat) << seed;
+    ASSERT_EQ(r.status, Verdict::Yes) << seed;
     EXPECT_TRUE(satisfies(f, r.model));
   }
 }

@@ -86,7 +86,7 @@ struct Tally {
 };
 
 // Everything the reduction promises, on one input. Returns the input's status.
-SatResult::Status check_reduction(const Formula& in, const ToLsatOptions& opt, bool with_dpll, bool all_models) {
+Verdict check_reduction(const Formula& in, const ToLsatOptions& opt, bool with_dpll, bool all_models) {
   LsatReduction red = reduce_to_lsat(in, opt);
   const Formula& out = red.output();
   EXPECT_EQ(validate(out), "");
@@ -111,7 +111,7 @@ SatResult::Status check_reduction(const Formula& in, const ToLsatOptions& opt, b
   if (with_dpll) {
     EXPECT_EQ(dpll_sat(out).status, ex.status);
   }
-  if (ex.status == SatResult::Sat && cd.status == SatResult::Sat) {
+  if (ex.status == Verdict::Yes && cd.status == Verdict::Yes) {
     EXPECT_TRUE(satisfies(out, red.lift_to_target(ex.model)));
     EXPECT_TRUE(satisfies(in, red.lift_to_source(cd.model)));
     if (all_models) {
@@ -127,7 +127,7 @@ SatResult::Status check_reduction(const Formula& in, const ToLsatOptions& opt, b
       Formula blocked = out;
       for (int k = 0; k < 8; ++k) {
         SatResult r = solve_sat(blocked);
-        if (r.status != SatResult::Sat) break;
+        if (r.status != Verdict::Yes) break;
         EXPECT_TRUE(satisfies(in, red.lift_to_source(r.model)));
         std::vector<int> block;
         for (int v = 1; v <= out.num_vars; ++v) block.push_back(r.model[static_cast<size_t>(v)] ? -v : v);
@@ -152,7 +152,7 @@ TEST(ToLsat, Random3CnfBothWays) {
     ToLsatOptions opt;
     opt.passthrough = t % 2 == 0;
     auto st = check_reduction(in, opt, t % 4 == 0, t % 25 == 0 && n <= 8);
-    (st == SatResult::Sat ? tally.sat : tally.unsat)++;
+    (st == Verdict::Yes ? tally.sat : tally.unsat)++;
     if (::testing::Test::HasFailure()) break;  // one seed to replay, not a flood
     // The bounds for 3-CNF with three distinct literals per clause.
     LsatReduction red = reduce_to_lsat(in, opt);
@@ -177,7 +177,7 @@ TEST(ToLsat, MessyCnfBothWays) {
     ToLsatOptions opt;
     opt.passthrough = t % 3 != 0;
     auto st = check_reduction(in, opt, t % 4 == 0, t % 25 == 0 && n <= 8);
-    (st == SatResult::Sat ? tally.sat : tally.unsat)++;
+    (st == Verdict::Yes ? tally.sat : tally.unsat)++;
     if (::testing::Test::HasFailure()) break;
   }
   EXPECT_GT(tally.sat, cases / 5);
@@ -290,11 +290,11 @@ TEST(ToLsat, EverySatlibFormula) {
     EXPECT_EQ(out.num_vars, s.vars);
     EXPECT_EQ(static_cast<int64_t>(out.clauses.size()), s.clauses);
     SatResult r = solve_sat(out);
-    ASSERT_EQ(r.status, file.sat ? SatResult::Sat : SatResult::Unsat);
+    ASSERT_EQ(r.status, file.sat ? Verdict::Yes : Verdict::No);
     if (file.sat) {
       EXPECT_TRUE(satisfies(in, red.lift_to_source(r.model)));
       SatResult src = solve_sat(in);
-      ASSERT_EQ(src.status, SatResult::Sat);
+      ASSERT_EQ(src.status, Verdict::Yes);
       EXPECT_TRUE(satisfies(out, red.lift_to_target(src.model)));
     }
   }

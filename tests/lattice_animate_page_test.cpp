@@ -15,8 +15,8 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
-#include "reductions/verify.hpp"
 #include "support/cli.hpp"
+#include "verify/verify.hpp"
 
 namespace gridlock {
 namespace {
@@ -232,7 +232,7 @@ TEST(AnimateBrowser, CollisionDrawnWhereTheSimulatorSays) {
     Formula f;
     ASSERT_FALSE(read_dimacs_file(cnf, f, {}));
     VerifyResult v = verify_formula(f, cnf, VerifyOptions{});
-    ASSERT_EQ(v.sat, Tri::No);
+    ASSERT_EQ(v.sat, Verdict::No);
     Schedule s = schedule_from_order(
         schedule_from_assignment(v.compiled, std::vector<bool>(static_cast<size_t>(v.lsat.num_vars) + 1, false)));
     expect_collision_drawn(chromium, dir + "/pics/tiny-unsat-collision.html", v.instance(), s, dir + "/unsat.png");

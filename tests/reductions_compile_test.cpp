@@ -168,7 +168,7 @@ TEST(Compile, SmallFormulaSweep) {
     CompiledFormula c = compile_formula(f);
     std::vector<CouplingId> witness;
     bool yes = test::contract_schedule_exists(c, &witness);
-    bool is_sat = exhaustive_sat(f).status == SatResult::Sat;
+    bool is_sat = exhaustive_sat(f).status == Verdict::Yes;
     ASSERT_EQ(yes, is_sat) << to_dimacs(f);
     if (yes) {
       ++sat;
@@ -179,7 +179,7 @@ TEST(Compile, SmallFormulaSweep) {
     }
     if (!is_sat || i % 16 == 0) {
       SolveResult r = solve_discrete(c.instance);
-      ASSERT_EQ(r.status, is_sat ? SolveResult::Status::Yes : SolveResult::Status::No) << to_dimacs(f);
+      ASSERT_EQ(r.status, is_sat ? Verdict::Yes : Verdict::No) << to_dimacs(f);
       if (is_sat) {
         EXPECT_TRUE(satisfies(f, assignment_from_schedule(c, r.order))) << to_dimacs(f);
       }
@@ -209,10 +209,9 @@ TEST(Compile, RandomLsatFormulasEndToEnd) {
     CompiledFormula c = compile_formula(f);
     SatResult s = solve_sat(f);
     SolveResult r = solve_discrete(c.instance);
-    ASSERT_NE(r.status, SolveResult::Status::Unknown);
-    ASSERT_EQ(r.status == SolveResult::Status::Yes, s.status == SatResult::Sat) << "seed " << p.seed << "\n"
-                                                                                << to_dimacs(f);
-    if (s.status == SatResult::Sat) {
+    ASSERT_NE(r.status, Verdict::Unknown);
+    ASSERT_EQ(r.status == Verdict::Yes, s.status == Verdict::Yes) << "seed " << p.seed << "\n" << to_dimacs(f);
+    if (s.status == Verdict::Yes) {
       ++sat;
       EXPECT_TRUE(satisfies(f, assignment_from_schedule(c, r.order))) << "seed " << p.seed;
       EXPECT_FALSE(order_collides(c, schedule_from_assignment(c, s.model))) << "seed " << p.seed;
@@ -261,7 +260,7 @@ TEST(Compile, EveryMutationIsCaughtEndToEnd) {
       CompiledFormula c = compile_formula(f, m);
       std::vector<CouplingId> witness;
       bool yes = test::contract_schedule_exists(c, &witness);
-      bool is_sat = exhaustive_sat(f).status == SatResult::Sat;
+      bool is_sat = exhaustive_sat(f).status == Verdict::Yes;
       if (yes == is_sat) continue;
       caught = true;
       // The simulator agrees with the broken contracts: the wrong answer is real.
@@ -285,7 +284,7 @@ TEST(Compile, SatlibThroughToLsatLiftsToCollisionFreeSchedules) {
     CompiledFormula c = compile_formula(red.output());
     EXPECT_LE(c.stats.max_coupling, 3u);
     SatResult r = solve_sat(f);
-    ASSERT_EQ(r.status, SatResult::Sat);
+    ASSERT_EQ(r.status, Verdict::Yes);
     auto order = schedule_from_assignment(c, red.lift_to_target(r.model));
     ASSERT_FALSE(order_collides(c, order)) << file.path;
     auto back = red.lift_to_source(assignment_from_schedule(c, order));

@@ -162,7 +162,7 @@ TEST(CompileContinuous, CollisionFreeTimesLiftToSatisfyingAssignments) {
 // "everything at time 0" is collision-free on the simulator.
 TEST(CompileContinuous, LooseSeparationChangesTheAnswer) {
   Formula f = test::make_formula(1, {{1}, {-1}});
-  ASSERT_EQ(exhaustive_sat(f).status, SatResult::Unsat);
+  ASSERT_EQ(exhaustive_sat(f).status, Verdict::No);
   CompiledFormula bad = compile_formula(f, Mutation::SeparationLoose, kCont);
   Schedule s;
   s.start.assign(bad.instance.couplings().size(), Rational(0));
@@ -207,10 +207,10 @@ TEST(CompileContinuous, ExactContinuousSolverOnEveryTwoVariableFormula) {
   for (const Formula& f : sweep) {
     SCOPED_TRACE(to_dimacs(f));
     CompiledFormula c = compile_formula(f, Mutation::None, kCont);
-    const bool is_sat = exhaustive_sat(f).status == SatResult::Sat;
+    const bool is_sat = exhaustive_sat(f).status == Verdict::Yes;
     ContinuousResult r = solve_continuous(c.instance);
-    ASSERT_NE(r.status, SolveResult::Status::Unknown);
-    ASSERT_EQ(r.status == SolveResult::Status::Yes, is_sat);
+    ASSERT_NE(r.status, Verdict::Unknown);
+    ASSERT_EQ(r.status == Verdict::Yes, is_sat);
     if (is_sat) {
       ++yes;
       EXPECT_FALSE(collides(c, r.schedule));

@@ -24,7 +24,7 @@
 namespace gridlock {
 namespace {
 
-using Status = SolveResult::Status;
+using Status = Verdict;
 using test::load_example;
 using test::parse_instance;
 

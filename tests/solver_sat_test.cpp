@@ -22,7 +22,7 @@
 namespace gridlock {
 namespace {
 
-using Status = SolveResult::Status;
+using Status = Verdict;
 
 // A random gap system: k couplings, some gaps over 2..k of them with
 // coefficients in [-3, 3] \ {0} and bases in [-4, 0].
@@ -154,7 +154,7 @@ TEST(SatEngine, SatlibAgreesWithCadical) {
     if (want < files.size() && (i * want) % files.size() >= want) continue;
     Formula f;
     ASSERT_FALSE(read_dimacs_file(files[i].path, f)) << files[i].path;
-    const bool sat = solve_sat(f).status == SatResult::Sat;
+    const bool sat = solve_sat(f).status == Verdict::Yes;
     ASSERT_EQ(sat, files[i].sat) << files[i].path;
     const LsatReduction red = reduce_to_lsat(f);
     const CompiledFormula comp = compile_formula(red.output());

@@ -23,7 +23,7 @@ std::string write_instance_string(const Instance& inst) {
   return out.str();
 }
 
-using Status = SolveResult::Status;
+using Status = Verdict;
 
 Instance load(const std::string& name) {
   Instance inst;
@@ -132,7 +132,7 @@ void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally&
   for (auto e : engines) {
     SolveResult r = solve_with(inst, e);
     ASSERT_EQ(r.status == Status::Yes, ref.has_value())
-        << family << " seed " << seed << " engine " << r.stats.engine << ": solver says " << solve_status_name(r.status)
+        << family << " seed " << seed << " engine " << r.stats.engine << ": solver says " << verdict_name(r.status)
         << ", reference says " << (ref ? "YES" + names(inst, *ref) : "NO") << "\n"
         << write_instance_string(inst);
     if (r.status == Status::Yes) {

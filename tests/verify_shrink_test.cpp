@@ -3,13 +3,13 @@
 
 #include "cnf/brute_force.hpp"
 #include "cnf/generate.hpp"
-#include "reductions/shrink.hpp"
 #include "support/test_scale.hpp"
+#include "verify/shrink.hpp"
 
 namespace gridlock {
 namespace {
 
-bool unsat(const Formula& f) { return exhaustive_sat(f).status == SatResult::Unsat; }
+bool unsat(const Formula& f) { return exhaustive_sat(f).status == Verdict::No; }
 
 TEST(Shrink, UnsatFormulasShrinkToMinimalUnsatisfiableCores) {
   const int cases = test::scaled(150);

@@ -57,12 +57,12 @@ int run_animate(const std::vector<std::string>& args) {
     so.seconds = timeout;
     SolveResult r = solve_discrete(inst, so);
     std::vector<CouplingId> order;
-    if (r.status == SolveResult::Status::Yes) {
+    if (r.status == Verdict::Yes) {
       order = r.order;
       what = "the solver's collision-free order";
     } else {
       for (CouplingId q = 0; q < inst.couplings().size(); ++q) order.push_back(q);
-      what = std::string("the couplings in file order (the solver answered ") + solve_status_name(r.status) + ")";
+      what = std::string("the couplings in file order (the solver answered ") + verdict_name(r.status) + ")";
     }
     sched = schedule_from_order(order);
   }

@@ -5,8 +5,8 @@
 
 #include "lattice/motion.hpp"
 #include "reductions/compile.hpp"
-#include "reductions/verify.hpp"
 #include "tools/cli_common.hpp"
+#include "verify/verify.hpp"
 
 namespace gridlock {
 

@@ -333,7 +333,7 @@ int run_solve(const std::vector<std::string>& args) {
   std::snprintf(secs, sizeof secs, "%.3f", r.seconds);
   ans.comment("solver: " + name + (solver == "cadical" ? std::string(", ") + secs + " s" : ""));
   ans.data()["solver"] = name;
-  if (r.status == SatResult::Sat) {
+  if (r.status == Verdict::Yes) {
     if (!satisfies(f, r.model)) throw std::logic_error(name + " returned a model that falsifies the formula");
     ans.comment("model checked: every clause has a true literal");
     std::vector<int> lits = model_literals(r.model, f.num_vars);
@@ -341,10 +341,7 @@ int run_solve(const std::vector<std::string>& args) {
     ans.witness("0");
     ans.data()["model"] = lits;
   }
-  const Verdict v = r.status == SatResult::Sat     ? Verdict::Yes
-                    : r.status == SatResult::Unsat ? Verdict::No
-                                                   : Verdict::Unknown;
-  return ans.finish(v, status_name(r.status));
+  return ans.finish(r.status, sat_status_name(r.status));
 }
 
 // ---------------------------------------------------------------- dispatch

@@ -1,5 +1,5 @@
 // gridlock fuzz: hunt for a formula on which the reduction, the solvers or a
-// certificate disagree (reductions/fuzz.hpp, docs/verify.md). Deterministic
+// certificate disagree (verify/fuzz.hpp, docs/verify.md). Deterministic
 // from --seed; --shard K/N splits a campaign across processes or machines.
 #include <malloc.h>
 #include <unistd.h>
@@ -14,11 +14,11 @@
 
 #include "cnf/dimacs.hpp"
 #include "common/limits.hpp"
-#include "reductions/fuzz.hpp"
 #include "tools/animate_page.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "verify/fuzz.hpp"
 
 namespace gridlock {
 namespace {
@@ -146,8 +146,8 @@ int run_fuzz(const std::vector<std::string>& args) {
     VerifyResult r = verify_formula(f, "formula " + std::to_string(i), vi);
     if (stop_requested()) break;  // answers may be cut short: the formula is not counted
     ++done;
-    sat += r.sat == Tri::Yes;
-    unsat += r.sat == Tri::No;
+    sat += r.sat == Verdict::Yes;
+    unsat += r.sat == Verdict::No;
     unknown += r.agree && r.solver_unknown();
     certificates += static_cast<uint64_t>(r.witnesses_checked());
     if (!r.agree) {

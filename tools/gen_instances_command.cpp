@@ -21,11 +21,11 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
-#include "reductions/fuzz.hpp"
 #include "reductions/to_lsat.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "verify/fuzz.hpp"
 
 namespace gridlock {
 namespace {
@@ -181,13 +181,13 @@ int run_gen_instances(const std::vector<std::string>& args) {
     SatResult sat = solve_sat(s.formula, limits);
     if (progress) std::cerr << "\r\033[K" << std::flush;
     if (stop_requested()) return false;
-    if (sat.status == SatResult::Unknown) {
+    if (sat.status == Verdict::Unknown) {
       ++skipped;
       std::cout << "c " << s.name << ": skipped, CaDiCaL did not decide it within --timeout " << timeout << " s"
                 << std::endl;
       return false;
     }
-    const bool is_yes = sat.status == SatResult::Sat;
+    const bool is_yes = sat.status == Verdict::Yes;
     if (random && mix && ((is_yes && want_yes >= 0 && yes >= want_yes) || (!is_yes && want_no >= 0 && no >= want_no)))
       return false;
     LsatReduction red = reduce_to_lsat(s.formula);

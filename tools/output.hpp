@@ -15,16 +15,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/verdict.hpp"
+
 namespace gridlock {
 
 struct Collision;
 struct Regions;
 class Instance;
 struct Schedule;
-
-enum class Verdict { Yes, No, Unknown };
-
-inline int exit_code(Verdict v) { return v == Verdict::Yes ? 10 : v == Verdict::No ? 20 : 0; }
 
 class Answer {
  public:

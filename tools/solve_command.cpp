@@ -28,10 +28,6 @@ nlohmann::json stats_json(const SolveStats& st) {
           {"constraints", st.constraints}, {"seconds", st.seconds}};
 }
 
-Verdict verdict_of(SolveResult::Status s) {
-  return s == SolveResult::Status::Yes ? Verdict::Yes : s == SolveResult::Status::No ? Verdict::No : Verdict::Unknown;
-}
-
 int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, bool json) {
   Answer ans("solve", json);
   ans.witness_one_per_line();
@@ -49,16 +45,16 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
                 std::to_string(st.refuted));
   }
   ans.comment("time " + fixed(st.seconds, 3) + " s");
-  if (r.status == SolveResult::Status::Yes) ans.comment("start times checked by the simulator: collision-free");
-  if (r.status == SolveResult::Status::Unknown) ans.comment("limit reached before an answer");
-  if (r.status == SolveResult::Status::Yes)
+  if (r.status == Verdict::Yes) ans.comment("start times checked by the simulator: collision-free");
+  if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
+  if (r.status == Verdict::Yes)
     for (CouplingId q = 0; q < inst.couplings().size(); ++q)
       ans.witness(inst.couplings()[q].name + " " + r.schedule.start[q].str());
   nlohmann::json& d = ans.data();
   d["model"] = "continuous";
   d["engine"] = st.engine;
   d["stats"] = stats_json(st);
-  return ans.finish(verdict_of(r.status));
+  return ans.finish(r.status);
 }
 
 int run_solve(const std::vector<std::string>& args) {
@@ -132,15 +128,15 @@ int run_solve(const std::vector<std::string>& args) {
                 std::to_string(st.propagations) + ", memo hits " + std::to_string(st.memo_hits));
   }
   ans.comment("time " + fixed(st.seconds, 3) + " s");
-  if (r.status == SolveResult::Status::Yes) ans.comment("order checked by the simulator: collision-free");
-  if (r.status == SolveResult::Status::Unknown) ans.comment("limit reached before an answer");
+  if (r.status == Verdict::Yes) ans.comment("order checked by the simulator: collision-free");
+  if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
   for (CouplingId q : r.order) ans.witness(inst.couplings()[q].name);
   nlohmann::json& d = ans.data();
   d["engine"] = st.engine;
   d["model"] = "discrete";
   d["stats"] = stats_json(st);
   if (r.cycle_breaker != kNone) d["cycle_breaker"] = inst.couplings()[r.cycle_breaker].name;
-  return ans.finish(verdict_of(r.status));
+  return ans.finish(r.status);
 }
 
 Command reg{"solve", "decide Collision-free Schedule exactly, discrete or continuous (any instance)", run_solve};

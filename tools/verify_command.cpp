@@ -1,6 +1,6 @@
 // gridlock verify: is the reduction right on these formulas? CaDiCaL vs the
 // exact discrete solver vs the gap checker, every certificate checked
-// (reductions/verify.hpp, docs/verify.md).
+// (verify/verify.hpp, docs/verify.md).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -15,11 +15,11 @@
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
-#include "reductions/verify.hpp"
 #include "tools/animate_page.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "verify/verify.hpp"
 
 namespace gridlock {
 namespace {
@@ -58,7 +58,7 @@ std::string fmt_ms(double ms) {
   return s.str();
 }
 
-std::string sat_word(Tri t) { return t == Tri::Yes ? "SAT" : t == Tri::No ? "UNSAT" : "?"; }
+std::string sat_word(Verdict t) { return t == Verdict::Yes ? "SAT" : t == Verdict::No ? "UNSAT" : "?"; }
 
 // Pictures of a small compiled instance and of its witness (or, for an
 // unsatisfiable formula, of one lifted schedule's collision).
@@ -186,8 +186,8 @@ int run_verify(const std::vector<std::string>& args) {
     if (stop_requested()) break;  // its answers may be cut short: not counted
     ++done;
     witnesses += static_cast<size_t>(r.witnesses_checked());
-    sat += r.sat == Tri::Yes;
-    unsat += r.sat == Tri::No;
+    sat += r.sat == Verdict::Yes;
+    unsat += r.sat == Verdict::No;
     total_ms += r.ms_sat + r.ms_compile + r.ms_solve + r.ms_gaps + r.ms_csolve;
     const bool unknown_answer = r.solver_unknown();
     std::string status = r.agree ? (unknown_answer ? "unknown" : "agree") : "DISAGREE";
@@ -212,9 +212,9 @@ int run_verify(const std::vector<std::string>& args) {
                       {"operations", r.ops},
                       {"couplings", r.couplings},
                       {"max_coupling", r.max_coupling},
-                      {"sat", tri_name(r.sat)},
-                      {"discrete", tri_name(r.discrete)},
-                      {"continuous", tri_name(r.continuous)},
+                      {"sat", verdict_name(r.sat)},
+                      {"discrete", verdict_name(r.discrete)},
+                      {"continuous", verdict_name(r.continuous)},
                       {"witnesses_checked", r.witnesses_checked()},
                       {"solver_states", r.solver_states},
                       {"ms_sat", r.ms_sat},
@@ -226,7 +226,7 @@ int run_verify(const std::vector<std::string>& args) {
       if (with_continuous) {
         auto& row = rows.back();
         row["continuous_nodes"] = r.cnodes;
-        row["continuous_solver"] = tri_name(r.continuous_solver);
+        row["continuous_solver"] = verdict_name(r.continuous_solver);
         row["continuous_solver_conflicts"] = r.csolver_conflicts;
         row["ms_continuous_solve"] = r.ms_csolve;
       }
@@ -242,12 +242,12 @@ int run_verify(const std::vector<std::string>& args) {
       out << std::left << std::setw(w) << name << std::right << std::setw(5) << r.source.num_vars << std::setw(8)
           << r.source.clauses.size() << std::setw(8) << (with_discrete ? r.nodes : r.cnodes) << std::setw(7)
           << r.couplings << std::setw(7) << sat_word(r.sat) << std::setw(9)
-          << (with_discrete ? tri_name(r.discrete) : "-") << std::setw(7)
-          << (with_discrete ? tri_name(r.continuous) : "-");
-      if (with_continuous) out << std::setw(9) << tri_name(r.continuous_solver);
-      const int expected = with_discrete *
-                               ((r.sat == Tri::Yes) + (r.discrete == Tri::Yes) + (r.continuous == Tri::Yes)) +
-                           with_continuous * ((r.sat == Tri::Yes) + (r.continuous_solver == Tri::Yes));
+          << (with_discrete ? verdict_name(r.discrete) : "-") << std::setw(7)
+          << (with_discrete ? verdict_name(r.continuous) : "-");
+      if (with_continuous) out << std::setw(9) << verdict_name(r.continuous_solver);
+      const int expected = with_discrete * ((r.sat == Verdict::Yes) + (r.discrete == Verdict::Yes) +
+                                            (r.continuous == Verdict::Yes)) +
+                           with_continuous * ((r.sat == Verdict::Yes) + (r.continuous_solver == Verdict::Yes));
       out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(10)
           << (with_discrete ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/"
           << fmt_ms(r.ms_compile) << "/" << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps)

@@ -36,9 +36,9 @@ int main(int argc, char** argv) {
   gridlock::SolveOptions options;
   options.seconds = 60;
   const gridlock::SolveResult result = gridlock::solve_discrete(compiled.instance, options);
-  std::cout << "solve     " << gridlock::solve_status_name(result.status) << " (" << result.stats.engine << ")\n";
-  if (result.status == gridlock::SolveResult::Status::Unknown) return 0;
-  if (result.status == gridlock::SolveResult::Status::No) return 20;
+  std::cout << "solve     " << gridlock::verdict_name(result.status) << " (" << result.stats.engine << ")\n";
+  if (result.status == gridlock::Verdict::Unknown) return 0;
+  if (result.status == gridlock::Verdict::No) return 20;
 
   // The witness is checked by an independent path: the simulator runs the
   // order, and the lifted assignment is evaluated on the input formula.

@@ -27,14 +27,12 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "common/verdict.hpp"
 #include "gadgets/mutation.hpp"
 #include "lattice/instance.hpp"
 #include "reductions/compile.hpp"
 
 namespace gridlock {
-
-enum class Tri { Yes, No, Unknown };
-const char* tri_name(Tri t);  // "YES", "NO", "UNKNOWN"
 
 // Which reductions verify checks: the discrete one (exact discrete solver and
 // gap checker), the continuous one (exact continuous solver), or both.
@@ -64,7 +62,7 @@ struct VerifyResult {
   CompiledFormula compiled;  // G compiled (with the mutation, if any): the instance checked
   const Instance& instance() const { return compiled.instance; }
   size_t nodes = 0, ops = 0, couplings = 0, max_coupling = 0;
-  Tri sat = Tri::Unknown, discrete = Tri::Unknown, continuous = Tri::Unknown;
+  Verdict sat = Verdict::Unknown, discrete = Verdict::Unknown, continuous = Verdict::Unknown;
   Check sat_witness = Check::None;                         // F's model -> schedule -> simulator
   Check solver_witness = Check::None;                      // solver's schedule -> assignment -> F
   Check gaps_witness = Check::None;                        // gaps YES: all couplings at time 0 -> simulator
@@ -72,7 +70,7 @@ struct VerifyResult {
   // The continuous reduction (when VerifyOptions::model asks for it).
   bool ran_discrete = false, ran_continuous = false;
   CompiledFormula compiled_continuous;                 // G compiled for continuous time
-  Tri continuous_solver = Tri::Unknown;                // the exact continuous solver on it
+  Verdict continuous_solver = Verdict::Unknown;        // the exact continuous solver on it
   Check csat_witness = Check::None;                    // F's model -> start times -> simulator
   Check csolver_witness = Check::None;                 // solver's start times -> simulator -> assignment -> F
   std::string csolver_issue;                           // why csolver_witness is Invalid
@@ -88,7 +86,7 @@ struct VerifyResult {
   int witnesses_checked() const;
   // Some exact solver that ran hit a limit (UNKNOWN).
   bool solver_unknown() const {
-    return (ran_discrete && discrete == Tri::Unknown) || (ran_continuous && continuous_solver == Tri::Unknown);
+    return (ran_discrete && discrete == Verdict::Unknown) || (ran_continuous && continuous_solver == Verdict::Unknown);
   }
 };
 

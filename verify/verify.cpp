@@ -1,4 +1,4 @@
-#include "reductions/verify.hpp"
+#include "verify/verify.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -21,8 +21,6 @@
 #include "solver/solve.hpp"
 
 namespace gridlock {
-
-const char* tri_name(Tri t) { return t == Tri::Yes ? "YES" : t == Tri::No ? "NO" : "UNKNOWN"; }
 
 const char* verify_model_name(VerifyModel m) {
   return m == VerifyModel::Discrete ? "discrete" : m == VerifyModel::Continuous ? "continuous" : "both";
@@ -51,7 +49,7 @@ std::vector<std::string> names_of(const Instance& inst, const std::vector<Coupli
   return out;
 }
 
-Tri tri(bool yes) { return yes ? Tri::Yes : Tri::No; }
+Verdict tri(bool yes) { return yes ? Verdict::Yes : Verdict::No; }
 
 std::vector<std::string> times_of(const Instance& inst, const Schedule& s) {
   std::vector<std::string> out;
@@ -82,7 +80,7 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
   r.couplings = c.stats.couplings;  // the same in both reductions
   r.max_coupling = c.stats.max_coupling;
   Simulator sim(inst);
-  if (r.sat == Tri::Yes) {
+  if (r.sat == Verdict::Yes) {
     Schedule s = times_from_assignment(c, red.lift_to_target(sat.model));
     r.csat_times = times_of(inst, s);
     r.csat_witness = sim.run(s).collision ? Check::Invalid : Check::Valid;
@@ -94,10 +92,8 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
   ContinuousResult cr = solve_continuous(inst, so);
   r.ms_csolve = ms_since(t0);
   r.csolver_conflicts = cr.stats.refuted;
-  r.continuous_solver = cr.status == SolveResult::Status::Yes  ? Tri::Yes
-                        : cr.status == SolveResult::Status::No ? Tri::No
-                                                               : Tri::Unknown;
-  if (r.continuous_solver == Tri::Yes) {
+  r.continuous_solver = cr.status;
+  if (r.continuous_solver == Verdict::Yes) {
     r.csolver_times = times_of(inst, cr.schedule);
     // The solver replays its schedule itself; replay it here too, then lift.
     if (check_schedule_bounds(inst, cr.schedule) || sim.run(cr.schedule).collision)
@@ -110,9 +106,9 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
 
 template <class F>
 void append_continuous_problems(const VerifyResult& r, F&& problem) {
-  if (r.continuous_solver != Tri::Unknown && r.sat != Tri::Unknown && r.continuous_solver != r.sat)
-    problem(std::string("exact continuous solver says ") + tri_name(r.continuous_solver) + ", CaDiCaL says " +
-            (r.sat == Tri::Yes ? "SAT" : "UNSAT"));
+  if (r.continuous_solver != Verdict::Unknown && r.sat != Verdict::Unknown && r.continuous_solver != r.sat)
+    problem(std::string("exact continuous solver says ") + verdict_name(r.continuous_solver) + ", CaDiCaL says " +
+            (r.sat == Verdict::Yes ? "SAT" : "UNSAT"));
   if (r.csat_witness == Check::Invalid) problem("the SAT model's start times collide in the simulator (continuous)");
   if (r.csolver_witness == Check::Invalid) problem(r.csolver_issue);
 }
@@ -128,7 +124,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   auto t0 = std::chrono::steady_clock::now();
   SatResult sat = solve_sat(f);
   r.ms_sat = ms_since(t0);
-  r.sat = sat.status == SatResult::Sat ? Tri::Yes : sat.status == SatResult::Unsat ? Tri::No : Tri::Unknown;
+  r.sat = sat.status;
 
   // 2. to-lsat if needed, compile.
   t0 = std::chrono::steady_clock::now();
@@ -149,7 +145,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   if (opt.model == VerifyModel::Continuous) {
     std::string p;
     auto problem = [&](const std::string& x) { p += (p.empty() ? "" : "; ") + x; };
-    if (r.sat == Tri::Unknown) problem("CaDiCaL gave no answer");
+    if (r.sat == Verdict::Unknown) problem("CaDiCaL gave no answer");
     append_continuous_problems(r, problem);
     r.problem = p;
     r.agree = p.empty();
@@ -171,7 +167,7 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   Simulator sim(prep);
 
   // Certificate: the SAT model, lifted to a schedule, through the simulator.
-  if (r.sat == Tri::Yes) {
+  if (r.sat == Verdict::Yes) {
     std::vector<CouplingId> order = schedule_from_assignment(c, red.lift_to_target(sat.model));
     r.sat_schedule = names_of(inst, order);
     r.sat_witness = sim.run_order(order).collision ? Check::Invalid : Check::Valid;
@@ -185,10 +181,8 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   SolveResult sr = solve_discrete(prep, so, &sim);
   r.ms_solve = ms_since(t0);
   r.solver_states = sr.stats.states;
-  r.discrete = sr.status == SolveResult::Status::Yes  ? Tri::Yes
-               : sr.status == SolveResult::Status::No ? Tri::No
-                                                      : Tri::Unknown;
-  if (r.discrete == Tri::Yes) {
+  r.discrete = sr.status;
+  if (r.discrete == Verdict::Yes) {
     r.solver_schedule = names_of(inst, sr.order);
     std::vector<bool> back = red.lift_to_source(assignment_from_schedule(c, sr.order));
     r.solver_witness = satisfies(f, back) ? Check::Valid : Check::Invalid;
@@ -208,11 +202,11 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   // Compare.
   std::string p;
   auto problem = [&](const std::string& s) { p += (p.empty() ? "" : "; ") + s; };
-  if (r.sat == Tri::Unknown) problem("CaDiCaL gave no answer");
-  if (r.discrete != Tri::Unknown && r.sat != Tri::Unknown && r.discrete != r.sat)
-    problem(std::string("exact solver says ") + tri_name(r.discrete) + ", CaDiCaL says " +
-            (r.sat == Tri::Yes ? "SAT" : "UNSAT"));
-  if (r.continuous != Tri::Yes)
+  if (r.sat == Verdict::Unknown) problem("CaDiCaL gave no answer");
+  if (r.discrete != Verdict::Unknown && r.sat != Verdict::Unknown && r.discrete != r.sat)
+    problem(std::string("exact solver says ") + verdict_name(r.discrete) + ", CaDiCaL says " +
+            (r.sat == Verdict::Yes ? "SAT" : "UNSAT"));
+  if (r.continuous != Verdict::Yes)
     problem("gap checker says the continuous model collides: " + describe_gap_verdict(inst, gv));
   if (r.sat_witness == Check::Invalid) problem("the SAT model's schedule collides in the simulator");
   if (r.solver_witness == Check::Invalid)
@@ -262,9 +256,10 @@ std::string write_reproducer(const VerifyResult& r, const std::string& dir, cons
   if (opt.direct) flags += " --direct";
   write(
       "README.txt",
-      "gridlock verify found a disagreement on " + r.name + ":\n  " + r.problem + "\n\nCaDiCaL: " + tri_name(r.sat) +
-          "  exact solver: " + tri_name(r.discrete) + "  gap checker: " + tri_name(r.continuous) +
-          (r.ran_continuous ? std::string("  exact continuous solver: ") + tri_name(r.continuous_solver)
+      "gridlock verify found a disagreement on " + r.name + ":\n  " + r.problem +
+          "\n\nCaDiCaL: " + verdict_name(r.sat) + "  exact solver: " + verdict_name(r.discrete) +
+          "  gap checker: " + verdict_name(r.continuous) +
+          (r.ran_continuous ? std::string("  exact continuous solver: ") + verdict_name(r.continuous_solver)
                             : std::string()) +
           "\n\nformula.cnf          the formula\n"
           "lsat.cnf             its LSAT<=3 form (the compiled one)\n" +

@@ -1,4 +1,4 @@
-#include "reductions/fuzz.hpp"
+#include "verify/fuzz.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "reductions/shrink.hpp"
+#include "verify/shrink.hpp"
 
 #include <algorithm>
 #include <optional>

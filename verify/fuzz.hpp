@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
-#include "reductions/shrink.hpp"
-#include "reductions/verify.hpp"
+#include "verify/shrink.hpp"
+#include "verify/verify.hpp"
 
 namespace gridlock {
 
@@ -36,7 +36,7 @@ uint64_t fuzz_formula_seed(uint64_t seed, uint64_t index);
 // Deterministic. O(n + m).
 Formula fuzz_formula(const FuzzParams& p, uint64_t index);
 
-// A formula on which verify disagrees, shrunk (reductions/shrink.hpp) while
+// A formula on which verify disagrees, shrunk (verify/shrink.hpp) while
 // it still disagrees; UNKNOWN answers count as agreement, so the shrunk
 // formula disagrees for sure. Requires !verify_formula(f, ...).agree.
 Formula shrink_disagreement(const Formula& f, const VerifyOptions& opt, ShrinkStats* stats = nullptr);
