@@ -468,6 +468,48 @@ std::string escape_html(const std::string& s) {
   return out;
 }
 
+// The moving parts: [parent, coupling, then (event, dx, dy) per key frame].
+nlohmann::json parts_json(const Animation& a) {
+  using nlohmann::json;
+  json parts = json::array();
+  for (const auto& p : a.parts) {
+    json row = json::array({p.parent == kNone ? -1 : static_cast<int64_t>(p.parent),
+                            p.coupling == kNone ? -1 : static_cast<int64_t>(p.coupling)});
+    for (size_t j = 0; j < p.key_event.size(); ++j)
+      row.push_back(p.key_event[j]), row.push_back(p.key_disp[j].x), row.push_back(p.key_disp[j].y);
+    parts.push_back(std::move(row));
+  }
+  return parts;
+}
+
+// Regions whose faces follow different nodes or grow: drawn on their own.
+nlohmann::json resizing_json(const Regions& regions) {
+  using nlohmann::json;
+  json resizing = json::array();
+  for (uint32_t r = 0; r < regions.size(); ++r) {
+    const RegionShape& sh = regions.shapes[r];
+    bool rigid = sh.kind == RegionKind::Node && sh.grow_op == kNone;
+    for (int f = 0; f < 4; ++f) rigid = rigid && sh.ref[f] == sh.ref[0];
+    if (rigid) continue;
+    int kind = sh.kind == RegionKind::Node ? 0 : sh.kind == RegionKind::Inserted ? 1 : 2;
+    int64_t op = sh.kind == RegionKind::Node ? -1 : static_cast<int64_t>(sh.id);
+    resizing.push_back(json::array({r, kind, op, sh.base[0], sh.base[1], sh.base[2], sh.base[3], sh.ref[0], sh.ref[1],
+                                    sh.ref[2], sh.ref[3], sh.grow_face, sh.grow_sign}));
+  }
+  return resizing;
+}
+
+// Inside <script>, "</" could end the element: escape it (JSON allows "\/").
+std::string script_safe(const std::string& data) {
+  std::string safe;
+  safe.reserve(data.size());
+  for (size_t i = 0; i < data.size(); ++i) {
+    if (data[i] == '<' && i + 1 < data.size() && data[i + 1] == '/') safe += "<\\";
+    else safe += data[i];
+  }
+  return safe;
+}
+
 }  // namespace
 
 std::string animation_html(const Instance& inst, const Schedule& s, const Animation& a, const std::string& title) {
@@ -485,28 +527,8 @@ std::string animation_html(const Instance& inst, const Schedule& s, const Animat
   d["cells"] = std::move(cells);
   d["anchor"] = inst.anchor();
   d["part_of_node"] = a.part_of_node;
-  json parts = json::array();
-  for (const auto& p : a.parts) {
-    json row = json::array({p.parent == kNone ? -1 : static_cast<int64_t>(p.parent),
-                            p.coupling == kNone ? -1 : static_cast<int64_t>(p.coupling)});
-    for (size_t j = 0; j < p.key_event.size(); ++j)
-      row.push_back(p.key_event[j]), row.push_back(p.key_disp[j].x), row.push_back(p.key_disp[j].y);
-    parts.push_back(std::move(row));
-  }
-  d["parts"] = std::move(parts);
-  // Regions whose faces follow different nodes or grow: drawn on their own.
-  json resizing = json::array();
-  for (uint32_t r = 0; r < regions.size(); ++r) {
-    const RegionShape& sh = regions.shapes[r];
-    bool rigid = sh.kind == RegionKind::Node && sh.grow_op == kNone;
-    for (int f = 0; f < 4; ++f) rigid = rigid && sh.ref[f] == sh.ref[0];
-    if (rigid) continue;
-    int kind = sh.kind == RegionKind::Node ? 0 : sh.kind == RegionKind::Inserted ? 1 : 2;
-    int64_t op = sh.kind == RegionKind::Node ? -1 : static_cast<int64_t>(sh.id);
-    resizing.push_back(json::array({r, kind, op, sh.base[0], sh.base[1], sh.base[2], sh.base[3], sh.ref[0], sh.ref[1],
-                                    sh.ref[2], sh.ref[3], sh.grow_face, sh.grow_sign}));
-  }
-  d["resizing"] = std::move(resizing);
+  d["parts"] = parts_json(a);
+  d["resizing"] = resizing_json(regions);
   json ops = json::array();
   for (const Operation& op : inst.ops())
     ops.push_back(json::array(
@@ -540,14 +562,7 @@ std::string animation_html(const Instance& inst, const Schedule& s, const Animat
   } else {
     d["collision"] = nullptr;
   }
-  std::string data = d.dump();
-  // Inside <script>, "</" could end the element: escape it (JSON allows "\/").
-  std::string safe;
-  safe.reserve(data.size());
-  for (size_t i = 0; i < data.size(); ++i) {
-    if (data[i] == '<' && i + 1 < data.size() && data[i + 1] == '/') safe += "<\\";
-    else safe += data[i];
-  }
+  const std::string safe = script_safe(d.dump());
   std::string head = kPageHead;
   const std::string mark = "__GRIDLOCK_TITLE__";
   head.replace(head.find(mark), mark.size(), escape_html(title));

@@ -8,8 +8,9 @@
 namespace gridlock {
 namespace {
 
-int run_collide(const std::vector<std::string>& args) {
-  namespace po = boost::program_options;
+namespace po = boost::program_options;
+
+po::options_description collide_options() {
   po::options_description opts("options");
   opts.add_options()("help,h", "show this help")("model", po::value<std::string>()->default_value("continuous"),
                                                  "time model: continuous or discrete")(
@@ -18,52 +19,27 @@ int run_collide(const std::vector<std::string>& args) {
       "pairwise (any instance: exact per-pair tests)")(
       "svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")(
       "json", "print one JSON object instead of c/s/v lines");
-  po::variables_map vm;
-  if (!cli::parse_args_one_input(
-          args, opts, "instance", vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
-          "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
-          "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
-          "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
-          "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
-          "s NO (exit 20): no schedule collides."))
-    return 0;
-  const std::string model_name = vm["model"].as<std::string>();
-  TimeModel model;
-  if (model_name == "continuous") model = TimeModel::Continuous;
-  else if (model_name == "discrete") model = TimeModel::Discrete;
-  else throw UserError("--model must be 'continuous' or 'discrete', not '" + model_name + "'");
-  const std::string method_name = vm["method"].as<std::string>();
-  CollideMethod method;
-  if (method_name == "auto") method = CollideMethod::Auto;
-  else if (method_name == "tree") method = CollideMethod::Tree;
-  else if (method_name == "tree-pairwise") method = CollideMethod::TreePairwise;
-  else if (method_name == "pairwise") method = CollideMethod::Pairwise;
-  else throw UserError("--method must be auto, tree, tree-pairwise or pairwise, not '" + method_name + "'");
+  return opts;
+}
 
-  const std::string path = vm["instance"].as<std::string>();
-  if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
-  Instance inst = cli::load_instance(path);
-  Answer ans("collide", vm.count("json") > 0);
-  ans.comment("gridlock collide " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
-              std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
-              " couplings; " + model_name + " model");
-  CollideResult res;
-  try {
-    res = find_collision(inst, model, method);
-  } catch (const std::invalid_argument& e) {
-    throw UserError(e.what());
-  }
-  ans.comment("algorithm: " + res.algorithm + " (" + res.complexity + ")");
-  if (res.stats.pairs)
-    ans.comment("pairs: " + std::to_string(res.stats.pairs) + " considered, " + std::to_string(res.stats.full_tests) +
-                " tested in full");
-  if (res.stats.levels)
-    ans.comment("centroid levels: " + std::to_string(res.stats.levels) +
-                ", rectangles swept: " + std::to_string(res.stats.rectangles));
-  ans.data()["model"] = model_name;
-  ans.data()["algorithm"] = res.algorithm;
-  if (!res.collides) return ans.finish(Verdict::No);
+TimeModel time_model_arg(const std::string& name) {
+  if (name == "continuous") return TimeModel::Continuous;
+  if (name == "discrete") return TimeModel::Discrete;
+  throw UserError("--model must be 'continuous' or 'discrete', not '" + name + "'");
+}
 
+CollideMethod method_arg(const std::string& name) {
+  if (name == "auto") return CollideMethod::Auto;
+  if (name == "tree") return CollideMethod::Tree;
+  if (name == "tree-pairwise") return CollideMethod::TreePairwise;
+  if (name == "pairwise") return CollideMethod::Pairwise;
+  throw UserError("--method must be auto, tree, tree-pairwise or pairwise, not '" + name + "'");
+}
+
+// A colliding schedule found: what was predicted, the simulator's collision,
+// the picture and the witness (s YES).
+int report_collision(Answer& ans, const Instance& inst, const CollideResult& res, TimeModel model,
+                     const po::variables_map& vm) {
   Regions regions = Regions::build(inst);
   if (!res.cycle.empty()) {
     std::string walk;
@@ -93,6 +69,47 @@ int run_collide(const std::vector<std::string>& args) {
     ans.data()["times"] = times;
   }
   return ans.finish(Verdict::Yes);
+}
+
+int run_collide(const std::vector<std::string>& args) {
+  po::options_description opts = collide_options();
+  po::variables_map vm;
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
+          "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
+          "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
+          "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
+          "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
+          "s NO (exit 20): no schedule collides."))
+    return 0;
+  const std::string model_name = vm["model"].as<std::string>();
+  const TimeModel model = time_model_arg(model_name);
+  const CollideMethod method = method_arg(vm["method"].as<std::string>());
+
+  const std::string path = vm["instance"].as<std::string>();
+  if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
+  Instance inst = cli::load_instance(path);
+  Answer ans("collide", vm.count("json") > 0);
+  ans.comment("gridlock collide " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
+              std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
+              " couplings; " + model_name + " model");
+  CollideResult res;
+  try {
+    res = find_collision(inst, model, method);
+  } catch (const std::invalid_argument& e) {
+    throw UserError(e.what());
+  }
+  ans.comment("algorithm: " + res.algorithm + " (" + res.complexity + ")");
+  if (res.stats.pairs)
+    ans.comment("pairs: " + std::to_string(res.stats.pairs) + " considered, " + std::to_string(res.stats.full_tests) +
+                " tested in full");
+  if (res.stats.levels)
+    ans.comment("centroid levels: " + std::to_string(res.stats.levels) +
+                ", rectangles swept: " + std::to_string(res.stats.rectangles));
+  ans.data()["model"] = model_name;
+  ans.data()["algorithm"] = res.algorithm;
+  if (!res.collides) return ans.finish(Verdict::No);
+  return report_collision(ans, inst, res, model, vm);
 }
 
 Command reg{"collide", "Colliding Schedule: find a schedule that collides, or show that none does", run_collide};

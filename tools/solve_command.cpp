@@ -57,62 +57,13 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   return ans.finish(r.status);
 }
 
-int run_solve(const std::vector<std::string>& args) {
-  const Deadline since_start;  // --timeout counts from here: reading the instance is part of it
-  namespace po = boost::program_options;
-  po::options_description opts("options");
-  opts.add_options()("help,h", "show this help")("timeout", po::value<std::string>(),
-                                                 "give up after S seconds (s UNKNOWN, exit 0)")(
-      "max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")(
-      "model", po::value<std::string>()->default_value("discrete"),
-      "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
-      "engine", po::value<std::string>()->default_value("auto"),
-      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")(
-      "json", "print one JSON object instead of c/s/v lines");
-  po::variables_map vm;
-  if (!cli::parse_args_one_input(
-          args, opts, "instance", vm,
-          "solve INSTANCE.grid [--model discrete|continuous] [--timeout S] [--max-states N] [--json]",
-          "Collision-free Schedule, exactly. Discrete (default): is there an order of the couplings,\n"
-          "run one at a time, with no collision? s YES (exit 10) with the order as v lines (checked by\n"
-          "the simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
-          "exhaustive search, s UNKNOWN (exit 0) when a limit is reached.\n"
-          "Continuous (--model continuous): are there start times (couplings may overlap) with no\n"
-          "collision? s YES with lines 'v NAME TIME' (exact rationals, checked by the simulator;\n"
-          "'gridlock check --times' reads them back), s NO only when proved (Z3, exact), s UNKNOWN on\n"
-          "a limit (--max-states bounds Z3's conflicts)."))
-    return 0;
-  SolveOptions opt;
-  opt.seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
-  opt.max_states = cli::count_arg_opt(vm, "max-states").value_or(0);
-  opt.progress = !vm.count("json") && isatty(STDERR_FILENO);
-  const std::string engine = vm["engine"].as<std::string>();
-  if (engine == "auto") opt.engine = SolveOptions::Engine::Auto;
-  else if (engine == "states") opt.engine = SolveOptions::Engine::States;
-  else if (engine == "precedence") opt.engine = SolveOptions::Engine::Precedence;
-  else if (engine == "sat") opt.engine = SolveOptions::Engine::Sat;
-  else throw UserError("--engine must be auto, states, precedence or sat, not '" + engine + "'");
-
-  const std::string model = vm["model"].as<std::string>();
-  if (model != "discrete" && model != "continuous")
-    throw UserError("--model must be discrete or continuous, not '" + model + "'");
-  if (model == "continuous" && !vm["engine"].defaulted()) throw UserError("--engine applies to --model discrete only");
-
-  const std::string path = vm["instance"].as<std::string>();
-  // Kept until the process ends (reachable, so no leak report): freeing an
-  // instance of a million nodes takes a noticeable part of a short --timeout.
-  // volatile: the store must stay, or the optimiser drops it and
-  // LeakSanitizer sees the instance as leaked.
-  static Instance* volatile kept = nullptr;
-  kept = new Instance(cli::load_instance(path));
-  const Instance& inst = *kept;
-  cli::Activity act(path, "solving the instance");
-  if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
-  if (model == "continuous") return run_continuous(path, inst, opt, vm.count("json") > 0);
+// The discrete solver on inst (--engine engine_name, already in opt).
+int run_discrete(const std::string& path, const Instance& inst, const SolveOptions& opt, const std::string& engine_name,
+                 bool json) {
   if ((opt.engine == SolveOptions::Engine::Precedence || opt.engine == SolveOptions::Engine::Sat) &&
       !inst.horizontal_only())
-    throw UserError(path + ": --engine " + engine + " needs a horizontal-only instance");
-  Answer ans("solve", vm.count("json") > 0);
+    throw UserError(path + ": --engine " + engine_name + " needs a horizontal-only instance");
+  Answer ans("solve", json);
   ans.comment("gridlock solve " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
               " couplings" + (inst.horizontal_only() ? ", horizontal-only" : ""));
@@ -137,6 +88,74 @@ int run_solve(const std::vector<std::string>& args) {
   d["stats"] = stats_json(st);
   if (r.cycle_breaker != kNone) d["cycle_breaker"] = inst.couplings()[r.cycle_breaker].name;
   return ans.finish(r.status);
+}
+
+namespace po = boost::program_options;
+
+po::options_description solve_options() {
+  po::options_description opts("options");
+  opts.add_options()("help,h", "show this help")("timeout", po::value<std::string>(),
+                                                 "give up after S seconds (s UNKNOWN, exit 0)")(
+      "max-states", po::value<std::string>(), "give up after N search nodes (s UNKNOWN, exit 0)")(
+      "model", po::value<std::string>()->default_value("discrete"),
+      "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
+      "engine", po::value<std::string>()->default_value("auto"),
+      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")(
+      "json", "print one JSON object instead of c/s/v lines");
+  return opts;
+}
+
+const char* const kSolveDescription =
+    "Collision-free Schedule, exactly. Discrete (default): is there an order of the couplings,\n"
+    "run one at a time, with no collision? s YES (exit 10) with the order as v lines (checked by\n"
+    "the simulator; 'gridlock check --order-file' reads it back), s NO (exit 20) after an\n"
+    "exhaustive search, s UNKNOWN (exit 0) when a limit is reached.\n"
+    "Continuous (--model continuous): are there start times (couplings may overlap) with no\n"
+    "collision? s YES with lines 'v NAME TIME' (exact rationals, checked by the simulator;\n"
+    "'gridlock check --times' reads them back), s NO only when proved (Z3, exact), s UNKNOWN on\n"
+    "a limit (--max-states bounds Z3's conflicts).";
+
+SolveOptions::Engine engine_arg(const std::string& engine) {
+  if (engine == "auto") return SolveOptions::Engine::Auto;
+  if (engine == "states") return SolveOptions::Engine::States;
+  if (engine == "precedence") return SolveOptions::Engine::Precedence;
+  if (engine == "sat") return SolveOptions::Engine::Sat;
+  throw UserError("--engine must be auto, states, precedence or sat, not '" + engine + "'");
+}
+
+int run_solve(const std::vector<std::string>& args) {
+  const Deadline since_start;  // --timeout counts from here: reading the instance is part of it
+  po::options_description opts = solve_options();
+  po::variables_map vm;
+  if (!cli::parse_args_one_input(
+          args, opts, "instance", vm,
+          "solve INSTANCE.grid [--model discrete|continuous] [--timeout S] [--max-states N] [--json]",
+          kSolveDescription))
+    return 0;
+  SolveOptions opt;
+  opt.seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
+  opt.max_states = cli::count_arg_opt(vm, "max-states").value_or(0);
+  opt.progress = !vm.count("json") && isatty(STDERR_FILENO);
+  const std::string engine = vm["engine"].as<std::string>();
+  opt.engine = engine_arg(engine);
+
+  const std::string model = vm["model"].as<std::string>();
+  if (model != "discrete" && model != "continuous")
+    throw UserError("--model must be discrete or continuous, not '" + model + "'");
+  if (model == "continuous" && !vm["engine"].defaulted()) throw UserError("--engine applies to --model discrete only");
+
+  const std::string path = vm["instance"].as<std::string>();
+  // Kept until the process ends (reachable, so no leak report): freeing an
+  // instance of a million nodes takes a noticeable part of a short --timeout.
+  // volatile: the store must stay, or the optimiser drops it and
+  // LeakSanitizer sees the instance as leaked.
+  static Instance* volatile kept = nullptr;
+  kept = new Instance(cli::load_instance(path));
+  const Instance& inst = *kept;
+  cli::Activity act(path, "solving the instance");
+  if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
+  if (model == "continuous") return run_continuous(path, inst, opt, vm.count("json") > 0);
+  return run_discrete(path, inst, opt, engine, vm.count("json") > 0);
 }
 
 Command reg{"solve", "decide Collision-free Schedule exactly, discrete or continuous (any instance)", run_solve};

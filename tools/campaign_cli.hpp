@@ -1,0 +1,45 @@
+// Command-line plumbing the campaign commands (fuzz, verify, gen-instances)
+// share: --shard, --model/--direct/--break-gadget, the progress line on a
+// terminal, --json-out, and the "interrupted" note. The campaigns themselves
+// are library code (verify/campaign.hpp, verify/instance_set.hpp).
+#pragma once
+
+#include <string>
+
+#include <boost/program_options.hpp>
+#include <nlohmann/json.hpp>
+
+#include "verify/campaign.hpp"
+
+namespace gridlock::cli {
+
+// vm["shard"] ("K/N", 0 <= K < N) or UserError.
+Shard shard_arg(const boost::program_options::variables_map& vm);
+
+// vm["model"], vm["direct"] and vm["break-gadget"] into opt (UserError for
+// an unknown model or mutation).
+void verify_model_args(const boost::program_options::variables_map& vm, VerifyOptions& opt);
+
+// One line of progress on standard error, redrawn in place, when standard
+// error is a terminal (and enabled); nothing otherwise.
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool enabled);
+  bool enabled() const { return enabled_; }
+  // Redraws the line (at most twice a second unless now).
+  void show(const std::string& text, bool now = false);
+  // Erases the line, so that other output starts on a clean line.
+  void clear() const;
+
+ private:
+  bool enabled_;
+  double last_ = -1;
+};
+
+// Writes j (indented) to vm["json-out"] when that option is given.
+void write_json_out(const boost::program_options::variables_map& vm, const nlohmann::json& j);
+
+// "INTERRUPTED by signal S" for the signal that stopped the campaign.
+std::string interrupted_note();
+
+}  // namespace gridlock::cli
