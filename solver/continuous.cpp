@@ -121,21 +121,7 @@ class ComponentEncoder {
       return;
     }
     if (encoding_ == PairEncoding::Auto && r == 2) {
-      // Identical pairs (same forms) are common in gadget rows: cache.
-      std::vector<int64_t> key(c.base);
-      key.insert(key.end(), c.coef.begin(), c.coef.end());
-      key.push_back(c.num_forms);
-      auto it = cache_.find(key);
-      if (it == cache_.end()) it = cache_.emplace(std::move(key), free_offsets(c)).first;
-      z3::expr d = time_of(c.rel[1]) - time_of(c.rel[0]);
-      z3::expr_vector options(ctx_);
-      for (const OffsetInterval& iv : it->second) {
-        z3::expr in = ctx_.bool_val(true);
-        if (iv.lo) in = in && d >= rational(*iv.lo);
-        if (iv.hi) in = in && d <= rational(*iv.hi);
-        options.push_back(in);
-      }
-      s_.add(z3::mk_or(options));  // false if empty
+      encode_by_free_offsets(c);
       return;
     }
     // Events: t_q and t_q + 1 of the pair's couplings.
@@ -170,7 +156,36 @@ class ComponentEncoder {
       s_.add(z3::mk_or(options));
       return;
     }
-    // A cover of the time axis by M segments [x_{m-1}, x_m].
+    encode_segment_cover(c, ev, at_ev);
+  }
+
+  // A two-coupling pair: the offset t_b - t_a lies in one of the pair's free
+  // offset intervals (none: false).
+  void encode_by_free_offsets(const CollisionConstraint& c) {
+    // Identical pairs (same forms) are common in gadget rows: cache.
+    std::vector<int64_t> key(c.base);
+    key.insert(key.end(), c.coef.begin(), c.coef.end());
+    key.push_back(c.num_forms);
+    auto it = cache_.find(key);
+    if (it == cache_.end()) it = cache_.emplace(std::move(key), free_offsets(c)).first;
+    z3::expr d = time_of(c.rel[1]) - time_of(c.rel[0]);
+    z3::expr_vector options(ctx_);
+    for (const OffsetInterval& iv : it->second) {
+      z3::expr in = ctx_.bool_val(true);
+      if (iv.lo) in = in && d >= rational(*iv.lo);
+      if (iv.hi) in = in && d <= rational(*iv.hi);
+      options.push_back(in);
+    }
+    s_.add(z3::mk_or(options));  // false if empty
+  }
+
+  // The general pair: a cover of the time axis by M = 4r - 2 segments
+  // [x_{m-1}, x_m], on each of which one form is <= 0 at both ends and at
+  // every event inside. ev are the events (t_q and t_q + 1 of the pair's
+  // couplings), at_ev[i][e] form i at event e.
+  void encode_segment_cover(const CollisionConstraint& c, const std::vector<z3::expr>& ev,
+                            const std::vector<std::vector<z3::expr>>& at_ev) {
+    const size_t r = c.rel.size();
     const size_t M = 4 * r - 2;
     std::vector<z3::expr> x;
     for (size_t m = 0; m <= M; ++m) {
