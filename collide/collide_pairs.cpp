@@ -469,40 +469,69 @@ SumGrid subset_sums(const std::vector<Vec2>& vecs, std::vector<SumGrid>* layers)
   return g;
 }
 
+// A choice of the coupling that runs last (is caught mid-way): an own
+// coupling of the pair (var >= 0), or the path coupling S.gens[gen].
+struct RunChoice {
+  int var = -1;    // own coupling index, or -1
+  size_t gen = 0;  // else: index into S.gens
+};
+
+// The choices worth trying: each own coupling, and one per distinct vector
+// among the others (which copy of equal vectors runs last does not matter:
+// the subset sums of the rest are the same).
+std::vector<RunChoice> running_choices(const PairSystem& S) {
+  std::vector<RunChoice> choices;
+  choices.reserve(static_cast<size_t>(S.nv) + S.gens.size());
+  for (int j = 0; j < S.nv; ++j) choices.push_back({j, 0});
+  std::vector<Vec2> seen;
+  for (size_t g = 0; g < S.gens.size(); ++g) {
+    Vec2 w = S.gens[g].second;
+    if (std::find(seen.begin(), seen.end(), w) != seen.end()) continue;
+    seen.push_back(w);
+    choices.push_back({-1, g});
+  }
+  return choices;
+}
+
+// Fills want with the witness of a meeting found at subset sum (x, y) of
+// rest (the path vectors S.gens[rest_idx[i]] not running): a subset of rest
+// with that sum (by backtracking through subset_sums' layers), the own
+// couplings done (val[j] = 1), and the running coupling ch.
+void recover_witness(const PairSystem& S, const RunChoice& ch, const std::vector<Vec2>& rest,
+                     const std::vector<size_t>& rest_idx, const int64_t val[2], int64_t x, int64_t y,
+                     PairWitness* want) {
+  std::vector<SumGrid> layers;
+  subset_sums(rest, &layers);
+  std::vector<char> used(rest.size(), 0);
+  int64_t cx = x, cy = y;
+  for (size_t i = rest.size(); i-- > 0;) {
+    if (layers[i].get(cx, cy)) continue;  // reachable without vector i
+    used[i] = 1;
+    cx -= rest[i].x, cy -= rest[i].y;
+  }
+  if (cx != 0 || cy != 0) throw std::logic_error("collide: subset-sum backtrack failed");
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (used[i]) want->done.push_back(S.gens[rest_idx[i]].first);
+  for (int j = 0; j < S.nv; ++j)
+    if (j != ch.var && val[j]) want->done.push_back(S.var[j]);
+  want->running = ch.var >= 0 ? S.var[ch.var] : S.gens[ch.gen].first;
+}
+
 }  // namespace
 
 bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets, PairWitness* want) {
   PairSystem S = build_system(A, B, nets);
-  // Choices of the running coupling: each own coupling, and one per distinct
-  // vector among the others (which copy of equal vectors runs last does not
-  // matter: the subset sums of the rest are the same).
-  struct Choice {
-    int var = -1;    // own coupling index, or -1
-    size_t gen = 0;  // else: index into S.gens
-  };
-  std::vector<Choice> choices;
-  choices.reserve(static_cast<size_t>(S.nv) + S.gens.size());
-  for (int j = 0; j < S.nv; ++j) choices.push_back({j, 0});
-  {
-    std::vector<Vec2> seen;
-    for (size_t g = 0; g < S.gens.size(); ++g) {
-      Vec2 w = S.gens[g].second;
-      if (std::find(seen.begin(), seen.end(), w) != seen.end()) continue;
-      seen.push_back(w);
-      choices.push_back({-1, g});
-    }
-  }
+  const std::vector<RunChoice> choices = running_choices(S);
   if (choices.empty()) {  // nothing moves the pair: overlap now or never (never, in a valid instance)
     for (int i = 0; i < 8; ++i)
       if (S.c[i] <= 0) return false;
     return true;
   }
-  for (const Choice& ch : choices) {
+  for (const RunChoice& ch : choices) {
     std::vector<Vec2> rest;
     std::vector<size_t> rest_idx;
     for (size_t g = 0; g < S.gens.size(); ++g)
       if (ch.var >= 0 || g != ch.gen) rest.push_back(S.gens[g].second), rest_idx.push_back(g);
-    std::vector<SumGrid> layers;
     SumGrid sums = subset_sums(rest, nullptr);
     // States of the own couplings that do not run: 0 or 1 each.
     int free_vars = S.nv - (ch.var >= 0 ? 1 : 0);
@@ -539,22 +568,7 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
           hi.a[0] = -1, hi.c = 1, hi.strict = false;
           cs.push_back(lo), cs.push_back(hi);
           if (interval_of(cs).empty) continue;
-          if (!want) return true;
-          // Recover a subset of `rest` with sum (x, y).
-          subset_sums(rest, &layers);
-          std::vector<char> used(rest.size(), 0);
-          int64_t cx = x, cy = y;
-          for (size_t i = rest.size(); i-- > 0;) {
-            if (layers[i].get(cx, cy)) continue;  // reachable without vector i
-            used[i] = 1;
-            cx -= rest[i].x, cy -= rest[i].y;
-          }
-          if (cx != 0 || cy != 0) throw std::logic_error("collide: subset-sum backtrack failed");
-          for (size_t i = 0; i < rest.size(); ++i)
-            if (used[i]) want->done.push_back(S.gens[rest_idx[i]].first);
-          for (int j = 0; j < S.nv; ++j)
-            if (j != ch.var && val[j]) want->done.push_back(S.var[j]);
-          want->running = ch.var >= 0 ? S.var[ch.var] : S.gens[ch.gen].first;
+          if (want) recover_witness(S, ch, rest, rest_idx, val, x, y, want);
           return true;
         }
     }
