@@ -32,6 +32,84 @@ std::string join(const std::vector<int>& lits) {
 // O(L log L) even when a literal occurs a million times.
 constexpr size_t kNeighbourScan = 4;
 
+// Every occurrence of a literal in f, sorted by literal so that each
+// literal's clauses form one run. Sorting instead of indexing by variable
+// keeps memory independent of num_vars (a header may declare two billion
+// variables); sorting the entries themselves, not indices to them, keeps the
+// sort cache-friendly. Built in O(L log L).
+struct OccurrenceIndex {
+  struct Occ {
+    int lit;
+    size_t clause;
+    size_t slot;  // position in the clause-ordered list of all occurrences
+  };
+  std::vector<Occ> sorted;
+  std::vector<size_t> first;  // clause i's occurrences: slots first[i]..first[i+1]
+  std::vector<int> lit_of;    // by slot
+  // run_of[slot]: the run [begin, end) in `sorted` holding that occurrence;
+  // pos_of[slot]: its own place there.
+  std::vector<std::pair<size_t, size_t>> run_of;
+  std::vector<size_t> pos_of;
+
+  explicit OccurrenceIndex(const Formula& f) : first(f.clauses.size() + 1, 0) {
+    sorted.reserve(num_literals(f));
+    for (size_t i = 0; i < f.clauses.size(); ++i) {
+      first[i] = sorted.size();
+      for (int lit : f.clauses[i]) sorted.push_back({lit, i, sorted.size()});
+    }
+    first[f.clauses.size()] = sorted.size();
+    lit_of.resize(sorted.size());
+    for (const auto& o : sorted) lit_of[o.slot] = o.lit;
+    std::sort(sorted.begin(), sorted.end(), [](const Occ& a, const Occ& b) {
+      return std::tie(a.lit, a.clause, a.slot) < std::tie(b.lit, b.clause, b.slot);
+    });
+    run_of.resize(sorted.size());
+    pos_of.resize(sorted.size());
+    for (size_t b = 0; b < sorted.size();) {
+      size_t e = b;
+      while (e < sorted.size() && sorted[e].lit == sorted[b].lit) ++e;
+      for (size_t k = b; k < e; ++k) {
+        run_of[sorted[k].slot] = {b, e};
+        pos_of[sorted[k].slot] = k;
+      }
+      b = e;
+    }
+  }
+
+  // A literal clause i holds twice, if any: the clause occurs twice in one
+  // literal's run (runs are sorted by clause, so the entries are adjacent:
+  // O(1) per literal however long the run is).
+  std::optional<int> repeated_literal(size_t i) const {
+    std::optional<int> repeated;
+    for (size_t k = first[i]; k < first[i + 1] && !repeated; ++k) {
+      const size_t p = pos_of[k];
+      const auto [b, e] = run_of[k];
+      if ((p > b && sorted[p - 1].clause == i) || (p + 1 < e && sorted[p + 1].clause == i)) repeated = lit_of[k];
+    }
+    return repeated;
+  }
+
+  // Clause i's neighbours: (other clause, shared literal), sorted, without
+  // duplicates (a neighbour repeating the literal counts once), at most
+  // kNeighbourScan other occurrences looked at per literal.
+  std::vector<std::pair<size_t, int>> neighbours(size_t i) const {
+    std::vector<std::pair<size_t, int>> nb;
+    for (size_t k = first[i]; k < first[i + 1]; ++k) {
+      auto [b, e] = run_of[k];
+      size_t seen = 0;
+      for (size_t r = b; r < e && seen < kNeighbourScan; ++r) {
+        size_t j = sorted[r].clause;
+        if (j == i) continue;
+        nb.push_back({j, lit_of[k]});
+        ++seen;
+      }
+    }
+    std::sort(nb.begin(), nb.end());
+    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+    return nb;
+  }
+};
+
 }  // namespace
 
 const char* rule_name(LsatRule rule) {
@@ -47,41 +125,7 @@ const char* rule_name(LsatRule rule) {
 LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
   GRIDLOCK_ASSERT(validate(f).empty(), "check_lsat needs a valid formula");
   LsatReport rep;
-  // Occurrences sorted by literal: each literal's clauses form one run.
-  // Sorting instead of indexing by variable keeps memory independent of
-  // num_vars (a header may declare two billion variables); sorting the
-  // entries themselves, not indices to them, keeps the sort cache-friendly.
-  struct Occ {
-    int lit;
-    size_t clause;
-    size_t slot;  // position in the clause-ordered list of all occurrences
-  };
-  std::vector<Occ> sorted;
-  sorted.reserve(num_literals(f));
-  std::vector<size_t> first(f.clauses.size() + 1, 0);  // clause i's occurrences: slots first[i]..first[i+1]
-  for (size_t i = 0; i < f.clauses.size(); ++i) {
-    first[i] = sorted.size();
-    for (int lit : f.clauses[i]) sorted.push_back({lit, i, sorted.size()});
-  }
-  first[f.clauses.size()] = sorted.size();
-  std::vector<int> lit_of(sorted.size());
-  for (const auto& o : sorted) lit_of[o.slot] = o.lit;
-  std::sort(sorted.begin(), sorted.end(), [](const Occ& a, const Occ& b) {
-    return std::tie(a.lit, a.clause, a.slot) < std::tie(b.lit, b.clause, b.slot);
-  });
-  // run_of[slot]: the run [begin, end) in `sorted` holding that occurrence;
-  // pos_of[slot]: its own place there.
-  std::vector<std::pair<size_t, size_t>> run_of(sorted.size());
-  std::vector<size_t> pos_of(sorted.size());
-  for (size_t b = 0; b < sorted.size();) {
-    size_t e = b;
-    while (e < sorted.size() && sorted[e].lit == sorted[b].lit) ++e;
-    for (size_t k = b; k < e; ++k) {
-      run_of[sorted[k].slot] = {b, e};
-      pos_of[sorted[k].slot] = k;
-    }
-    b = e;
-  }
+  const OccurrenceIndex occ(f);
 
   std::set<std::pair<size_t, size_t>> reported_pairs;  // SharesTwoLiterals, reported once per pair
   auto add = [&](LsatViolation v) {
@@ -101,16 +145,7 @@ LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
                (form == LsatForm::Exact3 ? "3" : "1 to 3")});
       continue;
     }
-    // Repeated literal: the clause occurs twice in one literal's run (runs
-    // are sorted by clause, so the entries are adjacent: O(1) per literal
-    // however long the run is).
-    std::optional<int> repeated;
-    for (size_t k = first[i]; k < first[i + 1] && !repeated; ++k) {
-      const size_t p = pos_of[k];
-      const auto [b, e] = run_of[k];
-      if ((p > b && sorted[p - 1].clause == i) || (p + 1 < e && sorted[p + 1].clause == i)) repeated = lit_of[k];
-    }
-    if (repeated) {
+    if (std::optional<int> repeated = occ.repeated_literal(i)) {
       add({LsatRule::RepeatedLiteral,
            {i},
            {*repeated},
@@ -118,19 +153,7 @@ LsatReport check_lsat(const Formula& f, LsatForm form, size_t max_violations) {
       continue;
     }
     // Neighbours: (other clause, shared literal), a bounded number per literal.
-    std::vector<std::pair<size_t, int>> nb;
-    for (size_t k = first[i]; k < first[i + 1]; ++k) {
-      auto [b, e] = run_of[k];
-      size_t seen = 0;
-      for (size_t r = b; r < e && seen < kNeighbourScan; ++r) {
-        size_t j = sorted[r].clause;
-        if (j == i) continue;
-        nb.push_back({j, lit_of[k]});
-        ++seen;
-      }
-    }
-    std::sort(nb.begin(), nb.end());
-    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());  // a neighbour repeating the literal counts once
+    const std::vector<std::pair<size_t, int>> nb = occ.neighbours(i);
     bool found = false;
     for (size_t a = 0; a + 1 < nb.size() && !found; ++a) {
       if (nb[a].first != nb[a + 1].first) continue;

@@ -27,89 +27,62 @@ bool all_singletons(const Instance& inst) {
   return true;
 }
 
-}  // namespace
-
-CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method) {
-  const PreparedInstance prep(inst);
-  return find_collision(prep, model, method);
+// res completed as a collision with witness s, which the simulator must
+// confirm (logic_error otherwise).
+CollideResult finish_with(CollideResult& res, Simulator& sim, Schedule s) {
+  res.collides = true;
+  res.witness = std::move(s);
+  SimResult run = sim.run(res.witness);
+  if (!run.collision)
+    throw std::logic_error("collide (" + res.algorithm + "): the witness schedule does not collide in the simulator");
+  res.simulated = run.collision;
+  return res;
 }
 
-CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method) {
-  const Instance& inst = prep.inst;
-  CollideResult res;
-  Simulator sim(prep);
-  const size_t nq = inst.couplings().size();
-
-  auto finish_with = [&](Schedule s) {
-    res.collides = true;
-    res.witness = std::move(s);
-    SimResult run = sim.run(res.witness);
-    if (!run.collision)
-      throw std::logic_error("collide (" + res.algorithm + "): the witness schedule does not collide in the simulator");
-    res.simulated = run.collision;
-    return res;
-  };
-
-  if (nq == 0) {
-    res.algorithm = "no-operations";
-    res.complexity = "O(1)";
-    return res;
+// Step 3, no couplings: the centroid algorithm (or, for TreePairwise, its
+// all-pairs twin naming the pair and the centroid run giving the witness).
+CollideResult tree_step(const Instance& inst, Simulator& sim, CollideMethod method, CollideResult& res) {
+  std::optional<TreeCollision> tc;
+  if (method == CollideMethod::TreePairwise) {
+    res.algorithm = "tree-pairwise";
+    res.complexity = "O(n^2)";
+    tc = tree_collision_pairwise(inst, sim.tree(), sim.regions());
+  } else {
+    res.algorithm = "tree-centroid";
+    res.complexity = "O(n log^2 n)";
+    TreeStats ts;
+    tc = tree_collision(inst, sim.tree(), sim.regions(), &ts);
+    res.stats.levels = ts.levels;
+    res.stats.rectangles = ts.rectangles;
   }
-
-  // 1. Cycle collisions: a coupling with a non-zero net around a face walk.
-  const FaceNets& faces = sim.faces();
-  if (!faces.faces.empty()) {
-    const auto& f = faces.faces.front();
-    res.algorithm = "cycle";
-    res.complexity = "O(n + e log e)";
-    res.cycle = f.walk;
-    return finish_with(schedule_from_order(order_starting_with(inst, {f.nets.front().first})));
+  if (!tc) return res;
+  res.region_a = tc->a, res.region_b = tc->b;
+  if (method == CollideMethod::TreePairwise) {
+    // The twin only names the pair; the witness comes from the centroid run.
+    auto again = tree_collision(inst, sim.tree(), sim.regions());
+    if (!again) throw std::logic_error("collide: the tree twins disagree");
+    tc = again;
   }
+  std::vector<CouplingId> first;
+  for (OpId k : tc->done) first.push_back(inst.ops()[k].coupling);
+  return finish_with(res, sim, schedule_from_order(order_starting_with(inst, first)));
+}
 
-  // 2. One coupling: one schedule in both models.
-  if (method == CollideMethod::Auto && nq == 1) {
-    res.algorithm = "single-coupling";
-    res.complexity = "one simulation";
-    Schedule s = schedule_from_order({0});
-    SimResult run = sim.run(s);
-    if (!run.collision) return res;
-    if (run.collision->kind == Collision::Kind::Node) res.region_a = run.collision->a, res.region_b = run.collision->b;
-    return finish_with(s);
-  }
+// The continuous witness for progresses p at time 1: q starts at 1 - p_q;
+// the nq couplings that do not move the pair start after time 1.
+Schedule schedule_reaching(size_t nq, const std::vector<std::pair<CouplingId, Rational>>& progress) {
+  Schedule s;
+  s.start.assign(nq, Rational(0));
+  std::vector<char> set(nq, 0);
+  for (const auto& [q, p] : progress) s.start[q] = Rational(1) - p, set[q] = 1;
+  int64_t later = 2;
+  for (CouplingId q = 0; q < nq; ++q)
+    if (!set[q]) s.start[q] = Rational(later++);
+  return s;
+}
 
-  // 3. No couplings: the centroid algorithm (or its all-pairs twin).
-  bool tree_ok = all_singletons(inst);
-  if ((method == CollideMethod::Tree || method == CollideMethod::TreePairwise) && !tree_ok)
-    throw std::invalid_argument("collide: the tree algorithm needs an instance without couplings");
-  if (method == CollideMethod::Tree || method == CollideMethod::TreePairwise ||
-      (method == CollideMethod::Auto && tree_ok)) {
-    std::optional<TreeCollision> tc;
-    if (method == CollideMethod::TreePairwise) {
-      res.algorithm = "tree-pairwise";
-      res.complexity = "O(n^2)";
-      tc = tree_collision_pairwise(inst, sim.tree(), sim.regions());
-    } else {
-      res.algorithm = "tree-centroid";
-      res.complexity = "O(n log^2 n)";
-      TreeStats ts;
-      tc = tree_collision(inst, sim.tree(), sim.regions(), &ts);
-      res.stats.levels = ts.levels;
-      res.stats.rectangles = ts.rectangles;
-    }
-    if (!tc) return res;
-    res.region_a = tc->a, res.region_b = tc->b;
-    if (method == CollideMethod::TreePairwise) {
-      // The twin only names the pair; the witness comes from the centroid run.
-      auto again = tree_collision(inst, sim.tree(), sim.regions());
-      if (!again) throw std::logic_error("collide: the tree twins disagree");
-      tc = again;
-    }
-    std::vector<CouplingId> first;
-    for (OpId k : tc->done) first.push_back(inst.ops()[k].coupling);
-    return finish_with(schedule_from_order(order_starting_with(inst, first)));
-  }
-
-  // 4./5. Couplings: all pairs, exact per-pair tests.
+// Steps 4/5, couplings: all pairs, exact per-pair tests in the model's sense.
+CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res) {
   PairwiseStats ps;
   auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps);
   res.stats.pairs = ps.pairs;
@@ -126,18 +99,61 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   if (model == TimeModel::Discrete) {
     std::vector<CouplingId> first = pc->witness.done;
     if (pc->witness.running != kNone) first.push_back(pc->witness.running);
-    return finish_with(schedule_from_order(order_starting_with(inst, first)));
+    return finish_with(res, sim, schedule_from_order(order_starting_with(inst, first)));
   }
-  // Continuous: start q at 1 - p_q so that at time 1 the progress is p; the
-  // couplings that do not move the pair start after time 1.
-  Schedule s;
-  s.start.assign(nq, Rational(0));
-  std::vector<char> set(nq, 0);
-  for (const auto& [q, p] : pc->witness.progress) s.start[q] = Rational(1) - p, set[q] = 1;
-  int64_t later = 2;
-  for (CouplingId q = 0; q < nq; ++q)
-    if (!set[q]) s.start[q] = Rational(later++);
-  return finish_with(s);
+  return finish_with(res, sim, schedule_reaching(inst.couplings().size(), pc->witness.progress));
+}
+
+}  // namespace
+
+CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method) {
+  const PreparedInstance prep(inst);
+  return find_collision(prep, model, method);
+}
+
+CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method) {
+  const Instance& inst = prep.inst;
+  CollideResult res;
+  Simulator sim(prep);
+  const size_t nq = inst.couplings().size();
+
+  if (nq == 0) {
+    res.algorithm = "no-operations";
+    res.complexity = "O(1)";
+    return res;
+  }
+
+  // 1. Cycle collisions: a coupling with a non-zero net around a face walk.
+  const FaceNets& faces = sim.faces();
+  if (!faces.faces.empty()) {
+    const auto& f = faces.faces.front();
+    res.algorithm = "cycle";
+    res.complexity = "O(n + e log e)";
+    res.cycle = f.walk;
+    return finish_with(res, sim, schedule_from_order(order_starting_with(inst, {f.nets.front().first})));
+  }
+
+  // 2. One coupling: one schedule in both models.
+  if (method == CollideMethod::Auto && nq == 1) {
+    res.algorithm = "single-coupling";
+    res.complexity = "one simulation";
+    Schedule s = schedule_from_order({0});
+    SimResult run = sim.run(s);
+    if (!run.collision) return res;
+    if (run.collision->kind == Collision::Kind::Node) res.region_a = run.collision->a, res.region_b = run.collision->b;
+    return finish_with(res, sim, s);
+  }
+
+  // 3. No couplings: the centroid algorithm (or its all-pairs twin).
+  bool tree_ok = all_singletons(inst);
+  if ((method == CollideMethod::Tree || method == CollideMethod::TreePairwise) && !tree_ok)
+    throw std::invalid_argument("collide: the tree algorithm needs an instance without couplings");
+  if (method == CollideMethod::Tree || method == CollideMethod::TreePairwise ||
+      (method == CollideMethod::Auto && tree_ok))
+    return tree_step(inst, sim, method, res);
+
+  // 4./5. Couplings: all pairs, exact per-pair tests.
+  return pairwise_step(inst, sim, model, res);
 }
 
 }  // namespace gridlock

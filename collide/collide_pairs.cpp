@@ -469,40 +469,69 @@ SumGrid subset_sums(const std::vector<Vec2>& vecs, std::vector<SumGrid>* layers)
   return g;
 }
 
+// A choice of the coupling that runs last (is caught mid-way): an own
+// coupling of the pair (var >= 0), or the path coupling S.gens[gen].
+struct RunChoice {
+  int var = -1;    // own coupling index, or -1
+  size_t gen = 0;  // else: index into S.gens
+};
+
+// The choices worth trying: each own coupling, and one per distinct vector
+// among the others (which copy of equal vectors runs last does not matter:
+// the subset sums of the rest are the same).
+std::vector<RunChoice> running_choices(const PairSystem& S) {
+  std::vector<RunChoice> choices;
+  choices.reserve(static_cast<size_t>(S.nv) + S.gens.size());
+  for (int j = 0; j < S.nv; ++j) choices.push_back({j, 0});
+  std::vector<Vec2> seen;
+  for (size_t g = 0; g < S.gens.size(); ++g) {
+    Vec2 w = S.gens[g].second;
+    if (std::find(seen.begin(), seen.end(), w) != seen.end()) continue;
+    seen.push_back(w);
+    choices.push_back({-1, g});
+  }
+  return choices;
+}
+
+// Fills want with the witness of a meeting found at subset sum (x, y) of
+// rest (the path vectors S.gens[rest_idx[i]] not running): a subset of rest
+// with that sum (by backtracking through subset_sums' layers), the own
+// couplings done (val[j] = 1), and the running coupling ch.
+void recover_witness(const PairSystem& S, const RunChoice& ch, const std::vector<Vec2>& rest,
+                     const std::vector<size_t>& rest_idx, const int64_t val[2], int64_t x, int64_t y,
+                     PairWitness* want) {
+  std::vector<SumGrid> layers;
+  subset_sums(rest, &layers);
+  std::vector<char> used(rest.size(), 0);
+  int64_t cx = x, cy = y;
+  for (size_t i = rest.size(); i-- > 0;) {
+    if (layers[i].get(cx, cy)) continue;  // reachable without vector i
+    used[i] = 1;
+    cx -= rest[i].x, cy -= rest[i].y;
+  }
+  if (cx != 0 || cy != 0) throw std::logic_error("collide: subset-sum backtrack failed");
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (used[i]) want->done.push_back(S.gens[rest_idx[i]].first);
+  for (int j = 0; j < S.nv; ++j)
+    if (j != ch.var && val[j]) want->done.push_back(S.var[j]);
+  want->running = ch.var >= 0 ? S.var[ch.var] : S.gens[ch.gen].first;
+}
+
 }  // namespace
 
 bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets, PairWitness* want) {
   PairSystem S = build_system(A, B, nets);
-  // Choices of the running coupling: each own coupling, and one per distinct
-  // vector among the others (which copy of equal vectors runs last does not
-  // matter: the subset sums of the rest are the same).
-  struct Choice {
-    int var = -1;    // own coupling index, or -1
-    size_t gen = 0;  // else: index into S.gens
-  };
-  std::vector<Choice> choices;
-  choices.reserve(static_cast<size_t>(S.nv) + S.gens.size());
-  for (int j = 0; j < S.nv; ++j) choices.push_back({j, 0});
-  {
-    std::vector<Vec2> seen;
-    for (size_t g = 0; g < S.gens.size(); ++g) {
-      Vec2 w = S.gens[g].second;
-      if (std::find(seen.begin(), seen.end(), w) != seen.end()) continue;
-      seen.push_back(w);
-      choices.push_back({-1, g});
-    }
-  }
+  const std::vector<RunChoice> choices = running_choices(S);
   if (choices.empty()) {  // nothing moves the pair: overlap now or never (never, in a valid instance)
     for (int i = 0; i < 8; ++i)
       if (S.c[i] <= 0) return false;
     return true;
   }
-  for (const Choice& ch : choices) {
+  for (const RunChoice& ch : choices) {
     std::vector<Vec2> rest;
     std::vector<size_t> rest_idx;
     for (size_t g = 0; g < S.gens.size(); ++g)
       if (ch.var >= 0 || g != ch.gen) rest.push_back(S.gens[g].second), rest_idx.push_back(g);
-    std::vector<SumGrid> layers;
     SumGrid sums = subset_sums(rest, nullptr);
     // States of the own couplings that do not run: 0 or 1 each.
     int free_vars = S.nv - (ch.var >= 0 ? 1 : 0);
@@ -539,22 +568,7 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
           hi.a[0] = -1, hi.c = 1, hi.strict = false;
           cs.push_back(lo), cs.push_back(hi);
           if (interval_of(cs).empty) continue;
-          if (!want) return true;
-          // Recover a subset of `rest` with sum (x, y).
-          subset_sums(rest, &layers);
-          std::vector<char> used(rest.size(), 0);
-          int64_t cx = x, cy = y;
-          for (size_t i = rest.size(); i-- > 0;) {
-            if (layers[i].get(cx, cy)) continue;  // reachable without vector i
-            used[i] = 1;
-            cx -= rest[i].x, cy -= rest[i].y;
-          }
-          if (cx != 0 || cy != 0) throw std::logic_error("collide: subset-sum backtrack failed");
-          for (size_t i = 0; i < rest.size(); ++i)
-            if (used[i]) want->done.push_back(S.gens[rest_idx[i]].first);
-          for (int j = 0; j < S.nv; ++j)
-            if (j != ch.var && val[j]) want->done.push_back(S.var[j]);
-          want->running = ch.var >= 0 ? S.var[ch.var] : S.gens[ch.gen].first;
+          if (want) recover_witness(S, ch, rest, rest_idx, val, x, y, want);
           return true;
         }
     }
@@ -562,19 +576,20 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
   return false;
 }
 
-std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
-                                                TimeModel model, PairwiseStats* stats) {
-  const size_t n = inst.num_nodes(), nq = inst.couplings().size();
-  std::vector<RegionForm> forms = region_forms(inst, regions);
-  std::vector<std::vector<uint32_t>> regs_of(n);
-  for (uint32_t r = 0; r < forms.size(); ++r) regs_of[forms[r].ref].push_back(r);
-  // Tree adjacency with the vector (at full progress) from one end to the other.
-  struct Arc {
-    NodeId to;
-    CouplingId q;
-    Vec2 vec;
-  };
-  std::vector<std::vector<Arc>> adj(n);
+namespace {
+
+// A spanning-tree arc with the vector (at full progress) from one end to the
+// other and the coupling of the operation on it (kNone: rigid).
+struct TreeArc {
+  NodeId to;
+  CouplingId q;
+  Vec2 vec;
+};
+
+// Both directions of every spanning-tree edge, by node.
+std::vector<std::vector<TreeArc>> tree_adjacency(const Instance& inst, const SpanningTree& tree) {
+  const size_t n = inst.num_nodes();
+  std::vector<std::vector<TreeArc>> adj(n);
   for (NodeId w = 0; w < n; ++w) {
     NodeId p = tree.parent[w];
     if (p == kNone) continue;
@@ -584,11 +599,21 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
     adj[p].push_back({w, q, v});
     adj[w].push_back({p, q, Vec2{-v.x, -v.y}});
   }
-  std::vector<Vec2> net(nq);
-  std::vector<uint32_t> pos(nq, kNone);
+  return adj;
+}
+
+// The net vector of each coupling along a tree path that grows and shrinks
+// one arc at a time: net[q]; active, the couplings with a non-zero net
+// (pos[q] their place there, kNone if absent); reach_x / reach_y, the sums
+// of |net| per axis. O(1) per apply().
+struct PathNetTracker {
+  std::vector<Vec2> net;
+  std::vector<uint32_t> pos;
   std::vector<CouplingId> active;
   int64_t reach_x = 0, reach_y = 0;
-  auto apply = [&](CouplingId q, Vec2 v) {
+
+  explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
+  void apply(CouplingId q, Vec2 v) {
     Vec2& w = net[q];
     reach_x -= std::abs(w.x), reach_y -= std::abs(w.y);
     bool was = !w.is_zero();
@@ -603,25 +628,50 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
       active.pop_back();
       pos[q] = kNone;
     }
-  };
+  }
+  // The non-zero nets, as the pair tests take them.
+  PathNets nets() const {
+    PathNets out;
+    out.reserve(active.size());
+    for (CouplingId q : active) out.push_back({q, net[q]});
+    return out;
+  }
+};
+
+// Regions a and b with the path's nets between their reference nodes: the
+// reach filter, then the exact test of the model, counted in st; on a
+// meeting, the collision with its witness.
+std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b,
+                                       const PathNetTracker& path, TimeModel model, PairwiseStats& st) {
+  ++st.pairs;
+  if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
+  ++st.full_tests;
+  PathNets nets = path.nets();
+  bool hit = model == TimeModel::Continuous ? continuous_pair_collides(forms[a], forms[b], nets)
+                                            : discrete_pair_collides(forms[a], forms[b], nets);
+  if (!hit) return std::nullopt;
+  PairCollision pc;
+  pc.a = a, pc.b = b;
+  if (model == TimeModel::Continuous) continuous_pair_collides(forms[a], forms[b], nets, &pc.witness);
+  else discrete_pair_collides(forms[a], forms[b], nets, &pc.witness);
+  return pc;
+}
+
+}  // namespace
+
+std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                                TimeModel model, PairwiseStats* stats) {
+  const size_t n = inst.num_nodes(), nq = inst.couplings().size();
+  std::vector<RegionForm> forms = region_forms(inst, regions);
+  std::vector<std::vector<uint32_t>> regs_of(n);
+  for (uint32_t r = 0; r < forms.size(); ++r) regs_of[forms[r].ref].push_back(r);
+  const std::vector<std::vector<TreeArc>> adj = tree_adjacency(inst, tree);
+  PathNetTracker path(nq);
   PairwiseStats st;
   std::optional<PairCollision> found;
   auto test = [&](uint32_t a, uint32_t b) {
-    ++st.pairs;
-    if (!pair_may_meet(forms[a], forms[b], reach_x, reach_y)) return false;
-    ++st.full_tests;
-    PathNets nets;
-    nets.reserve(active.size());
-    for (CouplingId q : active) nets.push_back({q, net[q]});
-    bool hit = model == TimeModel::Continuous ? continuous_pair_collides(forms[a], forms[b], nets)
-                                              : discrete_pair_collides(forms[a], forms[b], nets);
-    if (!hit) return false;
-    PairCollision pc;
-    pc.a = a, pc.b = b;
-    if (model == TimeModel::Continuous) continuous_pair_collides(forms[a], forms[b], nets, &pc.witness);
-    else discrete_pair_collides(forms[a], forms[b], nets, &pc.witness);
-    found = pc;
-    return true;
+    found = test_pair(forms, a, b, path, model, st);
+    return found.has_value();
   };
   struct Frame {
     NodeId w;
@@ -640,9 +690,9 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
     while (!stack.empty() && !found) {
       Frame& f = stack.back();
       if (f.next < adj[f.w].size()) {
-        const Arc& a = adj[f.w][f.next++];
+        const TreeArc& a = adj[f.w][f.next++];
         if (a.to == f.from) continue;
-        if (a.q != kNone) apply(a.q, a.vec);
+        if (a.q != kNone) path.apply(a.q, a.vec);
         stack.push_back({a.to, f.w, 0, a.q, a.vec});
         NodeId w = a.to;
         if (w > s)
@@ -652,14 +702,14 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
             if (found) break;
           }
       } else {
-        if (f.q != kNone) apply(f.q, Vec2{-f.vec.x, -f.vec.y});
+        if (f.q != kNone) path.apply(f.q, Vec2{-f.vec.x, -f.vec.y});
         stack.pop_back();
       }
     }
     // Unwind what is left (after an early stop) so the state stays clean.
     while (!stack.empty()) {
       Frame& f = stack.back();
-      if (f.q != kNone) apply(f.q, Vec2{-f.vec.x, -f.vec.y});
+      if (f.q != kNone) path.apply(f.q, Vec2{-f.vec.x, -f.vec.y});
       stack.pop_back();
     }
   }

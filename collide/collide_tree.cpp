@@ -187,58 +187,54 @@ void choose_ops(const std::vector<std::pair<OpId, Vec2>>& path, Vec2 cell, Vec2 
   if (need_x != 0 || need_y != 0) throw std::logic_error("collide tree: the target cell is not reachable");
 }
 
-}  // namespace
+// The centroid decomposition of the spanning tree, searched for a collision
+// one component at a time; run() is the whole search, the other members its
+// steps on the component being searched.
+class CentroidSearch {
+ public:
+  CentroidSearch(const Instance& inst, const SpanningTree& tree, const Regions& regions)
+      : n(inst.num_nodes()),
+        M(build_model(inst, tree, regions)),
+        removed(n, 0),
+        size(n, 0),
+        bfs_parent(n, kNone),
+        in_edge(n, kNone),
+        in_op(n, kNone),
+        in_vec(n),
+        lo(n),
+        hi(n),
+        color(n, -1),
+        comps{{tree.root, 0}} {}
 
-bool tree_algorithm_applies(const Instance& inst) {
-  for (const Coupling& c : inst.couplings())
-    if (c.ops.size() != 1) return false;
-  FaceNets f = FaceNets::build(inst);
-  for (char b : f.coupling_breaks_cycle)
-    if (b) return false;
-  return true;
-}
+  // Searches every component until a collision is found; st gets the counts.
+  std::optional<TreeCollision> run(TreeStats& st) {
+    while (!comps.empty() && !found) {
+      auto [root, depth] = comps.back();
+      comps.pop_back();
+      st.levels = std::max<uint64_t>(st.levels, depth + 1);
+      NodeId c = centroid_of(root);
+      int colors = collect_rects(c);
+      st.rectangles += rects.size();
+      if (auto pr = bichromatic_pair(rects, colors)) {
+        const Rect& A = rects[pr->first];
+        const Rect& B = rects[pr->second];
+        report(A.copy, B.copy, Vec2{std::max(A.x1, B.x1), std::max(A.y1, B.y1)});
+        break;
+      }
+      check_centroid_copies(c);
+      if (found) break;
+      removed[c] = 1;
+      for (uint32_t i = M.arc_start[c]; i < M.arc_start[c + 1]; ++i)
+        if (!removed[M.arcs[i].to]) comps.push_back({M.arcs[i].to, depth + 1});
+    }
+    return found;
+  }
 
-std::optional<TreeCollision> tree_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
-                                            TreeStats* stats) {
-  const size_t n = inst.num_nodes();
-  Model M = build_model(inst, tree, regions);
-  TreeStats st;
-  std::vector<char> removed(n, 0);
-  std::vector<uint32_t> size(n, 0);
-  std::vector<NodeId> bfs_parent(n, kNone);
-  std::vector<uint32_t> in_edge(n, kNone);  // edge from the BFS parent (toward the centroid)
-  std::vector<OpId> in_op(n, kNone);
-  std::vector<Vec2> in_vec(n), lo(n), hi(n);
-  std::vector<int> color(n, -1);
-  std::vector<std::pair<NodeId, uint32_t>> comps{{tree.root, 0}};
-  std::vector<NodeId> order;
-  std::vector<Rect> rects;
-  std::optional<TreeCollision> found;
-
-  auto path_to_center = [&](NodeId w) {
-    std::vector<std::pair<OpId, Vec2>> path;
-    for (NodeId x = w; bfs_parent[x] != kNone; x = bfs_parent[x]) path.push_back({in_op[x], in_vec[x]});
-    return path;
-  };
-  auto report = [&](uint32_t cx, uint32_t cy, Vec2 target) {
-    TreeCollision tc;
-    const Copy& X = M.copies[cx];
-    const Copy& Y = M.copies[cy];
-    tc.a = std::min(X.region, Y.region), tc.b = std::max(X.region, Y.region);
-    choose_ops(path_to_center(X.at), X.cell, target, tc.done);
-    choose_ops(path_to_center(Y.at), Y.cell, target, tc.done);
-    for (const Copy* c : {&X, &Y})
-      if (c->own != kNone && c->own_done) tc.done.push_back(c->own);
-    std::sort(tc.done.begin(), tc.done.end());
-    tc.done.erase(std::unique(tc.done.begin(), tc.done.end()), tc.done.end());
-    found = tc;
-  };
-
-  while (!comps.empty() && !found) {
-    auto [root, depth] = comps.back();
-    comps.pop_back();
-    st.levels = std::max<uint64_t>(st.levels, depth + 1);
-    // The component of root: BFS, sizes, centroid.
+ private:
+  // The centroid of root's component (the nodes reachable without crossing a
+  // removed one): BFS from root into order, subtree sizes, then the walk
+  // toward any child holding more than half. O(component size).
+  NodeId centroid_of(NodeId root) {
     order.clear();
     order.push_back(root);
     bfs_parent[root] = kNone;
@@ -270,10 +266,17 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
       if (next == kNone) break;
       c = next;
     }
-    // Boxes relative to the centroid, one colour per neighbouring subtree.
+    return c;
+  }
+
+  // Fills rects with the box of every copy in c's component but c's own,
+  // relative to the centroid c, one colour per neighbouring subtree (recorded
+  // in edge_color by its first edge), and sets the BFS links toward c that
+  // report() follows. Returns the number of colours.
+  int collect_rects(NodeId c) {
     rects.clear();
     int colors = 0;
-    std::vector<std::pair<uint32_t, int>> edge_color;  // first edge of a subtree -> its colour
+    edge_color.clear();
     bfs_parent[c] = kNone;
     lo[c] = hi[c] = Vec2{0, 0};
     for (uint32_t i = M.arc_start[c]; i < M.arc_start[c + 1]; ++i) {
@@ -306,15 +309,13 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
         }
       }
     }
-    st.rectangles += rects.size();
-    if (auto pr = bichromatic_pair(rects, colors)) {
-      const Rect& A = rects[pr->first];
-      const Rect& B = rects[pr->second];
-      report(A.copy, B.copy, Vec2{std::max(A.x1, B.x1), std::max(A.y1, B.y1)});
-      break;
-    }
-    // Copies fixed to the centroid: a point each, against every subtree but
-    // the one across their excluded edge, and against each other.
+    return colors;
+  }
+
+  // Copies fixed to the centroid c: a point each, against every subtree but
+  // the one across their excluded edge, and against each other; reports the
+  // first meeting found. Needs collect_rects(c) first.
+  void check_centroid_copies(NodeId c) {
     for (uint32_t j = M.copy_start[c]; j < M.copy_start[c + 1] && !found; ++j) {
       uint32_t ci = M.copy_list[j];
       const Copy& cp = M.copies[ci];
@@ -331,11 +332,62 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
         if (o.region != cp.region && o.cell == cp.cell) report(ci, M.copy_list[j2], cp.cell);
       }
     }
-    if (found) break;
-    removed[c] = 1;
-    for (uint32_t i = M.arc_start[c]; i < M.arc_start[c + 1]; ++i)
-      if (!removed[M.arcs[i].to]) comps.push_back({M.arcs[i].to, depth + 1});
   }
+
+  // The arcs (op and vector) from w up the BFS links to the centroid.
+  std::vector<std::pair<OpId, Vec2>> path_to_center(NodeId w) const {
+    std::vector<std::pair<OpId, Vec2>> path;
+    for (NodeId x = w; bfs_parent[x] != kNone; x = bfs_parent[x]) path.push_back({in_op[x], in_vec[x]});
+    return path;
+  }
+
+  // Sets found to the collision of copies cx and cy at cell target, with the
+  // operations done that bring both there.
+  void report(uint32_t cx, uint32_t cy, Vec2 target) {
+    TreeCollision tc;
+    const Copy& X = M.copies[cx];
+    const Copy& Y = M.copies[cy];
+    tc.a = std::min(X.region, Y.region), tc.b = std::max(X.region, Y.region);
+    choose_ops(path_to_center(X.at), X.cell, target, tc.done);
+    choose_ops(path_to_center(Y.at), Y.cell, target, tc.done);
+    for (const Copy* cp : {&X, &Y})
+      if (cp->own != kNone && cp->own_done) tc.done.push_back(cp->own);
+    std::sort(tc.done.begin(), tc.done.end());
+    tc.done.erase(std::unique(tc.done.begin(), tc.done.end()), tc.done.end());
+    found = tc;
+  }
+
+  const size_t n;
+  Model M;
+  std::vector<char> removed;
+  std::vector<uint32_t> size;
+  std::vector<NodeId> bfs_parent;
+  std::vector<uint32_t> in_edge;  // edge from the BFS parent (toward the centroid)
+  std::vector<OpId> in_op;
+  std::vector<Vec2> in_vec, lo, hi;
+  std::vector<int> color;
+  std::vector<std::pair<NodeId, uint32_t>> comps;  // components left to search, with their depth
+  std::vector<NodeId> order;
+  std::vector<Rect> rects;
+  std::vector<std::pair<uint32_t, int>> edge_color;  // first edge of a subtree -> its colour
+  std::optional<TreeCollision> found;
+};
+
+}  // namespace
+
+bool tree_algorithm_applies(const Instance& inst) {
+  for (const Coupling& c : inst.couplings())
+    if (c.ops.size() != 1) return false;
+  FaceNets f = FaceNets::build(inst);
+  for (char b : f.coupling_breaks_cycle)
+    if (b) return false;
+  return true;
+}
+
+std::optional<TreeCollision> tree_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                            TreeStats* stats) {
+  TreeStats st;
+  std::optional<TreeCollision> found = CentroidSearch(inst, tree, regions).run(st);
   if (stats) *stats = st;
   return found;
 }

@@ -23,6 +23,17 @@ class Reader {
 
  private:
   Diagnostic error(const std::string& msg) const { return Diagnostic{name_, line_no_, msg}; }
+  // The header line t ('p grid NODES EDGES OPS COUPLINGS'): sets expect_.
+  MaybeError header_line(const std::vector<std::string_view>& t);
+  // A line after the header (n, e, o, q or a): adds its item to b_.
+  MaybeError item_line(const std::vector<std::string_view>& t);
+  // At the end of input: every promised item given, then the instance built.
+  MaybeError finish(Instance& out);
+  // Counts one more item of kind k (index into expect_); false (err_ set)
+  // past the header's count.
+  bool count(int k);
+  // False (err_ set) unless t has n fields, form being the line's syntax.
+  bool want(const std::vector<std::string_view>& t, size_t n, const char* form);
   // Reads the next line into line_; false at end of input. Sets err_ on bad bytes.
   bool next_line();
   bool integer(std::string_view tok, int64_t lo, int64_t hi, const char* what, int64_t& v);
@@ -33,6 +44,13 @@ class Reader {
   std::string line_;
   long line_no_ = 0;
   MaybeError err_;
+  InstanceBuilder b_;
+  bool header_ = false;
+  long anchor_line_ = 0;
+  int64_t expect_[4] = {0, 0, 0, 0};  // nodes, edges, ops, couplings
+  int64_t seen_[4] = {0, 0, 0, 0};
+  static constexpr const char* kWhat[4] = {"nodes", "edges", "operations", "couplings"};
+  std::vector<long> node_line_;  // for "not connected" messages
 };
 
 bool Reader::next_line() {
@@ -100,104 +118,108 @@ std::vector<std::string_view> split(std::string_view s) {
   return out;
 }
 
-MaybeError Reader::run(Instance& out) {
-  InstanceBuilder b;
-  bool header = false;
-  long anchor_line = 0;
-  int64_t expect[4] = {0, 0, 0, 0};  // nodes, edges, ops, couplings
-  int64_t seen[4] = {0, 0, 0, 0};
-  const char* what[4] = {"nodes", "edges", "operations", "couplings"};
-  std::vector<long> node_line;  // for "not connected" messages
-  auto count = [&](int k) -> bool {
-    if (++seen[k] > expect[k]) {
-      err_ = error(std::string("more ") + what[k] + " than the header's " + std::to_string(expect[k]));
-      return false;
+bool Reader::count(int k) {
+  if (++seen_[k] > expect_[k]) {
+    err_ = error(std::string("more ") + kWhat[k] + " than the header's " + std::to_string(expect_[k]));
+    return false;
+  }
+  return true;
+}
+
+bool Reader::want(const std::vector<std::string_view>& t, size_t n, const char* form) {
+  if (t.size() != n) {
+    err_ = error(std::string("expected '") + form + "', got " + std::to_string(t.size() - 1) + " fields");
+    return false;
+  }
+  return true;
+}
+
+MaybeError Reader::header_line(const std::vector<std::string_view>& t) {
+  if (header_) return error("second header line");
+  if (!want(t, 6, "p grid NODES EDGES OPS COUPLINGS")) return err_;
+  if (t[1] != "grid") return error("header must start 'p grid', got 'p " + std::string(t[1]) + "'");
+  for (int k = 0; k < 4; ++k)
+    if (!integer(t[2 + static_cast<size_t>(k)], 0, 2 * kMaxNodes, "count", expect_[k])) return err_;
+  header_ = true;
+  return std::nullopt;
+}
+
+MaybeError Reader::item_line(const std::vector<std::string_view>& t) {
+  if (!header_)
+    return error("missing header 'p grid NODES EDGES OPS COUPLINGS' before the first " + std::string(t[0]) + " line");
+  std::optional<std::string> problem;
+  switch (t[0][0]) {
+    case 'n': {
+      Vec2 c;
+      if (!want(t, 3, "n X Y") || !cell(t, 1, c) || !count(0)) return err_;
+      problem = b_.add_node(c);
+      node_line_.push_back(line_no_);
+      break;
     }
-    return true;
-  };
+    case 'e': {
+      Vec2 p, q;
+      if (!want(t, 5, "e X1 Y1 X2 Y2") || !cell(t, 1, p) || !cell(t, 3, q) || !count(1)) return err_;
+      problem = b_.add_edge(p, q);
+      break;
+    }
+    case 'o': {
+      Vec2 c;
+      if (!want(t, 6, "o NAME expand|grow|contract X Y DIR") || !cell(t, 3, c) || !count(2)) return err_;
+      OpKind k;
+      if (t[2] == "expand") k = OpKind::Expand;
+      else if (t[2] == "grow") k = OpKind::Grow;
+      else if (t[2] == "contract") k = OpKind::Contract;
+      else return error("unknown operation kind '" + std::string(t[2]) + "' (expand, grow or contract)");
+      auto d = parse_dir(t[5]);
+      if (!d) return error("bad direction '" + std::string(t[5]) + "' (one of +x, -x, +y, -y)");
+      problem = b_.add_op(std::string(t[1]), k, c, *d);
+      break;
+    }
+    case 'q': {
+      if (t.size() < 3) return error("expected 'q NAME OP...' with at least one operation");
+      if (!count(3)) return err_;
+      std::vector<std::string> ops;
+      for (size_t i = 2; i < t.size(); ++i) ops.emplace_back(t[i]);
+      problem = b_.add_coupling(std::string(t[1]), ops);
+      break;
+    }
+    case 'a': {
+      Vec2 c;
+      if (anchor_line_ > 0) return error("second anchor line (the first is line " + std::to_string(anchor_line_) + ")");
+      anchor_line_ = line_no_;
+      if (!want(t, 3, "a X Y") || !cell(t, 1, c)) return err_;
+      problem = b_.set_anchor(c);
+      break;
+    }
+    default: return error("unknown line type '" + std::string(t[0]) + "'");
+  }
+  if (problem) return error(*problem);
+  return std::nullopt;
+}
+
+MaybeError Reader::finish(Instance& out) {
+  if (err_) return err_;
+  if (!header_) return Diagnostic{name_, std::max<long>(line_no_, 1), "empty input: no 'p grid' header"};
+  for (int k = 0; k < 4; ++k)
+    if (seen_[k] < expect_[k])
+      return Diagnostic{name_, line_no_,
+                        "unexpected end of input: the header promises " + std::to_string(expect_[k]) + " " + kWhat[k] +
+                            ", the file gives " + std::to_string(seen_[k]) + " (truncated?)"};
+  if (auto fe = b_.finish(out)) {
+    long line = fe->node_index >= 0 ? node_line_[static_cast<size_t>(fe->node_index)] : line_no_;
+    return Diagnostic{name_, line, fe->message};
+  }
+  return std::nullopt;
+}
+
+MaybeError Reader::run(Instance& out) {
   while (next_line()) {
     auto t = split(line_);
     if (t.empty() || t[0] == "c" || t[0][0] == '#') continue;
     if (t[0].size() != 1) return error("unknown line type '" + std::string(t[0]) + "'");
-    char kind = t[0][0];
-    auto want = [&](size_t n, const char* form) -> bool {
-      if (t.size() != n) {
-        err_ = error(std::string("expected '") + form + "', got " + std::to_string(t.size() - 1) + " fields");
-        return false;
-      }
-      return true;
-    };
-    if (kind == 'p') {
-      if (header) return error("second header line");
-      if (!want(6, "p grid NODES EDGES OPS COUPLINGS")) return err_;
-      if (t[1] != "grid") return error("header must start 'p grid', got 'p " + std::string(t[1]) + "'");
-      for (int k = 0; k < 4; ++k)
-        if (!integer(t[2 + static_cast<size_t>(k)], 0, 2 * kMaxNodes, "count", expect[k])) return err_;
-      header = true;
-      continue;
-    }
-    if (!header)
-      return error("missing header 'p grid NODES EDGES OPS COUPLINGS' before the first " + std::string(t[0]) + " line");
-    std::optional<std::string> problem;
-    switch (kind) {
-      case 'n': {
-        Vec2 c;
-        if (!want(3, "n X Y") || !cell(t, 1, c) || !count(0)) return err_;
-        problem = b.add_node(c);
-        node_line.push_back(line_no_);
-        break;
-      }
-      case 'e': {
-        Vec2 p, q;
-        if (!want(5, "e X1 Y1 X2 Y2") || !cell(t, 1, p) || !cell(t, 3, q) || !count(1)) return err_;
-        problem = b.add_edge(p, q);
-        break;
-      }
-      case 'o': {
-        Vec2 c;
-        if (!want(6, "o NAME expand|grow|contract X Y DIR") || !cell(t, 3, c) || !count(2)) return err_;
-        OpKind k;
-        if (t[2] == "expand") k = OpKind::Expand;
-        else if (t[2] == "grow") k = OpKind::Grow;
-        else if (t[2] == "contract") k = OpKind::Contract;
-        else return error("unknown operation kind '" + std::string(t[2]) + "' (expand, grow or contract)");
-        auto d = parse_dir(t[5]);
-        if (!d) return error("bad direction '" + std::string(t[5]) + "' (one of +x, -x, +y, -y)");
-        problem = b.add_op(std::string(t[1]), k, c, *d);
-        break;
-      }
-      case 'q': {
-        if (t.size() < 3) return error("expected 'q NAME OP...' with at least one operation");
-        if (!count(3)) return err_;
-        std::vector<std::string> ops;
-        for (size_t i = 2; i < t.size(); ++i) ops.emplace_back(t[i]);
-        problem = b.add_coupling(std::string(t[1]), ops);
-        break;
-      }
-      case 'a': {
-        Vec2 c;
-        if (anchor_line > 0) return error("second anchor line (the first is line " + std::to_string(anchor_line) + ")");
-        anchor_line = line_no_;
-        if (!want(3, "a X Y") || !cell(t, 1, c)) return err_;
-        problem = b.set_anchor(c);
-        break;
-      }
-      default: return error("unknown line type '" + std::string(t[0]) + "'");
-    }
-    if (problem) return error(*problem);
+    if (MaybeError e = t[0][0] == 'p' ? header_line(t) : item_line(t)) return e;
   }
-  if (err_) return err_;
-  if (!header) return Diagnostic{name_, std::max<long>(line_no_, 1), "empty input: no 'p grid' header"};
-  for (int k = 0; k < 4; ++k)
-    if (seen[k] < expect[k])
-      return Diagnostic{name_, line_no_,
-                        "unexpected end of input: the header promises " + std::to_string(expect[k]) + " " + what[k] +
-                            ", the file gives " + std::to_string(seen[k]) + " (truncated?)"};
-  if (auto fe = b.finish(out)) {
-    long line = fe->node_index >= 0 ? node_line[static_cast<size_t>(fe->node_index)] : line_no_;
-    return Diagnostic{name_, line, fe->message};
-  }
-  return std::nullopt;
+  return finish(out);
 }
 
 }  // namespace

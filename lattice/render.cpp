@@ -43,89 +43,104 @@ std::string op_label(const Instance& inst, OpId k) {
   return q.ops.size() == 1 && q.name == op.name ? op.name : op.name + " [" + q.name + "]";
 }
 
-}  // namespace
+// The rectangles to draw: the configuration at opt.time under opt.schedule,
+// or, without a schedule, the initial one (no operation started).
+std::vector<RectQ> rects_to_draw(const Instance& inst, const RenderOptions& opt) {
+  if (opt.schedule != nullptr) return configuration_at(inst, *opt.schedule, opt.time);
+  Schedule none;
+  none.start.assign(inst.couplings().size(), Rational(1 << 20));  // nothing has started
+  return configuration_at(inst, none, Rational(0));
+}
 
-std::string render_svg(const Instance& inst, const RenderOptions& opt) {
-  const double S = opt.cell_px;
-  Regions regions = Regions::build(inst);
-  std::vector<RectQ> rects;
-  bool at_moment = opt.schedule != nullptr;
-  if (at_moment) {
-    rects = configuration_at(inst, *opt.schedule, opt.time);
-  } else {
-    Schedule none;
-    none.start.assign(inst.couplings().size(), Rational(1 << 20));  // nothing has started
-    rects = configuration_at(inst, none, Rational(0));
-  }
+// Where grid units land in the picture: each rectangle's box in grid units,
+// the window they span with one unit of margin, S pixels per unit, and a
+// title band of title_h pixels above the grid.
+struct View {
   struct Box {
     double x0, x1, y0, y1;
   };
-  std::vector<Box> box(rects.size());
-  double minx = std::numeric_limits<double>::max(), miny = minx, maxx = -minx, maxy = -minx;
-  for (size_t r = 0; r < rects.size(); ++r) {
-    box[r] = {rects[r].xlo.approx(), rects[r].xhi.approx(), rects[r].ylo.approx(), rects[r].yhi.approx()};
-    minx = std::min(minx, box[r].x0 - 1), maxx = std::max(maxx, box[r].x1 + 1);
-    miny = std::min(miny, box[r].y0 - 1), maxy = std::max(maxy, box[r].y1 + 1);
-  }
-  double legend_h = 18.0 * static_cast<double>(std::min<size_t>(inst.couplings().size(), 12) + 1) + 8;
-  double title_h = opt.title.empty() && !at_moment ? 0 : 26;
-  double W = (maxx - minx) * S, H = (maxy - miny) * S;
+  std::vector<Box> box;
+  double minx, miny, maxx, maxy;
+  double S;
+  double title_h;
   // Grid y grows upward; SVG y grows downward.
-  auto X = [&](double x) { return (x - minx) * S; };
-  auto Y = [&](double y) { return title_h + (maxy - y) * S; };
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(std::max(W, 440.0)) << "\" height=\""
-    << fmt(H + legend_h + title_h) << "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n";
-  o << "<defs><marker id=\"ah\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"5\" markerHeight=\"5\" "
-       "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker></defs>\n";
-  o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  std::string title = opt.title;
-  if (at_moment && title.empty()) title = "configuration at time " + opt.time.str();
-  if (!title.empty()) o << "<text x=\"8\" y=\"18\" font-size=\"14\">" << xml_escape(title) << "</text>\n";
-  // Light grid of the cells in view.
-  o << "<g stroke=\"#eeeeee\" stroke-width=\"1\">\n";
-  for (double x = std::ceil(minx); x <= maxx; x += 1)
-    o << "<line x1=\"" << fmt(X(x)) << "\" y1=\"" << fmt(Y(maxy)) << "\" x2=\"" << fmt(X(x)) << "\" y2=\""
-      << fmt(Y(miny)) << "\"/>\n";
-  for (double y = std::ceil(miny); y <= maxy; y += 1)
-    o << "<line x1=\"" << fmt(X(minx)) << "\" y1=\"" << fmt(Y(y)) << "\" x2=\"" << fmt(X(maxx)) << "\" y2=\""
-      << fmt(Y(y)) << "\"/>\n";
-  o << "</g>\n";
-  auto centre = [&](NodeId w) {
+  double X(double x) const { return (x - minx) * S; }
+  double Y(double y) const { return title_h + (maxy - y) * S; }
+  std::pair<double, double> centre(NodeId w) const {
     return std::pair<double, double>{(box[w].x0 + box[w].x1) / 2, (box[w].y0 + box[w].y1) / 2};
-  };
-  // Edges between node centres.
+  }
+};
+
+// The boxes of rects and the window around them (title_h is left to the caller).
+View view_of(const std::vector<RectQ>& rects, double S) {
+  View v;
+  v.box.resize(rects.size());
+  v.minx = std::numeric_limits<double>::max(), v.miny = v.minx, v.maxx = -v.minx, v.maxy = -v.minx;
+  for (size_t r = 0; r < rects.size(); ++r) {
+    v.box[r] = {rects[r].xlo.approx(), rects[r].xhi.approx(), rects[r].ylo.approx(), rects[r].yhi.approx()};
+    v.minx = std::min(v.minx, v.box[r].x0 - 1), v.maxx = std::max(v.maxx, v.box[r].x1 + 1);
+    v.miny = std::min(v.miny, v.box[r].y0 - 1), v.maxy = std::max(v.maxy, v.box[r].y1 + 1);
+  }
+  v.S = S;
+  v.title_h = 0;
+  return v;
+}
+
+// A light grid line at every whole grid unit in the window.
+void draw_grid(std::ostream& o, const View& v) {
+  o << "<g stroke=\"#eeeeee\" stroke-width=\"1\">\n";
+  for (double x = std::ceil(v.minx); x <= v.maxx; x += 1)
+    o << "<line x1=\"" << fmt(v.X(x)) << "\" y1=\"" << fmt(v.Y(v.maxy)) << "\" x2=\"" << fmt(v.X(x)) << "\" y2=\""
+      << fmt(v.Y(v.miny)) << "\"/>\n";
+  for (double y = std::ceil(v.miny); y <= v.maxy; y += 1)
+    o << "<line x1=\"" << fmt(v.X(v.minx)) << "\" y1=\"" << fmt(v.Y(y)) << "\" x2=\"" << fmt(v.X(v.maxx)) << "\" y2=\""
+      << fmt(v.Y(y)) << "\"/>\n";
+  o << "</g>\n";
+}
+
+// The plain edges (no operation on them) as lines between node centres.
+void draw_edges(std::ostream& o, const Instance& inst, const View& v) {
   o << "<g stroke=\"#555555\" stroke-width=\"2\">\n";
   for (const auto& e : inst.edges()) {
     if (e.op != kNone) continue;
-    auto [ax, ay] = centre(e.a);
-    auto [bx, by] = centre(e.b);
-    o << "<line x1=\"" << fmt(X(ax)) << "\" y1=\"" << fmt(Y(ay)) << "\" x2=\"" << fmt(X(bx)) << "\" y2=\"" << fmt(Y(by))
-      << "\"/>\n";
+    auto [ax, ay] = v.centre(e.a);
+    auto [bx, by] = v.centre(e.b);
+    o << "<line x1=\"" << fmt(v.X(ax)) << "\" y1=\"" << fmt(v.Y(ay)) << "\" x2=\"" << fmt(v.X(bx)) << "\" y2=\""
+      << fmt(v.Y(by)) << "\"/>\n";
   }
   o << "</g>\n";
-  // Growth targets (initial picture only): dashed cells.
-  if (!at_moment)
-    for (const auto& op : inst.ops()) {
-      if (op.kind != OpKind::Grow) continue;
-      Vec2 c = inst.cells()[op.u] + unit(op.dir);
-      o << "<rect x=\"" << fmt(X(static_cast<double>(c.x)) + 3) << "\" y=\"" << fmt(Y(static_cast<double>(c.y) + 1) + 3)
-        << "\" width=\"" << fmt(S - 6) << "\" height=\"" << fmt(S - 6) << "\" fill=\"none\" stroke=\""
-        << colour_of(op.coupling) << "\" stroke-dasharray=\"4 3\"/>\n";
-    }
-  // Regions.
-  std::vector<char> hit(rects.size(), 0);
-  if (opt.collision && opt.collision->kind == Collision::Kind::Node) hit[opt.collision->a] = hit[opt.collision->b] = 1;
-  if (opt.collision && opt.collision->kind == Collision::Kind::Cycle)
-    for (NodeId w : opt.collision->cycle) hit[w] = 1;
-  for (size_t r = 0; r < rects.size(); ++r) {
+}
+
+// Each growth's target cell as a dashed square in its coupling's colour.
+void draw_growth_targets(std::ostream& o, const Instance& inst, const View& v) {
+  for (const auto& op : inst.ops()) {
+    if (op.kind != OpKind::Grow) continue;
+    Vec2 c = inst.cells()[op.u] + unit(op.dir);
+    o << "<rect x=\"" << fmt(v.X(static_cast<double>(c.x)) + 3) << "\" y=\""
+      << fmt(v.Y(static_cast<double>(c.y) + 1) + 3) << "\" width=\"" << fmt(v.S - 6) << "\" height=\"" << fmt(v.S - 6)
+      << "\" fill=\"none\" stroke=\"" << colour_of(op.coupling) << "\" stroke-dasharray=\"4 3\"/>\n";
+  }
+}
+
+// Every region as a rounded rectangle titled with its label; the regions of
+// the collision (if any) in red, a width-0 one as a red bar.
+void draw_regions(std::ostream& o, const Instance& inst, const Regions& regions, const View& v,
+                  const Collision* collision) {
+  const auto& box = v.box;
+  const double S = v.S;
+  std::vector<char> hit(box.size(), 0);
+  if (collision && collision->kind == Collision::Kind::Node) hit[collision->a] = hit[collision->b] = 1;
+  if (collision && collision->kind == Collision::Kind::Cycle)
+    for (NodeId w : collision->cycle) hit[w] = 1;
+  for (size_t r = 0; r < box.size(); ++r) {
     double w = box[r].x1 - box[r].x0, h = box[r].y1 - box[r].y0;
     if (w <= 0 || h <= 0) {
       // A region of width 0 is no node yet (or no more); at a collision it is
       // one of the pair (a growth just starting), so show it as a red bar.
       if (hit[r])
-        o << "<line x1=\"" << fmt(X(box[r].x0)) << "\" y1=\"" << fmt(Y(box[r].y0)) << "\" x2=\"" << fmt(X(box[r].x1))
-          << "\" y2=\"" << fmt(Y(box[r].y1)) << "\" stroke=\"#d62728\" stroke-width=\"6\"><title>"
+        o << "<line x1=\"" << fmt(v.X(box[r].x0)) << "\" y1=\"" << fmt(v.Y(box[r].y0)) << "\" x2=\""
+          << fmt(v.X(box[r].x1)) << "\" y2=\"" << fmt(v.Y(box[r].y1))
+          << "\" stroke=\"#d62728\" stroke-width=\"6\"><title>"
           << xml_escape(region_label(inst, regions, static_cast<uint32_t>(r))) << " (width 0)</title></line>\n";
       continue;
     }
@@ -133,47 +148,50 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
     double inset = std::min({0.08, w / 4, h / 4});
     std::string fill = hit[r] ? "#ff9896" : node ? "#dddddd" : "#aec7e8";
     std::string stroke = hit[r] ? "#d62728" : "#333333";
-    o << "<rect x=\"" << fmt(X(box[r].x0 + inset)) << "\" y=\"" << fmt(Y(box[r].y1 - inset)) << "\" width=\""
+    o << "<rect x=\"" << fmt(v.X(box[r].x0 + inset)) << "\" y=\"" << fmt(v.Y(box[r].y1 - inset)) << "\" width=\""
       << fmt((w - 2 * inset) * S) << "\" height=\"" << fmt((h - 2 * inset) * S) << "\" rx=\"3\" fill=\"" << fill
       << "\" fill-opacity=\"0.85\" stroke=\"" << stroke << "\" stroke-width=\"" << (hit[r] ? 3 : 1.5) << "\"><title>"
       << xml_escape(region_label(inst, regions, static_cast<uint32_t>(r))) << "</title></rect>\n";
   }
-  // Operations as arrows, coloured by coupling.
+}
+
+// Each operation as an arrow in its coupling's colour, labelled with its name:
+// a double arrow for an expansion, an arrow toward u with a cross for a
+// contraction, an arrow into the target (half way at a moment) for a growth.
+void draw_operations(std::ostream& o, const Instance& inst, const View& v, bool at_moment) {
   for (OpId k = 0; k < inst.ops().size(); ++k) {
     const Operation& op = inst.ops()[k];
     std::string col = colour_of(op.coupling);
-    auto [ux, uy] = centre(op.u);
+    auto [ux, uy] = v.centre(op.u);
     Vec2 d = unit(op.dir);
     double tx, ty;
     if (op.kind == OpKind::Grow) {
       tx = ux + static_cast<double>(d.x) * (at_moment ? 0.5 : 1.0);
       ty = uy + static_cast<double>(d.y) * (at_moment ? 0.5 : 1.0);
     } else {
-      std::tie(tx, ty) = centre(op.v);
+      std::tie(tx, ty) = v.centre(op.v);
     }
     double sx = ux + static_cast<double>(d.x) * 0.22, sy = uy + static_cast<double>(d.y) * 0.22;
     double ex = tx - static_cast<double>(d.x) * 0.22, ey = ty - static_cast<double>(d.y) * 0.22;
     if (op.kind == OpKind::Contract) std::swap(sx, ex), std::swap(sy, ey);  // arrow toward u
-    o << "<line x1=\"" << fmt(X(sx)) << "\" y1=\"" << fmt(Y(sy)) << "\" x2=\"" << fmt(X(ex)) << "\" y2=\"" << fmt(Y(ey))
-      << "\" stroke=\"" << col << "\" stroke-width=\"3\" marker-end=\"url(#ah)\""
+    o << "<line x1=\"" << fmt(v.X(sx)) << "\" y1=\"" << fmt(v.Y(sy)) << "\" x2=\"" << fmt(v.X(ex)) << "\" y2=\""
+      << fmt(v.Y(ey)) << "\" stroke=\"" << col << "\" stroke-width=\"3\" marker-end=\"url(#ah)\""
       << (op.kind == OpKind::Expand ? " marker-start=\"url(#ah)\"" : "") << "/>\n";
     double mx = (ux + tx) / 2, my = (uy + ty) / 2;
     if (op.kind == OpKind::Contract) {
-      o << "<path d=\"M" << fmt(X(mx) - 5) << "," << fmt(Y(my) - 5) << " l10,10 M" << fmt(X(mx) - 5) << ","
-        << fmt(Y(my) + 5) << " l10,-10\" stroke=\"" << col << "\" stroke-width=\"2.5\"/>\n";
+      o << "<path d=\"M" << fmt(v.X(mx) - 5) << "," << fmt(v.Y(my) - 5) << " l10,10 M" << fmt(v.X(mx) - 5) << ","
+        << fmt(v.Y(my) + 5) << " l10,-10\" stroke=\"" << col << "\" stroke-width=\"2.5\"/>\n";
     }
     double lx = mx + (d.x == 0 ? 0.12 : 0), ly = my + (d.y == 0 ? 0.12 : 0);
-    o << "<text x=\"" << fmt(X(lx) + 2) << "\" y=\"" << fmt(Y(ly) - 2) << "\" fill=\"" << col
+    o << "<text x=\"" << fmt(v.X(lx) + 2) << "\" y=\"" << fmt(v.Y(ly) - 2) << "\" fill=\"" << col
       << "\" font-weight=\"bold\">" << xml_escape(op.name) << "</text>\n";
   }
-  // Anchor.
-  {
-    auto [ax, ay] = centre(inst.anchor());
-    o << "<circle cx=\"" << fmt(X(ax - 0.25)) << "\" cy=\"" << fmt(Y(ay + 0.25))
-      << "\" r=\"4\" fill=\"black\"><title>anchor</title></circle>\n";
-  }
-  // Legend: couplings by colour.
-  double ly = title_h + H + 18;
+}
+
+// The legend below the picture, starting at pixel row top: the first 12
+// couplings by colour with their operations, "..." if there are more.
+void draw_legend(std::ostream& o, const Instance& inst, double top, bool at_moment) {
+  double ly = top;
   o << "<text x=\"8\" y=\"" << fmt(ly) << "\" fill=\"#333\">couplings (colour: operations)"
     << (at_moment ? "" : "; dot: anchor; dashed: growth target") << "</text>\n";
   for (CouplingId q = 0; q < inst.couplings().size() && q < 12; ++q) {
@@ -184,6 +202,35 @@ std::string render_svg(const Instance& inst, const RenderOptions& opt) {
       << "<text x=\"26\" y=\"" << fmt(ly) << "\">" << xml_escape(inst.couplings()[q].name + ": " + ops) << "</text>\n";
   }
   if (inst.couplings().size() > 12) o << "<text x=\"8\" y=\"" << fmt(ly + 18) << "\">...</text>\n";
+}
+
+}  // namespace
+
+std::string render_svg(const Instance& inst, const RenderOptions& opt) {
+  Regions regions = Regions::build(inst);
+  bool at_moment = opt.schedule != nullptr;
+  View v = view_of(rects_to_draw(inst, opt), opt.cell_px);
+  double legend_h = 18.0 * static_cast<double>(std::min<size_t>(inst.couplings().size(), 12) + 1) + 8;
+  v.title_h = opt.title.empty() && !at_moment ? 0 : 26;
+  double W = (v.maxx - v.minx) * v.S, H = (v.maxy - v.miny) * v.S;
+  std::ostringstream o;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(std::max(W, 440.0)) << "\" height=\""
+    << fmt(H + legend_h + v.title_h) << "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n";
+  o << "<defs><marker id=\"ah\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"5\" markerHeight=\"5\" "
+       "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker></defs>\n";
+  o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string title = opt.title;
+  if (at_moment && title.empty()) title = "configuration at time " + opt.time.str();
+  if (!title.empty()) o << "<text x=\"8\" y=\"18\" font-size=\"14\">" << xml_escape(title) << "</text>\n";
+  draw_grid(o, v);
+  draw_edges(o, inst, v);
+  if (!at_moment) draw_growth_targets(o, inst, v);  // initial picture only
+  draw_regions(o, inst, regions, v, opt.collision);
+  draw_operations(o, inst, v, at_moment);
+  auto [ax, ay] = v.centre(inst.anchor());
+  o << "<circle cx=\"" << fmt(v.X(ax - 0.25)) << "\" cy=\"" << fmt(v.Y(ay + 0.25))
+    << "\" r=\"4\" fill=\"black\"><title>anchor</title></circle>\n";
+  draw_legend(o, inst, v.title_h + H + 18, at_moment);
   o << "</svg>\n";
   return o.str();
 }

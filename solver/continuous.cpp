@@ -121,21 +121,7 @@ class ComponentEncoder {
       return;
     }
     if (encoding_ == PairEncoding::Auto && r == 2) {
-      // Identical pairs (same forms) are common in gadget rows: cache.
-      std::vector<int64_t> key(c.base);
-      key.insert(key.end(), c.coef.begin(), c.coef.end());
-      key.push_back(c.num_forms);
-      auto it = cache_.find(key);
-      if (it == cache_.end()) it = cache_.emplace(std::move(key), free_offsets(c)).first;
-      z3::expr d = time_of(c.rel[1]) - time_of(c.rel[0]);
-      z3::expr_vector options(ctx_);
-      for (const OffsetInterval& iv : it->second) {
-        z3::expr in = ctx_.bool_val(true);
-        if (iv.lo) in = in && d >= rational(*iv.lo);
-        if (iv.hi) in = in && d <= rational(*iv.hi);
-        options.push_back(in);
-      }
-      s_.add(z3::mk_or(options));  // false if empty
+      encode_by_free_offsets(c);
       return;
     }
     // Events: t_q and t_q + 1 of the pair's couplings.
@@ -170,7 +156,36 @@ class ComponentEncoder {
       s_.add(z3::mk_or(options));
       return;
     }
-    // A cover of the time axis by M segments [x_{m-1}, x_m].
+    encode_segment_cover(c, ev, at_ev);
+  }
+
+  // A two-coupling pair: the offset t_b - t_a lies in one of the pair's free
+  // offset intervals (none: false).
+  void encode_by_free_offsets(const CollisionConstraint& c) {
+    // Identical pairs (same forms) are common in gadget rows: cache.
+    std::vector<int64_t> key(c.base);
+    key.insert(key.end(), c.coef.begin(), c.coef.end());
+    key.push_back(c.num_forms);
+    auto it = cache_.find(key);
+    if (it == cache_.end()) it = cache_.emplace(std::move(key), free_offsets(c)).first;
+    z3::expr d = time_of(c.rel[1]) - time_of(c.rel[0]);
+    z3::expr_vector options(ctx_);
+    for (const OffsetInterval& iv : it->second) {
+      z3::expr in = ctx_.bool_val(true);
+      if (iv.lo) in = in && d >= rational(*iv.lo);
+      if (iv.hi) in = in && d <= rational(*iv.hi);
+      options.push_back(in);
+    }
+    s_.add(z3::mk_or(options));  // false if empty
+  }
+
+  // The general pair: a cover of the time axis by M = 4r - 2 segments
+  // [x_{m-1}, x_m], on each of which one form is <= 0 at both ends and at
+  // every event inside. ev are the events (t_q and t_q + 1 of the pair's
+  // couplings), at_ev[i][e] form i at event e.
+  void encode_segment_cover(const CollisionConstraint& c, const std::vector<z3::expr>& ev,
+                            const std::vector<std::vector<z3::expr>>& at_ev) {
+    const size_t r = c.rel.size();
     const size_t M = 4 * r - 2;
     std::vector<z3::expr> x;
     for (size_t m = 0; m <= M; ++m) {
@@ -295,6 +310,107 @@ uint64_t z3_stat(const z3::stats& st, const char* key) {
   return 0;
 }
 
+// The components of the couplings joined by a pair constraint or a face
+// (union-find), in order of their smallest coupling, each with its pairs
+// and faces.
+std::vector<Component> components_of(size_t k, const ConstraintSystem& sys, const FaceNets& faces) {
+  UnionFind uf(k);
+  for (const auto& c : sys.constraints)
+    for (size_t j = 1; j < c.rel.size(); ++j) uf.unite(c.rel[0], c.rel[j]);
+  for (const auto& f : faces.faces)
+    for (size_t j = 1; j < f.nets.size(); ++j) uf.unite(f.nets[0].first, f.nets[j].first);
+  std::vector<int> comp_of(k, -1);
+  std::vector<Component> comps;
+  for (CouplingId q = 0; q < k; ++q) {
+    uint32_t root = uf.find(q);
+    if (comp_of[root] < 0) comp_of[root] = static_cast<int>(comps.size()), comps.emplace_back();
+    comp_of[q] = comp_of[root];
+    comps[static_cast<size_t>(comp_of[q])].couplings.push_back(q);
+  }
+  for (uint32_t ci = 0; ci < sys.constraints.size(); ++ci)
+    comps[static_cast<size_t>(comp_of[sys.constraints[ci].rel[0]])].pairs.push_back(ci);
+  for (uint32_t fi = 0; fi < faces.faces.size(); ++fi)
+    comps[static_cast<size_t>(comp_of[faces.faces[fi].nets[0].first])].faces.push_back(fi);
+  return comps;
+}
+
+// The first cheap sufficient test: the whole component at once (every pair
+// free with all its couplings starting together, every face's nets summing
+// to zero).
+bool component_free_all_at_once(const Component& comp, const ConstraintSystem& sys, const FaceNets& faces) {
+  bool at_once = true;
+  for (uint32_t ci : comp.pairs)
+    if (!pair_free_all_at_once(sys.constraints[ci])) {
+      at_once = false;
+      break;
+    }
+  for (uint32_t fi = 0; at_once && fi < comp.faces.size(); ++fi) {
+    Vec2 sum{0, 0};
+    for (auto& [q, v] : faces.faces[comp.faces[fi]].nets) sum += v;
+    if (!sum.is_zero()) at_once = false;
+  }
+  return at_once;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// What Z3 says of one component: Yes with its couplings' start times (in
+// comp.couplings order, the earliest at 0), No, or Unknown (opt's time or
+// conflict budget spent, Z3 gave up, or a time is no Rational).
+struct ComponentOutcome {
+  Verdict verdict = Verdict::Unknown;
+  std::vector<Rational> start;
+};
+
+// Encodes comp (ComponentEncoder) and asks Z3 within what is left of opt's
+// budgets: opt.seconds counted from start, opt.max_states conflicts counted
+// in conflicts (which the call's conflicts are added to, as are stats'
+// refuted, decisions and propagations).
+ComponentOutcome solve_component_z3(z3::context& ctx, const Component& comp, const ConstraintSystem& sys,
+                                    const FaceNets& faces, std::vector<int>& var_of, PairEncoding encoding,
+                                    std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& offsets_cache,
+                                    const SolveOptions& opt, std::chrono::steady_clock::time_point start,
+                                    uint64_t& conflicts, SolveStats& stats) {
+  ComponentOutcome out;
+  z3::solver s(ctx, "QF_LRA");
+  ComponentEncoder enc(ctx, s, comp, sys, faces, var_of, encoding, offsets_cache);
+  enc.encode();
+  if (opt.seconds > 0) {
+    double left = opt.seconds - seconds_since(start);
+    if (left <= 0) return out;
+    s.set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
+  }
+  if (opt.max_states > 0) {
+    if (conflicts >= opt.max_states) return out;
+    s.set("max_conflicts", static_cast<unsigned>(std::min<uint64_t>(opt.max_states - conflicts, UINT32_MAX)));
+  }
+  z3::check_result cr = s.check();
+  z3::stats st = s.statistics();
+  conflicts += z3_stat(st, "conflicts");
+  stats.refuted += z3_stat(st, "conflicts");
+  stats.decisions += z3_stat(st, "decisions");
+  stats.propagations += z3_stat(st, "propagations");
+  if (cr == z3::unsat) {
+    out.verdict = Verdict::No;
+    return out;
+  }
+  if (cr == z3::unknown) return out;
+  z3::model m = s.get_model();
+  std::vector<Rational> vals;
+  for (CouplingId q : comp.couplings) {
+    z3::expr v = m.eval(enc.time_of(q), true);
+    auto parsed = Rational::parse(Z3_get_numeral_string(ctx, v));
+    if (!parsed) return out;
+    vals.push_back(*parsed);
+  }
+  Rational lo = *std::min_element(vals.begin(), vals.end());
+  for (const Rational& v : vals) out.start.push_back(v - lo);
+  out.verdict = Verdict::Yes;
+  return out;
+}
+
 void check_witness(const Instance& inst, const Schedule& sched) {
   if (auto e = check_schedule_bounds(inst, sched)) throw std::logic_error("solver schedule out of bounds: " + *e);
   Simulator sim(inst);
@@ -330,32 +446,14 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt)
 
 ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt, PairEncoding encoding) {
   const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  auto elapsed = [&] { return seconds_since(start); };
   ContinuousResult res;
   const size_t k = inst.couplings().size();
   const FaceNets faces = FaceNets::build(inst);
   const SpanningTree tree = SpanningTree::build(inst);
   const ConstraintSystem sys = build_pair_constraints(inst, tree);
   res.stats.constraints = sys.constraints.size() + faces.faces.size();
-
-  // Components of couplings joined by a pair or a face.
-  UnionFind uf(k);
-  for (const auto& c : sys.constraints)
-    for (size_t j = 1; j < c.rel.size(); ++j) uf.unite(c.rel[0], c.rel[j]);
-  for (const auto& f : faces.faces)
-    for (size_t j = 1; j < f.nets.size(); ++j) uf.unite(f.nets[0].first, f.nets[j].first);
-  std::vector<int> comp_of(k, -1);
-  std::vector<Component> comps;
-  for (CouplingId q = 0; q < k; ++q) {
-    uint32_t root = uf.find(q);
-    if (comp_of[root] < 0) comp_of[root] = static_cast<int>(comps.size()), comps.emplace_back();
-    comp_of[q] = comp_of[root];
-    comps[static_cast<size_t>(comp_of[q])].couplings.push_back(q);
-  }
-  for (uint32_t ci = 0; ci < sys.constraints.size(); ++ci)
-    comps[static_cast<size_t>(comp_of[sys.constraints[ci].rel[0]])].pairs.push_back(ci);
-  for (uint32_t fi = 0; fi < faces.faces.size(); ++fi)
-    comps[static_cast<size_t>(comp_of[faces.faces[fi].nets[0].first])].faces.push_back(fi);
+  const std::vector<Component> comps = components_of(k, sys, faces);
 
   res.schedule.start.assign(k, Rational(0));
   z3::context ctx;
@@ -365,19 +463,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   bool unknown = false, needed_z3 = false;
   uint64_t conflicts = 0;
   for (const Component& comp : comps) {
-    // Cheap sufficient test: the whole component at once.
-    bool at_once = true;
-    for (uint32_t ci : comp.pairs)
-      if (!pair_free_all_at_once(sys.constraints[ci])) {
-        at_once = false;
-        break;
-      }
-    for (uint32_t fi = 0; at_once && fi < comp.faces.size(); ++fi) {
-      Vec2 sum{0, 0};
-      for (auto& [q, v] : faces.faces[comp.faces[fi]].nets) sum += v;
-      if (!sum.is_zero()) at_once = false;
-    }
-    if (at_once) {
+    if (component_free_all_at_once(comp, sys, faces)) {
       ++res.stats.safe_moves;
       continue;
     }
@@ -390,59 +476,20 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     }
     needed_z3 = true;
     ++res.stats.states;
-    z3::solver s(ctx, "QF_LRA");
-    ComponentEncoder enc(ctx, s, comp, sys, faces, var_of, encoding, offsets_cache);
-    enc.encode();
-    if (opt.seconds > 0) {
-      double left = opt.seconds - elapsed();
-      if (left <= 0) {
-        unknown = true;
-        break;
-      }
-      s.set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
-    }
-    if (opt.max_states > 0) {
-      if (conflicts >= opt.max_states) {
-        unknown = true;
-        break;
-      }
-      s.set("max_conflicts", static_cast<unsigned>(std::min<uint64_t>(opt.max_states - conflicts, UINT32_MAX)));
-    }
-    z3::check_result cr = s.check();
-    z3::stats st = s.statistics();
-    conflicts += z3_stat(st, "conflicts");
-    res.stats.refuted += z3_stat(st, "conflicts");
-    res.stats.decisions += z3_stat(st, "decisions");
-    res.stats.propagations += z3_stat(st, "propagations");
-    if (cr == z3::unsat) {
+    ComponentOutcome got = solve_component_z3(ctx, comp, sys, faces, var_of, encoding, offsets_cache, opt, start,
+                                              conflicts, res.stats);
+    if (got.verdict == Verdict::No) {
       res.status = Verdict::No;
       res.stats.engine = "z3";
       res.stats.seconds = elapsed();
       res.schedule.start.clear();
       return res;
     }
-    if (cr == z3::unknown) {
+    if (got.verdict == Verdict::Unknown) {
       unknown = true;
       break;
     }
-    z3::model m = s.get_model();
-    std::vector<Rational> vals;
-    bool fits = true;
-    for (CouplingId q : comp.couplings) {
-      z3::expr v = m.eval(enc.time_of(q), true);
-      auto parsed = Rational::parse(Z3_get_numeral_string(ctx, v));
-      if (!parsed) {
-        fits = false;
-        break;
-      }
-      vals.push_back(*parsed);
-    }
-    if (!fits) {
-      unknown = true;
-      break;
-    }
-    Rational lo = *std::min_element(vals.begin(), vals.end());
-    for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = vals[j] - lo;
+    for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = got.start[j];
   }
   res.stats.engine = needed_z3 ? "z3" : "trivial";
   if (!unknown && check_schedule_bounds(inst, res.schedule)) unknown = true;  // see the header: never observed

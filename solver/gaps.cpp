@@ -31,51 +31,77 @@ int64_t grows_toward(const Instance& inst, NodeId w, Dir d) {
   return (op.kind == OpKind::Grow && op.u == w && op.dir == d) ? 1 : 0;
 }
 
-}  // namespace
+// The breadth-first tree from the anchor (the same tree SpanningTree builds,
+// without its Euler tour: this is the hot loop of the checker) and every
+// node's final displacement along it (x only: nothing moves vertically).
+struct BfsTree {
+  std::vector<int64_t> D;       // final x displacement, by node
+  std::vector<NodeId> parent;   // kNone at the anchor
+  std::vector<char> tree_edge;  // by edge index
+};
 
-GapVerdict check_gaps(const Instance& inst) {
-  if (!inst.horizontal_only()) throw std::invalid_argument("check_gaps needs a horizontal-only instance");
-  GapVerdict v;
+BfsTree final_displacements(const Instance& inst) {
   const size_t n = inst.num_nodes();
-  const auto& cells = inst.cells();
   const auto& ops = inst.ops();
-  // Final displacement of every node (x only: nothing moves vertically), by
-  // a breadth-first search from the anchor (the same tree SpanningTree
-  // builds, without its Euler tour: this is the hot loop of the checker).
   const auto& edges = inst.edges();
-  std::vector<int64_t> D(n, 0);
-  std::vector<NodeId> parent(n, kNone);
-  std::vector<char> tree_edge(edges.size(), 0);
-  {
-    std::vector<NodeId> queue;
-    queue.reserve(n);
-    const NodeId root = inst.anchor();
-    queue.push_back(root);
-    parent[root] = root;
-    for (size_t head = 0; head < queue.size(); ++head) {
-      NodeId w = queue[head];
-      for (Dir d : kDirs) {
-        NodeId x = inst.neighbour(w, d);
-        if (x == kNone || parent[x] != kNone) continue;
-        uint32_t e = inst.edge_index(w, d);
-        tree_edge[e] = 1;
-        parent[x] = w;
-        int64_t step = 0;
-        if (OpId k = edges[e].op; k != kNone) {
-          step = unit(d).x;                                   // x moves away from w by one unit along d ...
-          if (ops[k].kind == OpKind::Contract) step = -step;  // ... or toward it
-        }
-        D[x] = D[w] + step;
-        queue.push_back(x);
+  BfsTree t{std::vector<int64_t>(n, 0), std::vector<NodeId>(n, kNone), std::vector<char>(edges.size(), 0)};
+  std::vector<int64_t>& D = t.D;
+  std::vector<NodeId>& parent = t.parent;
+  std::vector<NodeId> queue;
+  queue.reserve(n);
+  const NodeId root = inst.anchor();
+  queue.push_back(root);
+  parent[root] = root;
+  for (size_t head = 0; head < queue.size(); ++head) {
+    NodeId w = queue[head];
+    for (Dir d : kDirs) {
+      NodeId x = inst.neighbour(w, d);
+      if (x == kNone || parent[x] != kNone) continue;
+      uint32_t e = inst.edge_index(w, d);
+      t.tree_edge[e] = 1;
+      parent[x] = w;
+      int64_t step = 0;
+      if (OpId k = edges[e].op; k != kNone) {
+        step = unit(d).x;                                   // x moves away from w by one unit along d ...
+        if (ops[k].kind == OpKind::Contract) step = -step;  // ... or toward it
       }
+      D[x] = D[w] + step;
+      queue.push_back(x);
     }
-    parent[root] = kNone;
   }
+  parent[root] = kNone;
+  return t;
+}
 
-  // Cycles: each non-tree edge closes one fundamental cycle; with everything
-  // running at once its mismatch grows linearly, so only the end matters.
+// The tree path from a to b (through their lowest common ancestor); the
+// edge b-a closes it into a cycle.
+std::vector<NodeId> tree_path(const std::vector<NodeId>& parent, NodeId a, NodeId b) {
+  auto depth = [&](NodeId w) {
+    uint32_t dep = 0;
+    for (; parent[w] != kNone; w = parent[w]) ++dep;
+    return dep;
+  };
+  std::vector<NodeId> up_a, up_b;
+  NodeId x = a, y = b;
+  uint32_t dx = depth(x), dy = depth(y);
+  while (x != y) {
+    if (dx >= dy) up_a.push_back(x), x = parent[x], --dx;
+    else up_b.push_back(y), y = parent[y], --dy;
+  }
+  std::vector<NodeId> path = up_a;
+  path.push_back(x);
+  path.insert(path.end(), up_b.rbegin(), up_b.rend());
+  return path;
+}
+
+// Cycles: each non-tree edge closes one fundamental cycle; with everything
+// running at once its mismatch grows linearly, so only the end matters.
+// Counts them into v and reports the first open one (if v has no reason yet).
+void check_cycles(const Instance& inst, const BfsTree& t, GapVerdict& v) {
+  const auto& ops = inst.ops();
+  const auto& edges = inst.edges();
   for (uint32_t e = 0; e < edges.size(); ++e) {
-    if (tree_edge[e]) continue;
+    if (t.tree_edge[e]) continue;
     ++v.cycles_checked;
     const Edge& ed = edges[e];
     int64_t expected = 0;  // displacement of b relative to a that the edge itself makes
@@ -84,32 +110,22 @@ GapVerdict check_gaps(const Instance& inst) {
       int64_t s = unit(op.dir).x * (op.kind == OpKind::Contract ? -1 : 1);  // v relative to u
       expected = ed.a == op.u ? s : -s;
     }
-    int64_t mis = (D[ed.b] - D[ed.a]) - expected;
+    int64_t mis = (t.D[ed.b] - t.D[ed.a]) - expected;
     if (mis == 0) continue;
     ++v.open_cycles;
     if (v.reason != GapVerdict::Reason::None) continue;
     v.collision_free = false;
     v.reason = GapVerdict::Reason::Cycle;
     v.mismatch = mis;
-    // The tree path from a to b, then the edge back to a.
-    auto depth = [&](NodeId w) {
-      uint32_t dep = 0;
-      for (; parent[w] != kNone; w = parent[w]) ++dep;
-      return dep;
-    };
-    std::vector<NodeId> up_a, up_b;
-    NodeId x = ed.a, y = ed.b;
-    uint32_t dx = depth(x), dy = depth(y);
-    while (x != y) {
-      if (dx >= dy) up_a.push_back(x), x = parent[x], --dx;
-      else up_b.push_back(y), y = parent[y], --dy;
-    }
-    v.cycle = up_a;
-    v.cycle.push_back(x);
-    v.cycle.insert(v.cycle.end(), up_b.rbegin(), up_b.rend());
+    v.cycle = tree_path(t.parent, ed.a, ed.b);
   }
+}
 
-  // Gaps: consecutive nodes of each row, from the radix order.
+// Gaps: consecutive nodes of each row, from the radix order, at their final
+// displacements D. Counts them into v and reports the first negative one
+// (if v has no reason yet).
+void check_row_gaps(const Instance& inst, const std::vector<int64_t>& D, GapVerdict& v) {
+  const auto& cells = inst.cells();
   const std::vector<NodeId> order = nodes_by_row(inst);
   bool first_gap = v.reason == GapVerdict::Reason::None;
   for (const RowRun& run : row_runs(inst, order))
@@ -130,19 +146,31 @@ GapVerdict check_gaps(const Instance& inst) {
       v.initial_size = cells[b].x - cells[a].x - 1;
       v.final_size = final_size;
     }
+}
 
-  if (v.reason == GapVerdict::Reason::Gap) {
-    // The operations that change the reported gap: O(n), once.
-    const SpanningTree tree = SpanningTree::build(inst);
-    const OpTree ot(inst, tree);
-    // Each operation appears once on the path, and a growth is never on it.
-    ot.for_each_op_on_path(face_ref(inst, v.left, true), face_ref(inst, v.right, false), [&](OpId k, int sign) {
-      int64_t dx = sign * ot.child_vector(k).x;
-      if (dx != 0) v.changes.push_back({k, dx});
-    });
-    for (NodeId w : {v.left, v.right})
-      if (grows_toward(inst, w, w == v.left ? Dir::PosX : Dir::NegX)) v.changes.push_back({inst.op_of_node(w), -1});
-  }
+// The operations that change the reported gap (v.left, v.right) into
+// v.changes: O(n), once.
+void list_gap_changes(const Instance& inst, GapVerdict& v) {
+  const SpanningTree tree = SpanningTree::build(inst);
+  const OpTree ot(inst, tree);
+  // Each operation appears once on the path, and a growth is never on it.
+  ot.for_each_op_on_path(face_ref(inst, v.left, true), face_ref(inst, v.right, false), [&](OpId k, int sign) {
+    int64_t dx = sign * ot.child_vector(k).x;
+    if (dx != 0) v.changes.push_back({k, dx});
+  });
+  for (NodeId w : {v.left, v.right})
+    if (grows_toward(inst, w, w == v.left ? Dir::PosX : Dir::NegX)) v.changes.push_back({inst.op_of_node(w), -1});
+}
+
+}  // namespace
+
+GapVerdict check_gaps(const Instance& inst) {
+  if (!inst.horizontal_only()) throw std::invalid_argument("check_gaps needs a horizontal-only instance");
+  GapVerdict v;
+  const BfsTree t = final_displacements(inst);
+  check_cycles(inst, t, v);
+  check_row_gaps(inst, t.D, v);
+  if (v.reason == GapVerdict::Reason::Gap) list_gap_changes(inst, v);
   return v;
 }
 

@@ -130,6 +130,33 @@ TEST(GridFormat, RejectsEachBadInputClassWithItsMessage) {
   for (const auto& c : cases) EXPECT_EQ(error_of(c.text), c.message) << c.what;
 }
 
+// The reader's line rules one by one (header line, item lines, the counts
+// against the header at each item and at the end), each with its line number.
+TEST(GridFormat, LineRulesNameTheLineThatBreaksThem) {
+  const std::string two = "p grid 2 1 0 0\nn 0 0\nn 1 0\ne 0 0 1 0\n";
+  const std::vector<BadCase> cases = {
+      {"header not 'p grid'", "p cnf 1 0 0 0\n", "bad.grid:1: header must start 'p grid', got 'p cnf'"},
+      {"header field count", "c note\np grid 1 0 0\n",
+       "bad.grid:2: expected 'p grid NODES EDGES OPS COUPLINGS', got 4 fields"},
+      {"line type of two letters", "p grid 1 0 0 0\nnn 0 0\n", "bad.grid:2: unknown line type 'nn'"},
+      {"more edges than the header", "p grid 2 0 0 0\nn 0 0\nn 1 0\ne 0 0 1 0\n",
+       "bad.grid:4: more edges than the header's 0"},
+      {"more operations than the header", two + "o a expand 0 0 +x\n",
+       "bad.grid:5: more operations than the header's 0"},
+      {"more couplings than the header", "p grid 2 1 1 0\nn 0 0\nn 1 0\ne 0 0 1 0\no a expand 0 0 +x\nq Q a\n",
+       "bad.grid:6: more couplings than the header's 0"},
+      {"coupling without operations", "p grid 2 1 1 1\nn 0 0\nn 1 0\ne 0 0 1 0\no a expand 0 0 +x\nq Q\n",
+       "bad.grid:6: expected 'q NAME OP...' with at least one operation"},
+      {"second anchor", "p grid 2 1 0 0\nn 0 0\nn 1 0\ne 0 0 1 0\na 0 0\n\na 1 0\n",
+       "bad.grid:7: second anchor line (the first is line 5)"},
+      {"operation field count", two + "o a expand 0 0\n",
+       "bad.grid:5: expected 'o NAME expand|grow|contract X Y DIR', got 4 fields"},
+      {"truncated couplings", "p grid 2 1 1 1\nn 0 0\nn 1 0\ne 0 0 1 0\no a expand 0 0 +x\n",
+       "bad.grid:5: unexpected end of input: the header promises 1 couplings, the file gives 0 (truncated?)"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(error_of(c.text), c.message) << c.what;
+}
+
 TEST(GridFormat, OverlongLineIsReportedNotCrashed) {
   std::string text = "p grid 1 0 0 0\nc " + std::string(2 << 20, 'x') + "\n";
   EXPECT_EQ(error_of(text), "bad.grid:2: line longer than 1048576 bytes");
