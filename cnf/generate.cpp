@@ -8,21 +8,6 @@
 
 namespace gridlock {
 
-uint64_t Rng::below(uint64_t bound) {
-  if (bound == 0) throw std::invalid_argument("Rng::below(0)");
-  // 2^64 mod bound: draws below it would make small residues more likely.
-  const uint64_t threshold = (0 - bound) % bound;
-  while (true) {
-    uint64_t x = gen_();
-    if (x >= threshold) return x % bound;
-  }
-}
-
-int64_t Rng::between(int64_t lo, int64_t hi) {
-  if (lo > hi) throw std::invalid_argument("Rng::between: empty range");
-  return lo + static_cast<int64_t>(below(static_cast<uint64_t>(hi - lo) + 1));
-}
-
 namespace {
 
 void require(bool ok, const std::string& what) {
@@ -120,7 +105,7 @@ Formula random_lsat(const LsatParams& p) {
   // Which clauses pair up: the first 2*pairs of a random permutation.
   std::vector<size_t> perm(m);
   for (size_t i = 0; i < m; ++i) perm[i] = i;
-  for (size_t i = m; i > 1; --i) std::swap(perm[i - 1], perm[static_cast<size_t>(rng.below(i))]);
+  rng.shuffle(perm);
 
   Formula f;
   f.num_vars = p.n;
@@ -178,8 +163,7 @@ Formula random_lsat(const LsatParams& p) {
     }
     if (!ok) continue;
     // The shared literal would always come first: shuffle within clauses.
-    for (auto& c : f.clauses)
-      for (size_t i = c.size(); i > 1; --i) std::swap(c[i - 1], c[static_cast<size_t>(rng.below(i))]);
+    for (auto& c : f.clauses) rng.shuffle(c);
     return f;
   }
 }

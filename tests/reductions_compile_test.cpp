@@ -5,7 +5,6 @@
 
 #include <functional>
 #include <iostream>
-#include <random>
 
 #include "cnf/brute_force.hpp"
 #include "cnf/dimacs.hpp"
@@ -84,7 +83,7 @@ TEST(Compile, CouplingsOfLsatInputHaveAtMostThreeOperations) {
 TEST(Compile, GadgetsDoNotInterfere) {
   const uint64_t seed = test::base_seed(2024);
   Rng rng(seed);
-  std::mt19937_64 shuffle(seed);
+  Rng order_rng(seed);
   int colliding = 0, total = 0;
   for (int t = 0; t < test::scaled(300); ++t) {
     int n = static_cast<int>(rng.between(1, 4)), m = static_cast<int>(rng.between(1, 5));
@@ -96,7 +95,7 @@ TEST(Compile, GadgetsDoNotInterfere) {
     std::vector<CouplingId> order(c.instance.couplings().size());
     for (CouplingId q = 0; q < order.size(); ++q) order[q] = q;
     for (int r = 0; r < 10; ++r) {
-      std::shuffle(order.begin(), order.end(), shuffle);
+      order_rng.shuffle(order);
       bool got = order_collides(c, order), want = test::order_breaks_contracts(c, order);
       ASSERT_EQ(got, want) << "seed " << seed << " formula\n" << to_dimacs(f);
       colliding += got;
