@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "common/assert.hpp"
 #include "common/int_math.hpp"
 
 namespace gridlock {
@@ -306,6 +307,8 @@ std::vector<Lin> projected_constraints(const PairSystem& S, const Normals& N) {
 }  // namespace
 
 std::vector<RegionForm> region_forms(const Instance& inst, const Regions& regions) {
+  GRIDLOCK_ASSERT(std::ranges::none_of(FaceNets::build(inst).coupling_breaks_cycle, [](char b) { return b != 0; }),
+                  "region_forms needs no coupling that breaks a cycle");
   std::vector<RegionForm> forms(regions.size());
   for (size_t r = 0; r < regions.size(); ++r) {
     const RegionShape& s = regions.shapes[r];
