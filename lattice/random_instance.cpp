@@ -10,15 +10,14 @@
 
 namespace gridlock {
 
-Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
-  if (p.nodes == 0) throw std::invalid_argument("random_instance needs at least one node");
-  // The instance stream starts from this scramble of the seed (kept so that
-  // every seed gives the instance it always gave).
-  Rng rng(seed * 0x2545F4914F6CDD1DULL + 0x1234567ULL);
-  InstanceBuilder b;
+namespace {
+
+// The shape: cells grown one by one from (0,0), each joined to the cell it
+// grew from (a tree). Returns the cells in the order added.
+std::vector<Vec2> grow_shape(const RandomInstanceParams& p, Rng& rng, InstanceBuilder& b,
+                             std::unordered_set<uint64_t>& taken) {
   std::vector<Vec2> cells{{0, 0}};
-  std::unordered_set<uint64_t> taken{cell_key({0, 0})};
-  std::vector<std::pair<Vec2, Vec2>> tree_edges;
+  taken.insert(cell_key({0, 0}));
   b.add_node({0, 0});
   while (cells.size() < p.nodes) {
     size_t from = p.path_shape ? cells.size() - 1 : rng.below(cells.size());
@@ -50,6 +49,34 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     b.add_edge(cells[from], c);
     cells.push_back(c);
   }
+  return cells;
+}
+
+// Random couplings: shuffle, then cut into groups of 1..max_coupling.
+void add_random_couplings(Rng& rng, InstanceBuilder& b, std::vector<std::string>& names, uint32_t max_coupling) {
+  rng.shuffle(names);
+  size_t i = 0, q = 0;
+  while (i < names.size()) {
+    size_t len = 1 + rng.below(std::max<uint32_t>(max_coupling, 1));
+    len = std::min(len, names.size() - i);
+    if (len > 1) {
+      std::vector<std::string> group(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(i + len));
+      b.add_coupling("Q" + std::to_string(++q), group);
+    }
+    i += len;
+  }
+}
+
+}  // namespace
+
+Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
+  if (p.nodes == 0) throw std::invalid_argument("random_instance needs at least one node");
+  // The instance stream starts from this scramble of the seed (kept so that
+  // every seed gives the instance it always gave).
+  Rng rng(seed * 0x2545F4914F6CDD1DULL + 0x1234567ULL);
+  InstanceBuilder b;
+  std::unordered_set<uint64_t> taken;
+  const std::vector<Vec2> cells = grow_shape(p, rng, b, taken);
   if (p.extra_edge_percent > 0)
     for (const Vec2& c : cells)
       for (Dir d : {Dir::PosX, Dir::PosY}) {
@@ -81,18 +108,7 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     }
     names.push_back(name);
   }
-  // Random couplings: shuffle, then cut into groups of 1..max_coupling.
-  rng.shuffle(names);
-  size_t i = 0, q = 0;
-  while (i < names.size()) {
-    size_t len = 1 + rng.below(std::max<uint32_t>(p.max_coupling, 1));
-    len = std::min(len, names.size() - i);
-    if (len > 1) {
-      std::vector<std::string> group(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(i + len));
-      b.add_coupling("Q" + std::to_string(++q), group);
-    }
-    i += len;
-  }
+  add_random_couplings(rng, b, names, p.max_coupling);
   Instance inst;
   if (auto err = b.finish(inst)) throw std::logic_error("random_instance built a bad instance: " + err->message);
   return inst;

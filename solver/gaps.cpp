@@ -31,6 +31,60 @@ int64_t grows_toward(const Instance& inst, NodeId w, Dir d) {
   return (op.kind == OpKind::Grow && op.u == w && op.dir == d) ? 1 : 0;
 }
 
+// Final displacement D of every node (x only: nothing moves vertically), by
+// a breadth-first search from the anchor (the same tree SpanningTree
+// builds, without its Euler tour: this is the hot loop of the checker);
+// parent (kNone at the root) and tree_edge describe that tree. O(n).
+void final_displacements(const Instance& inst, std::vector<int64_t>& D, std::vector<NodeId>& parent,
+                         std::vector<char>& tree_edge) {
+  const auto& edges = inst.edges();
+  const auto& ops = inst.ops();
+  const size_t n = inst.num_nodes();
+  std::vector<NodeId> queue;
+  queue.reserve(n);
+  const NodeId root = inst.anchor();
+  queue.push_back(root);
+  parent[root] = root;
+  for (size_t head = 0; head < queue.size(); ++head) {
+    NodeId w = queue[head];
+    for (Dir d : kDirs) {
+      NodeId x = inst.neighbour(w, d);
+      if (x == kNone || parent[x] != kNone) continue;
+      uint32_t e = inst.edge_index(w, d);
+      tree_edge[e] = 1;
+      parent[x] = w;
+      int64_t step = 0;
+      if (OpId k = edges[e].op; k != kNone) {
+        step = unit(d).x;                                   // x moves away from w by one unit along d ...
+        if (ops[k].kind == OpKind::Contract) step = -step;  // ... or toward it
+      }
+      D[x] = D[w] + step;
+      queue.push_back(x);
+    }
+  }
+  parent[root] = kNone;
+}
+
+// The path a ... b in the tree given by parent (kNone at the root). O(path).
+std::vector<NodeId> tree_path(const std::vector<NodeId>& parent, NodeId a, NodeId b) {
+  auto depth = [&](NodeId w) {
+    uint32_t dep = 0;
+    for (; parent[w] != kNone; w = parent[w]) ++dep;
+    return dep;
+  };
+  std::vector<NodeId> up_a, up_b;
+  NodeId x = a, y = b;
+  uint32_t dx = depth(x), dy = depth(y);
+  while (x != y) {
+    if (dx >= dy) up_a.push_back(x), x = parent[x], --dx;
+    else up_b.push_back(y), y = parent[y], --dy;
+  }
+  std::vector<NodeId> path = up_a;
+  path.push_back(x);
+  path.insert(path.end(), up_b.rbegin(), up_b.rend());
+  return path;
+}
+
 }  // namespace
 
 GapVerdict check_gaps(const Instance& inst) {
@@ -39,38 +93,11 @@ GapVerdict check_gaps(const Instance& inst) {
   const size_t n = inst.num_nodes();
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
-  // Final displacement of every node (x only: nothing moves vertically), by
-  // a breadth-first search from the anchor (the same tree SpanningTree
-  // builds, without its Euler tour: this is the hot loop of the checker).
   const auto& edges = inst.edges();
   std::vector<int64_t> D(n, 0);
   std::vector<NodeId> parent(n, kNone);
   std::vector<char> tree_edge(edges.size(), 0);
-  {
-    std::vector<NodeId> queue;
-    queue.reserve(n);
-    const NodeId root = inst.anchor();
-    queue.push_back(root);
-    parent[root] = root;
-    for (size_t head = 0; head < queue.size(); ++head) {
-      NodeId w = queue[head];
-      for (Dir d : kDirs) {
-        NodeId x = inst.neighbour(w, d);
-        if (x == kNone || parent[x] != kNone) continue;
-        uint32_t e = inst.edge_index(w, d);
-        tree_edge[e] = 1;
-        parent[x] = w;
-        int64_t step = 0;
-        if (OpId k = edges[e].op; k != kNone) {
-          step = unit(d).x;                                   // x moves away from w by one unit along d ...
-          if (ops[k].kind == OpKind::Contract) step = -step;  // ... or toward it
-        }
-        D[x] = D[w] + step;
-        queue.push_back(x);
-      }
-    }
-    parent[root] = kNone;
-  }
+  final_displacements(inst, D, parent, tree_edge);
 
   // Cycles: each non-tree edge closes one fundamental cycle; with everything
   // running at once its mismatch grows linearly, so only the end matters.
@@ -92,21 +119,7 @@ GapVerdict check_gaps(const Instance& inst) {
     v.reason = GapVerdict::Reason::Cycle;
     v.mismatch = mis;
     // The tree path from a to b, then the edge back to a.
-    auto depth = [&](NodeId w) {
-      uint32_t dep = 0;
-      for (; parent[w] != kNone; w = parent[w]) ++dep;
-      return dep;
-    };
-    std::vector<NodeId> up_a, up_b;
-    NodeId x = ed.a, y = ed.b;
-    uint32_t dx = depth(x), dy = depth(y);
-    while (x != y) {
-      if (dx >= dy) up_a.push_back(x), x = parent[x], --dx;
-      else up_b.push_back(y), y = parent[y], --dy;
-    }
-    v.cycle = up_a;
-    v.cycle.push_back(x);
-    v.cycle.insert(v.cycle.end(), up_b.rbegin(), up_b.rend());
+    v.cycle = tree_path(parent, ed.a, ed.b);
   }
 
   // Gaps: consecutive nodes of each row, from the radix order.
