@@ -304,6 +304,71 @@ void check_witness(const Instance& inst, const Schedule& sched) {
                            describe(inst, sim.regions(), *check.collision));
 }
 
+// Components of couplings joined by a pair or a face, with their pairs and
+// faces. O(k + constraints + faces) (union-find, near-linear).
+std::vector<Component> components_of(size_t k, const ConstraintSystem& sys, const FaceNets& faces) {
+  UnionFind uf(k);
+  for (const auto& c : sys.constraints)
+    for (size_t j = 1; j < c.rel.size(); ++j) uf.unite(c.rel[0], c.rel[j]);
+  for (const auto& f : faces.faces)
+    for (size_t j = 1; j < f.nets.size(); ++j) uf.unite(f.nets[0].first, f.nets[j].first);
+  std::vector<int> comp_of(k, -1);
+  std::vector<Component> comps;
+  for (CouplingId q = 0; q < k; ++q) {
+    uint32_t root = uf.find(q);
+    if (comp_of[root] < 0) comp_of[root] = static_cast<int>(comps.size()), comps.emplace_back();
+    comp_of[q] = comp_of[root];
+    comps[static_cast<size_t>(comp_of[q])].couplings.push_back(q);
+  }
+  for (uint32_t ci = 0; ci < sys.constraints.size(); ++ci)
+    comps[static_cast<size_t>(comp_of[sys.constraints[ci].rel[0]])].pairs.push_back(ci);
+  for (uint32_t fi = 0; fi < faces.faces.size(); ++fi)
+    comps[static_cast<size_t>(comp_of[faces.faces[fi].nets[0].first])].faces.push_back(fi);
+  return comps;
+}
+
+// Cheap sufficient test: the whole component at once is free (every pair,
+// and every face's nets sum to zero).
+bool free_all_at_once(const Component& comp, const ConstraintSystem& sys, const FaceNets& faces) {
+  for (uint32_t ci : comp.pairs)
+    if (!pair_free_all_at_once(sys.constraints[ci])) return false;
+  for (uint32_t fi : comp.faces) {
+    Vec2 sum{0, 0};
+    for (const auto& [q, v] : faces.faces[fi].nets) sum += v;
+    if (!sum.is_zero()) return false;
+  }
+  return true;
+}
+
+// Z3's time and conflict limits from what is left of opt's budget; false if
+// nothing is left.
+bool set_budget(z3::solver& s, const SolveOptions& opt, double elapsed_seconds, uint64_t conflicts) {
+  if (opt.seconds > 0) {
+    double left = opt.seconds - elapsed_seconds;
+    if (left <= 0) return false;
+    s.set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
+  }
+  if (opt.max_states > 0) {
+    if (conflicts >= opt.max_states) return false;
+    s.set("max_conflicts", static_cast<unsigned>(std::min<uint64_t>(opt.max_states - conflicts, UINT32_MAX)));
+  }
+  return true;
+}
+
+// The start times of comp's couplings in Z3's model; nullopt if one is not
+// a rational that Rational holds.
+std::optional<std::vector<Rational>> model_times(z3::context& ctx, const z3::model& m, const ComponentEncoder& enc,
+                                                 const Component& comp) {
+  std::vector<Rational> vals;
+  for (CouplingId q : comp.couplings) {
+    z3::expr v = m.eval(enc.time_of(q), true);
+    auto parsed = Rational::parse(Z3_get_numeral_string(ctx, v));
+    if (!parsed) return std::nullopt;
+    vals.push_back(*parsed);
+  }
+  return vals;
+}
+
 }  // namespace
 
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt) {
@@ -338,24 +403,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   const ConstraintSystem sys = build_pair_constraints(inst, tree);
   res.stats.constraints = sys.constraints.size() + faces.faces.size();
 
-  // Components of couplings joined by a pair or a face.
-  UnionFind uf(k);
-  for (const auto& c : sys.constraints)
-    for (size_t j = 1; j < c.rel.size(); ++j) uf.unite(c.rel[0], c.rel[j]);
-  for (const auto& f : faces.faces)
-    for (size_t j = 1; j < f.nets.size(); ++j) uf.unite(f.nets[0].first, f.nets[j].first);
-  std::vector<int> comp_of(k, -1);
-  std::vector<Component> comps;
-  for (CouplingId q = 0; q < k; ++q) {
-    uint32_t root = uf.find(q);
-    if (comp_of[root] < 0) comp_of[root] = static_cast<int>(comps.size()), comps.emplace_back();
-    comp_of[q] = comp_of[root];
-    comps[static_cast<size_t>(comp_of[q])].couplings.push_back(q);
-  }
-  for (uint32_t ci = 0; ci < sys.constraints.size(); ++ci)
-    comps[static_cast<size_t>(comp_of[sys.constraints[ci].rel[0]])].pairs.push_back(ci);
-  for (uint32_t fi = 0; fi < faces.faces.size(); ++fi)
-    comps[static_cast<size_t>(comp_of[faces.faces[fi].nets[0].first])].faces.push_back(fi);
+  const std::vector<Component> comps = components_of(k, sys, faces);
 
   res.schedule.start.assign(k, Rational(0));
   z3::context ctx;
@@ -365,19 +413,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   bool unknown = false, needed_z3 = false;
   uint64_t conflicts = 0;
   for (const Component& comp : comps) {
-    // Cheap sufficient test: the whole component at once.
-    bool at_once = true;
-    for (uint32_t ci : comp.pairs)
-      if (!pair_free_all_at_once(sys.constraints[ci])) {
-        at_once = false;
-        break;
-      }
-    for (uint32_t fi = 0; at_once && fi < comp.faces.size(); ++fi) {
-      Vec2 sum{0, 0};
-      for (auto& [q, v] : faces.faces[comp.faces[fi]].nets) sum += v;
-      if (!sum.is_zero()) at_once = false;
-    }
-    if (at_once) {
+    if (free_all_at_once(comp, sys, faces)) {
       ++res.stats.safe_moves;
       continue;
     }
@@ -393,20 +429,9 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     z3::solver s(ctx, "QF_LRA");
     ComponentEncoder enc(ctx, s, comp, sys, faces, var_of, encoding, offsets_cache);
     enc.encode();
-    if (opt.seconds > 0) {
-      double left = opt.seconds - elapsed();
-      if (left <= 0) {
-        unknown = true;
-        break;
-      }
-      s.set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
-    }
-    if (opt.max_states > 0) {
-      if (conflicts >= opt.max_states) {
-        unknown = true;
-        break;
-      }
-      s.set("max_conflicts", static_cast<unsigned>(std::min<uint64_t>(opt.max_states - conflicts, UINT32_MAX)));
+    if (!set_budget(s, opt, elapsed(), conflicts)) {
+      unknown = true;
+      break;
     }
     z3::check_result cr = s.check();
     z3::stats st = s.statistics();
@@ -425,22 +450,12 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
       unknown = true;
       break;
     }
-    z3::model m = s.get_model();
-    std::vector<Rational> vals;
-    bool fits = true;
-    for (CouplingId q : comp.couplings) {
-      z3::expr v = m.eval(enc.time_of(q), true);
-      auto parsed = Rational::parse(Z3_get_numeral_string(ctx, v));
-      if (!parsed) {
-        fits = false;
-        break;
-      }
-      vals.push_back(*parsed);
-    }
-    if (!fits) {
+    std::optional<std::vector<Rational>> times = model_times(ctx, s.get_model(), enc, comp);
+    if (!times) {
       unknown = true;
       break;
     }
+    const std::vector<Rational>& vals = *times;
     Rational lo = *std::min_element(vals.begin(), vals.end());
     for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = vals[j] - lo;
   }
