@@ -22,7 +22,7 @@ TEST(Generate, BoundedDrawIsInRangeAndRoughlyUniform) {
   ASSERT_EQ(freq.size(), 6u);
   for (auto [value, count] : freq) {
     EXPECT_LT(value, 6u);
-    EXPECT_NEAR(count, draws / 6, draws / 60) << value;  // 10% of the expected count: > 10 sigma
+    EXPECT_NEAR(count, draws / 6.0, draws / 60.0) << value;  // 10% of the expected count: > 10 sigma
   }
   for (int i = 0; i < 100; ++i) EXPECT_EQ(rng.below(1), 0u);
   const uint64_t big = (uint64_t{1} << 63) + 1;  // half of all draws are rejected
@@ -109,7 +109,7 @@ TEST(Generate, LsatCapMatchesItsDefinition) {
     for (int n = 0; n <= 200; ++n) {
       int best = 0;
       for (int m = 0; m <= 5 * n + 2; ++m)
-        if (static_cast<int64_t>(m) * L - m / 2 <= 2 * n) best = m;
+        if (static_cast<int64_t>(m) * L - m / 2 <= 2 * static_cast<int64_t>(n)) best = m;
       EXPECT_EQ(lsat_max_clauses(n, L), best) << "n=" << n << " L=" << L;
     }
   EXPECT_EQ(lsat_max_clauses(5, 3), 4);

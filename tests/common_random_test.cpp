@@ -103,7 +103,7 @@ TEST(Random, ShufflePinnedAndAPermutation) {
     std::vector<int> sorted = p;
     std::sort(sorted.begin(), sorted.end());
     ASSERT_EQ(sorted, (std::vector<int>{0, 1, 2}));
-    ++seen[static_cast<size_t>(p[0] * 2 + (p[1] > p[2] ? 1 : 0))];
+    ++seen[(static_cast<size_t>(p[0]) * 2) + (p[1] > p[2] ? 1 : 0)];
   }
   for (int s : seen) EXPECT_NEAR(s, 1000, 150);  // about 5 sigma
   std::vector<int> empty;

@@ -38,7 +38,7 @@ Schedule times(const Instance& inst, const std::vector<std::pair<std::string, Ra
 
 TEST(ModelCases, Case1TwoGrowthsAlwaysMeet) {
   Instance inst = load("model-case1-two-growths.grid");
-  for (auto order : {std::vector<std::string>{"g1", "g2"}, std::vector<std::string>{"g2", "g1"}}) {
+  for (const auto& order : {std::vector<std::string>{"g1", "g2"}, std::vector<std::string>{"g2", "g1"}}) {
     auto c = run_order(inst, order);
     ASSERT_TRUE(c);
     EXPECT_EQ(c->kind, Collision::Kind::Node);
