@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_families.hpp"
+#include "common/random.hpp"
 #include "lattice/animation.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
@@ -15,9 +16,9 @@ namespace {
 
 Schedule random_order(const Instance& inst) {
   std::vector<CouplingId> order(inst.couplings().size());
-  uint64_t s = 7;
+  Rng rng(7);
   for (CouplingId q = 0; q < order.size(); ++q) order[q] = q;
-  for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[draw_below(s, i)]);
+  rng.shuffle(order);
   return schedule_from_order(order);
 }
 

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "common/random.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/random_instance.hpp"
 
@@ -41,14 +42,14 @@ inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t gro
     if (x + 1 < L) b.add_edge({x, 0}, {x + 1, 0});
     for (int64_t y = 0; y < H; ++y) b.add_edge({x, y}, {x, y + 1});
   }
-  uint64_t s = seed;
+  Rng rng(seed);
   std::vector<std::string> names;
   std::vector<char> used(static_cast<size_t>(L * (H + 1)), 0);
   int64_t attempts = 0;
   while (static_cast<int64_t>(names.size()) < k && ++attempts < 50 * k) {
-    bool tooth = where == CombOps::Teeth || (where == CombOps::Mixed && H > 0 && draw_below(s, 2) == 0);
-    int64_t x = static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(L - 1)));
-    int64_t y = tooth ? static_cast<int64_t>(draw_below(s, static_cast<uint64_t>(H))) : 0;
+    bool tooth = where == CombOps::Teeth || (where == CombOps::Mixed && H > 0 && rng.below(2) == 0);
+    int64_t x = static_cast<int64_t>(rng.below(static_cast<uint64_t>(L - 1)));
+    int64_t y = tooth ? static_cast<int64_t>(rng.below(static_cast<uint64_t>(H))) : 0;
     Vec2 u{x, y}, v = tooth ? Vec2{x, y + 1} : Vec2{x + 1, y};
     size_t iu = static_cast<size_t>(u.x * (H + 1) + u.y), iv = static_cast<size_t>(v.x * (H + 1) + v.y);
     if (used[iu] || used[iv]) continue;

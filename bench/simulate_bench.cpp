@@ -13,6 +13,7 @@
 #include <string>
 
 #include "bench_families.hpp"
+#include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
 
@@ -29,9 +30,9 @@ void run(benchmark::State& state, bool teeth, bool at_once) {
   }
   Simulator sim(inst);
   std::vector<CouplingId> order(inst.couplings().size());
-  uint64_t s = 7;
+  Rng rng(7);
   for (CouplingId q = 0; q < order.size(); ++q) order[q] = q;
-  for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[draw_below(s, i)]);
+  rng.shuffle(order);
   Schedule sched = schedule_from_order(order);
   SimStats stats;
   for (auto _ : state) {

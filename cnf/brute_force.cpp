@@ -131,7 +131,7 @@ class Dpll {
   bool assign(int lit) {
     int v = value(lit);
     if (v != 0) return v > 0;
-    val_[static_cast<size_t>(var_of(lit))] = static_cast<int8_t>(lit > 0 ? 1 : -1);
+    val_[static_cast<size_t>(var_of(lit))] = lit > 0 ? 1 : -1;
     trail_.push_back(lit);
     return true;
   }
@@ -193,7 +193,7 @@ class Dpll {
   }
 
   const Formula& f_;
-  std::vector<int8_t> val_;
+  std::vector<int> val_;  // per variable: 1 true, -1 false, 0 open
   std::vector<std::vector<size_t>> occ_;
   std::vector<int> trail_;
   size_t head_ = 0;

@@ -8,21 +8,6 @@
 
 namespace gridlock {
 
-uint64_t Rng::below(uint64_t bound) {
-  if (bound == 0) throw std::invalid_argument("Rng::below(0)");
-  // 2^64 mod bound: draws below it would make small residues more likely.
-  const uint64_t threshold = (0 - bound) % bound;
-  while (true) {
-    uint64_t x = gen_();
-    if (x >= threshold) return x % bound;
-  }
-}
-
-int64_t Rng::between(int64_t lo, int64_t hi) {
-  if (lo > hi) throw std::invalid_argument("Rng::between: empty range");
-  return lo + static_cast<int64_t>(below(static_cast<uint64_t>(hi - lo) + 1));
-}
-
 namespace {
 
 void require(bool ok, const std::string& what) {
@@ -80,7 +65,9 @@ int lsat_max_clauses(int n, int min_len) {
   return static_cast<int>(std::min<int64_t>(best, INT_MAX));
 }
 
-Formula random_lsat(const LsatParams& p) {
+namespace {
+
+void check_lsat_params(const LsatParams& p) {
   require(p.min_len >= 1 && p.min_len <= p.max_len && p.max_len <= 3,
           "clause lengths must satisfy 1 <= min <= max <= 3 (got " + std::to_string(p.min_len) + ".." +
               std::to_string(p.max_len) + ")");
@@ -91,14 +78,16 @@ Formula random_lsat(const LsatParams& p) {
   require(p.m <= cap, "an LSAT formula with " + std::to_string(p.n) + " variables and clauses of at least " +
                           std::to_string(p.min_len) + " literals has at most " + std::to_string(cap) +
                           " clauses (got m=" + std::to_string(p.m) + ")");
-  Rng rng(p.seed);
+}
+
+// Lengths, shortened at random until the clauses fit: a pair of clauses of
+// lengths a, b shares one literal, so it uses a + b - 1 distinct literals.
+// total: the sum of the lengths.
+std::vector<int> draw_lengths(Rng& rng, const LsatParams& p, int64_t& total) {
   const size_t m = static_cast<size_t>(p.m);
   const int64_t lits = 2 * static_cast<int64_t>(p.n);
-
-  // Lengths, shortened at random until the clauses fit: a pair of clauses of
-  // lengths a, b shares one literal, so it uses a + b - 1 distinct literals.
   std::vector<int> len(m);
-  int64_t total = 0;
+  total = 0;
   for (auto& l : len) total += l = static_cast<int>(rng.between(p.min_len, p.max_len));
   const int64_t max_pairs = static_cast<int64_t>(m / 2);
   while (total - max_pairs > lits) {
@@ -115,12 +104,75 @@ Formula random_lsat(const LsatParams& p) {
       longer.pop_back();
     }
   }
+  return len;
+}
+
+// Moves a random literal of pool whose variable clause does not hold yet
+// into clause (the first usable one from a random start); false if none.
+bool take_literal(Rng& rng, std::vector<int>& pool, std::vector<int>& clause) {
+  if (pool.empty()) return false;
+  size_t start = static_cast<size_t>(rng.below(pool.size()));
+  for (size_t d = 0; d < pool.size(); ++d) {
+    size_t at = (start + d) % pool.size();
+    int lit = pool[at];
+    bool ok = true;
+    for (int x : clause) ok = ok && var_of(x) != var_of(lit);
+    if (!ok) continue;
+    clause.push_back(lit);
+    pool[at] = pool.back();
+    pool.pop_back();
+    return true;
+  }
+  return false;
+}
+
+// One attempt at the clauses: literals drawn without replacement from all
+// 2n literals; the clauses perm[2i], perm[2i+1] (i < pairs) share their first
+// literal. False if the pool ran out of usable literals.
+bool fill_lsat_clauses(Rng& rng, int n, const std::vector<size_t>& perm, int64_t pairs, const std::vector<int>& len,
+                       std::vector<std::vector<int>>& clauses) {
+  std::vector<int> pool;
+  for (int v = 1; v <= n; ++v) {
+    pool.push_back(v);
+    pool.push_back(-v);
+  }
+  const size_t m = perm.size();
+  clauses.assign(m, {});
+  bool ok = true;
+  for (size_t t = 0; ok && t < m; ++t) {
+    const size_t a = perm[t];
+    auto& ca = clauses[a];
+    if (static_cast<int64_t>(t) < 2 * pairs) {
+      if (t % 2 == 1) continue;  // filled with its partner
+      const size_t b = perm[t + 1];
+      auto& cb = clauses[b];
+      ok = take_literal(rng, pool, ca);
+      if (ok) cb.push_back(ca[0]);
+      while (ok && ca.size() < static_cast<size_t>(len[a])) ok = take_literal(rng, pool, ca);
+      while (ok && cb.size() < static_cast<size_t>(len[b])) ok = take_literal(rng, pool, cb);
+    } else {
+      while (ok && ca.size() < static_cast<size_t>(len[a])) ok = take_literal(rng, pool, ca);
+    }
+  }
+  return ok;
+}
+
+}  // namespace
+
+Formula random_lsat(const LsatParams& p) {
+  check_lsat_params(p);
+  Rng rng(p.seed);
+  const size_t m = static_cast<size_t>(p.m);
+  const int64_t lits = 2 * static_cast<int64_t>(p.n);
+  int64_t total = 0;
+  const std::vector<int> len = draw_lengths(rng, p, total);
+  const int64_t max_pairs = static_cast<int64_t>(m / 2);
   const int64_t pairs = rng.between(std::max<int64_t>(0, total - lits), max_pairs);
 
   // Which clauses pair up: the first 2*pairs of a random permutation.
   std::vector<size_t> perm(m);
   for (size_t i = 0; i < m; ++i) perm[i] = i;
-  for (size_t i = m; i > 1; --i) std::swap(perm[i - 1], perm[static_cast<size_t>(rng.below(i))]);
+  rng.shuffle(perm);
 
   Formula f;
   f.num_vars = p.n;
@@ -130,58 +182,16 @@ Formula random_lsat(const LsatParams& p) {
                 "parameters: n=" + std::to_string(p.n) + " m=" + std::to_string(p.m) +
                     " min=" + std::to_string(p.min_len) + " max=" + std::to_string(p.max_len) +
                     " seed=" + std::to_string(p.seed)};
-
-  // Literals are drawn without replacement from all 2n literals; a clause
-  // skips literals of variables it already holds. Near the cap the pool can
-  // run out of usable literals for the last clause: then start over (the
-  // generator's state moves on, so the result is still a function of seed).
-  std::vector<int> pool;
-  auto take = [&](std::vector<int>& clause) -> bool {
-    if (pool.empty()) return false;
-    size_t start = static_cast<size_t>(rng.below(pool.size()));
-    for (size_t d = 0; d < pool.size(); ++d) {
-      size_t at = (start + d) % pool.size();
-      int lit = pool[at];
-      bool ok = true;
-      for (int x : clause) ok = ok && var_of(x) != var_of(lit);
-      if (!ok) continue;
-      clause.push_back(lit);
-      pool[at] = pool.back();
-      pool.pop_back();
-      return true;
-    }
-    return false;
-  };
-  for (int attempt = 0;; ++attempt) {
-    if (attempt == 1000) throw std::runtime_error("random_lsat: no formula found after 1000 attempts");
-    pool.clear();
-    for (int v = 1; v <= p.n; ++v) {
-      pool.push_back(v);
-      pool.push_back(-v);
-    }
-    f.clauses.assign(m, {});
-    bool ok = true;
-    for (size_t t = 0; ok && t < m; ++t) {
-      const size_t a = perm[t];
-      auto& ca = f.clauses[a];
-      if (static_cast<int64_t>(t) < 2 * pairs) {
-        if (t % 2 == 1) continue;  // filled with its partner
-        const size_t b = perm[t + 1];
-        auto& cb = f.clauses[b];
-        ok = take(ca);
-        if (ok) cb.push_back(ca[0]);
-        while (ok && ca.size() < static_cast<size_t>(len[a])) ok = take(ca);
-        while (ok && cb.size() < static_cast<size_t>(len[b])) ok = take(cb);
-      } else {
-        while (ok && ca.size() < static_cast<size_t>(len[a])) ok = take(ca);
-      }
-    }
-    if (!ok) continue;
+  // Near the cap the pool can run out of usable literals for the last
+  // clause: then start over (the generator's state moves on, so the result
+  // is still a function of seed).
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    if (!fill_lsat_clauses(rng, p.n, perm, pairs, len, f.clauses)) continue;
     // The shared literal would always come first: shuffle within clauses.
-    for (auto& c : f.clauses)
-      for (size_t i = c.size(); i > 1; --i) std::swap(c[i - 1], c[static_cast<size_t>(rng.below(i))]);
+    for (auto& c : f.clauses) rng.shuffle(c);
     return f;
   }
+  throw std::runtime_error("random_lsat: no formula found after 1000 attempts");
 }
 
 Formula planted_ksat(const PlantedParams& p, std::vector<bool>* planted) {

@@ -1,7 +1,7 @@
 // Seeded formula generators. The same parameters and seed give the same
 // formula, byte for byte, on every machine and compiler: the only randomness
-// is std::mt19937_64 (whose output sequence the C++ standard fixes) and our
-// own bounded draw (std::uniform_int_distribution is implementation-defined,
+// is the project's one generator, Rng (common/random.hpp: splitmix64 with our
+// own bounded draws; std::uniform_int_distribution is implementation-defined,
 // so it is never used). Each generator records its name, parameters and seed
 // in the formula's comments; `gridlock cnf gen` adds the command line.
 //
@@ -10,29 +10,12 @@
 #pragma once
 
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "common/random.hpp"
 
 namespace gridlock {
-
-// The random source of every generator (also used by tests and fuzzers that
-// need reproducible draws).
-class Rng {
- public:
-  explicit Rng(uint64_t seed) : gen_(seed) {}
-  uint64_t next() { return gen_(); }
-  // Uniform in [0, bound); requires bound > 0. Rejection sampling over the
-  // largest multiple of bound below 2^64: exact, and the same on every machine.
-  uint64_t below(uint64_t bound);
-  // Uniform in [lo, hi]; requires lo <= hi.
-  int64_t between(int64_t lo, int64_t hi);
-  bool coin() { return (gen_() >> 63) != 0; }
-
- private:
-  std::mt19937_64 gen_;
-};
 
 // Uniform random k-SAT (SATLIB's model): m clauses, each of k distinct
 // variables drawn uniformly from 1..n with uniform signs, independently.

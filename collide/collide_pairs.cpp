@@ -5,6 +5,9 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "common/assert.hpp"
+#include "common/int_math.hpp"
+
 namespace gridlock {
 
 namespace {
@@ -24,10 +27,9 @@ Vec2 edge_op_delta(const Operation& op) {
 // Compares n1/d1 with n2/d2 (d1, d2 > 0) without overflow: -1, 0, 1.
 int cmp_frac(i128 n1, i128 d1, i128 n2, i128 d2) {
   // Floors first; then compare the reciprocals of the fractional parts.
-  auto floordiv = [](i128 a, i128 b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); };
   int flip = 1;
   for (int guard = 0; guard < 400; ++guard) {
-    i128 q1 = floordiv(n1, d1), q2 = floordiv(n2, d2);
+    i128 q1 = floor_div(n1, d1), q2 = floor_div(n2, d2);
     if (q1 != q2) return q1 < q2 ? -flip : flip;
     i128 r1 = n1 - q1 * d1, r2 = n2 - q2 * d2;  // 0 <= r < d
     if (r1 == 0 || r2 == 0) {
@@ -110,24 +112,23 @@ constexpr int64_t kScale = int64_t{1} << kScaleBits;
 // values, as m / 2^20, have small denominators). nullopt if none.
 std::optional<int64_t> pick_scaled(const std::vector<Lin>& cons) {
   i128 lo = 0, hi = kScale;
-  auto floordiv = [](i128 a, i128 b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); };
   for (const Lin& L : cons) {
     i128 a = L.a[0], c = L.c;
     if (a == 0) {
       if (L.strict ? !(c > 0) : !(c >= 0)) return std::nullopt;
     } else if (a > 0) {  // m > -c/a  or m >= -c/a
-      i128 b = L.strict ? floordiv(-c, a) + 1 : -floordiv(c, a);
+      i128 b = L.strict ? floor_div(-c, a) + 1 : ceil_div(-c, a);
       lo = std::max(lo, b);
     } else {  // m < c/(-a)  or m <= c/(-a)
       // strict: m < c/(-a)  <=>  m <= ceil(c/(-a)) - 1
-      i128 b = L.strict ? -floordiv(-c, -a) - 1 : floordiv(c, -a);
+      i128 b = L.strict ? ceil_div(c, -a) - 1 : floor_div(c, -a);
       hi = std::min(hi, b);
     }
   }
   if (lo > hi) return std::nullopt;
   for (int k = 0; k <= kScaleBits; ++k) {
     i128 step = i128{1} << (kScaleBits - k);
-    i128 m = -floordiv(-lo, step) * step;  // ceil(lo / step) * step
+    i128 m = ceil_div(lo, step) * step;
     if (m <= hi) return static_cast<int64_t>(m);
   }
   return std::nullopt;
@@ -306,6 +307,8 @@ std::vector<Lin> projected_constraints(const PairSystem& S, const Normals& N) {
 }  // namespace
 
 std::vector<RegionForm> region_forms(const Instance& inst, const Regions& regions) {
+  GRIDLOCK_ASSERT(std::ranges::none_of(FaceNets::build(inst).coupling_breaks_cycle, [](char b) { return b != 0; }),
+                  "region_forms needs no coupling that breaks a cycle");
   std::vector<RegionForm> forms(regions.size());
   for (size_t r = 0; r < regions.size(); ++r) {
     const RegionShape& s = regions.shapes[r];

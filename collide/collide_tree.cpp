@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "common/assert.hpp"
+
 namespace gridlock {
 
 namespace {
@@ -386,6 +388,7 @@ bool tree_algorithm_applies(const Instance& inst) {
 
 std::optional<TreeCollision> tree_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                             TreeStats* stats) {
+  GRIDLOCK_ASSERT(tree_algorithm_applies(inst), "tree_collision needs singleton couplings and no cycle broken");
   TreeStats st;
   std::optional<TreeCollision> found = CentroidSearch(inst, tree, regions).run(st);
   if (stats) *stats = st;
@@ -394,6 +397,8 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
 
 std::optional<TreeCollision> tree_collision_pairwise(const Instance& inst, const SpanningTree& tree,
                                                      const Regions& regions) {
+  GRIDLOCK_ASSERT(tree_algorithm_applies(inst),
+                  "tree_collision_pairwise needs singleton couplings and no cycle broken");
   const size_t n = inst.num_nodes();
   Model M = build_model(inst, tree, regions);
   std::vector<Vec2> lo(n), hi(n);

@@ -1,6 +1,8 @@
 #include "lattice/instance.hpp"
 
 #include <algorithm>
+#include <initializer_list>
+#include <string_view>
 
 namespace gridlock {
 
@@ -58,6 +60,12 @@ Instance Instance::with_anchor(NodeId w) const {
 }
 
 namespace {
+// One allocation for a message built from pieces (a + b + c makes temporaries).
+std::string cat(std::initializer_list<std::string_view> parts) {
+  std::string s;
+  for (std::string_view p : parts) s += p;
+  return s;
+}
 std::string cell_str(Vec2 c) { return "(" + std::to_string(c.x) + "," + std::to_string(c.y) + ")"; }
 bool in_range(Vec2 c) {
   return c.x >= -kMaxCoordinate && c.x <= kMaxCoordinate && c.y >= -kMaxCoordinate && c.y <= kMaxCoordinate;
@@ -149,10 +157,10 @@ std::optional<std::string> InstanceBuilder::add_coupling(const std::string& name
   Coupling q{name, {}};
   for (const auto& o : ops) {
     OpId op = inst_.find_op(o);
-    if (op == kNone) return "unknown operation '" + o + "' in coupling '" + name + "'";
-    if (inst_.ops_[op].coupling == id) return "operation '" + o + "' named twice in coupling '" + name + "'";
+    if (op == kNone) return cat({"unknown operation '", o, "' in coupling '", name, "'"});
+    if (inst_.ops_[op].coupling == id) return cat({"operation '", o, "' named twice in coupling '", name, "'"});
     if (inst_.ops_[op].coupling != kNone)
-      return "operation '" + o + "' is already in coupling '" + inst_.couplings_[inst_.ops_[op].coupling].name + "'";
+      return cat({"operation '", o, "' is already in coupling '", inst_.couplings_[inst_.ops_[op].coupling].name, "'"});
     inst_.ops_[op].coupling = id;
     q.ops.push_back(op);
   }

@@ -1,48 +1,30 @@
 #include "lattice/random_instance.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
 #include <vector>
 
-#include "common/assert.hpp"
+#include "common/random.hpp"
 
 namespace gridlock {
 
 namespace {
-// splitmix64: tiny, fast, and the same everywhere.
-uint64_t next(uint64_t& s) {
-  uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-}  // namespace
 
-uint64_t draw_below(uint64_t& state, uint64_t n) {
-  GRIDLOCK_ASSERT(n > 0, "draw_below needs n > 0");
-  // Rejection sampling: no modulo bias.
-  uint64_t limit = UINT64_MAX - UINT64_MAX % n;
-  uint64_t x;
-  do x = next(state);
-  while (x >= limit);
-  return x % n;
-}
-
-Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
-  if (p.nodes == 0) throw std::invalid_argument("random_instance needs at least one node");
-  uint64_t s = seed * 0x2545F4914F6CDD1DULL + 0x1234567ULL;
-  InstanceBuilder b;
+// The shape: cells grown one by one from (0,0), each joined to the cell it
+// grew from (a tree). Returns the cells in the order added.
+std::vector<Vec2> grow_shape(const RandomInstanceParams& p, Rng& rng, InstanceBuilder& b,
+                             std::unordered_set<uint64_t>& taken) {
   std::vector<Vec2> cells{{0, 0}};
-  std::unordered_set<uint64_t> taken{cell_key({0, 0})};
-  std::vector<std::pair<Vec2, Vec2>> tree_edges;
+  taken.insert(cell_key({0, 0}));
   b.add_node({0, 0});
   while (cells.size() < p.nodes) {
-    size_t from = p.path_shape ? cells.size() - 1 : draw_below(s, cells.size());
-    Dir d = kDirs[draw_below(s, 4)];
-    if (p.spread > 0 && draw_below(s, p.spread + 1) != 0) {
+    size_t from = p.path_shape ? cells.size() - 1 : rng.below(cells.size());
+    Dir d = kDirs[rng.below(4)];
+    if (p.spread > 0 && rng.below(p.spread + 1) != 0) {
       // Prefer growing from recent cells: sparser, longer shapes.
-      from = cells.size() - 1 - draw_below(s, std::min<uint64_t>(cells.size(), 4));
+      from = cells.size() - 1 - rng.below(std::min<uint64_t>(cells.size(), 4));
     }
     Vec2 c = cells[from] + unit(d);
     if (taken.count(cell_key(c))) {
@@ -67,11 +49,39 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     b.add_edge(cells[from], c);
     cells.push_back(c);
   }
+  return cells;
+}
+
+// Random couplings: shuffle, then cut into groups of 1..max_coupling.
+void add_random_couplings(Rng& rng, InstanceBuilder& b, std::vector<std::string>& names, uint32_t max_coupling) {
+  rng.shuffle(names);
+  size_t i = 0, q = 0;
+  while (i < names.size()) {
+    size_t len = 1 + rng.below(std::max<uint32_t>(max_coupling, 1));
+    len = std::min(len, names.size() - i);
+    if (len > 1) {
+      std::vector<std::string> group(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(i + len));
+      b.add_coupling("Q" + std::to_string(++q), group);
+    }
+    i += len;
+  }
+}
+
+}  // namespace
+
+Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
+  if (p.nodes == 0) throw std::invalid_argument("random_instance needs at least one node");
+  // The instance stream starts from this scramble of the seed (kept so that
+  // every seed gives the instance it always gave).
+  Rng rng(seed * 0x2545F4914F6CDD1DULL + 0x1234567ULL);
+  InstanceBuilder b;
+  std::unordered_set<uint64_t> taken;
+  const std::vector<Vec2> cells = grow_shape(p, rng, b, taken);
   if (p.extra_edge_percent > 0)
     for (const Vec2& c : cells)
       for (Dir d : {Dir::PosX, Dir::PosY}) {
         Vec2 o = c + unit(d);
-        if (taken.count(cell_key(o)) && draw_below(s, 100) < p.extra_edge_percent)
+        if (taken.count(cell_key(o)) && rng.bernoulli(std::min(p.extra_edge_percent, 100U), 100))
           b.add_edge(c, o);  // may repeat: ignored
       }
   // Operations on distinct nodes.
@@ -79,11 +89,11 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
   std::vector<std::string> names;
   uint32_t tries = 0;
   while (names.size() < p.ops && tries++ < 20 * (p.ops + 4)) {
-    size_t ui = draw_below(s, cells.size());
+    size_t ui = rng.below(cells.size());
     if (used[ui]) continue;
-    Dir d = p.horizontal_only ? (draw_below(s, 2) ? Dir::PosX : Dir::NegX) : kDirs[draw_below(s, 4)];
+    Dir d = p.horizontal_only ? (rng.below(2) ? Dir::PosX : Dir::NegX) : kDirs[rng.below(4)];
     Vec2 u = cells[ui];
-    uint64_t kind_roll = draw_below(s, 10);
+    uint64_t kind_roll = rng.below(10);
     OpKind kind = OpKind::Expand;
     if (kind_roll >= 6 && p.allow_contract) kind = OpKind::Contract;
     if (kind_roll >= 8 && p.allow_grow) kind = OpKind::Grow;
@@ -98,18 +108,7 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     }
     names.push_back(name);
   }
-  // Random couplings: shuffle, then cut into groups of 1..max_coupling.
-  for (size_t i = names.size(); i > 1; --i) std::swap(names[i - 1], names[draw_below(s, i)]);
-  size_t i = 0, q = 0;
-  while (i < names.size()) {
-    size_t len = 1 + draw_below(s, std::max<uint32_t>(p.max_coupling, 1));
-    len = std::min(len, names.size() - i);
-    if (len > 1) {
-      std::vector<std::string> group(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(i + len));
-      b.add_coupling("Q" + std::to_string(++q), group);
-    }
-    i += len;
-  }
+  add_random_couplings(rng, b, names, p.max_coupling);
   Instance inst;
   if (auto err = b.finish(inst)) throw std::logic_error("random_instance built a bad instance: " + err->message);
   return inst;

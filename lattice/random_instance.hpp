@@ -6,7 +6,7 @@
 // nodes are joined too (cycles). Operations are then placed on random nodes
 // (each node in at most one), and grouped into random couplings.
 // Deterministic: the same parameters and seed give the same instance on
-// every machine (splitmix64 with our own bounded draws, random_instance.cpp).
+// every machine (common/random.hpp).
 #pragma once
 
 #include <cstdint>
@@ -29,9 +29,5 @@ struct RandomInstanceParams {
 
 // O(nodes) expected.
 Instance random_instance(const RandomInstanceParams& p, uint64_t seed);
-
-// Bounded uniform draw in [0, n) from a 64-bit generator, identical on every
-// platform (unlike std::uniform_int_distribution). Requires n > 0 (GRIDLOCK_ASSERT).
-uint64_t draw_below(uint64_t& state, uint64_t n);
 
 }  // namespace gridlock

@@ -7,6 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "common/int_math.hpp"
+
 namespace gridlock {
 
 namespace {
@@ -17,12 +19,6 @@ struct Frac {
   bool none() const { return den == 0; }
 };
 bool frac_less(const Frac& a, const Frac& b) { return a.num * b.den < b.num * a.den; }
-
-int64_t floor_div(int64_t a, int64_t b) {
-  int64_t q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-  return q;
-}
 
 // The earliest tau in [0, span] such that the rectangles A(t) = A + vA t and
 // B(t) = B + vB t overlap with positive area right after tau; none if never.

@@ -2,9 +2,11 @@
 # The test command (CI runs exactly this). In order:
 #  1. no file of the repository reaches beside it (scripts/check_self_contained.sh),
 #     and clang-format would change nothing (scripts/lint.sh --format-only);
-#  2. the optimised build and the whole suite, in a copy of the repository in
-#     a fresh temporary folder with nothing beside it: this proves the suite
-#     needs nothing outside the repository;
+#  2. the optimised build, clang-tidy on its compile database with zero
+#     findings (scripts/lint.sh --tidy-only; switches below), and the whole
+#     suite, in a copy of the repository in a fresh temporary folder with
+#     nothing beside it: this proves the suite needs nothing outside the
+#     repository;
 #  3. that build installed into a temporary prefix, and examples/api built
 #     against it with find_package(gridlock) and run on two formulas;
 #  4. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/);
@@ -13,6 +15,11 @@
 #   --quick    steps 1 to 3 only
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Gates: 1 on, 0 off. TIDY: clang-tidy's .clang-tidy checks (bugprone,
+# performance, ...). TIDY_FUNCTION_SIZE: its readability-function-size limit
+# (80 lines of body outside tests/) too.
+TIDY=1
+TIDY_FUNCTION_SIZE=0
 quick=0
 [ "${1:-}" = "--quick" ] && quick=1
 bash scripts/setup.sh
@@ -41,6 +48,11 @@ fi
 # ccache keys on paths relative to the copy, so repeated runs reuse objects.
 export CCACHE_BASEDIR="$copy" CCACHE_NOHASHDIR=1
 (cd "$copy" && BUILD_DIR=build bash scripts/build.sh -DGRIDLOCK_WERROR=ON)
+if [ "$TIDY" -eq 1 ]; then
+  echo "== tidy: clang-tidy finds nothing (.clang-tidy; function size: $([ "$TIDY_FUNCTION_SIZE" -eq 1 ] && echo on || echo off))"
+  size_flag=$([ "$TIDY_FUNCTION_SIZE" -eq 1 ] || echo --no-function-size)
+  (cd "$copy" && BUILD_DIR=build bash scripts/lint.sh --tidy-only $size_flag)
+fi
 (cd "$copy/build" && ctest --output-on-failure -j "$(nproc)")
 
 echo "== the API example against the installed package"

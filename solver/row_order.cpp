@@ -1,6 +1,9 @@
 #include "solver/row_order.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+
+#include "common/assert.hpp"
 
 namespace gridlock {
 
@@ -11,6 +14,8 @@ std::vector<NodeId> nodes_by_row(const Instance& inst) {
   static_assert(kMaxCoordinate < (int64_t{1} << 30), "the radix key needs coordinates below 2^30");
   std::vector<uint64_t> key(n);
   for (size_t i = 0; i < n; ++i) {
+    GRIDLOCK_ASSERT(std::abs(cells[i].x) <= kMaxCoordinate && std::abs(cells[i].y) <= kMaxCoordinate,
+                    "nodes_by_row needs cells within +-kMaxCoordinate");
     auto y = static_cast<uint64_t>(cells[i].y + kMaxCoordinate);
     auto x = static_cast<uint64_t>(cells[i].x + kMaxCoordinate);
     key[i] = (y << 31) | x;

@@ -1,8 +1,8 @@
 // Depth-first search over states (sets of done couplings), for any
 // constraint system. Why each rule keeps the answer exact: docs/solver.md.
 #include <algorithm>
-#include <random>
 #include <unordered_set>
+#include "common/random.hpp"
 
 #include "solver/search.hpp"
 
@@ -24,9 +24,9 @@ class StateSearch {
       : sys_(sys), budget_(budget), st_(st), k_(sys.num_couplings) {
     words_ = (k_ + 63) / 64;
     done_.assign(words_, 0);
-    std::mt19937_64 rng(0x5eed5eedULL);
+    Rng rng(0x5eed5eedULL);
     zobrist_.resize(k_);
-    for (auto& z : zobrist_) z = rng();
+    for (auto& z : zobrist_) z = rng.next();
     offset_.resize(sys.constraints.size() + 1, 0);
     for (size_t c = 0; c < sys.constraints.size(); ++c) offset_[c + 1] = offset_[c] + sys.constraints[c].num_forms;
     cur_.resize(offset_.back());

@@ -199,9 +199,8 @@ TEST(CnfCli, ErrorsAreFileLineMessage) {
   EXPECT_EQ(run_gridlock({"cnf", "gen", "ksat", "--n", "5"}).err,
             "gridlock: error: cnf gen: give exactly one of --m and --ratio\n");
   EXPECT_EQ(run_gridlock({"cnf", "gen", "nope", "--n", "5", "--m", "1"}).exit_code, 1);
-  EXPECT_EQ(run_gridlock({"cnf", "solve", "--solver", "exhaustive", GRIDLOCK_DATA_DIR "/satlib/uf50-218/uf50-01.cnf"})
-                .exit_code,
-            1);
+  const std::string uf50 = std::string(GRIDLOCK_DATA_DIR) + "/satlib/uf50-218/uf50-01.cnf";
+  EXPECT_EQ(run_gridlock({"cnf", "solve", "--solver", "exhaustive", uf50}).exit_code, 1);
   std::filesystem::remove_all(dir);
 }
 

@@ -23,6 +23,7 @@ Formula pigeonhole(int p) {
   auto x = [&](int i, int j) { return i * h + j + 1; };
   for (int i = 0; i < p; ++i) {
     std::vector<int> c;
+    c.reserve(static_cast<size_t>(h));
     for (int j = 0; j < h; ++j) c.push_back(x(i, j));
     f.clauses.push_back(c);
   }
@@ -40,7 +41,7 @@ TEST(Solver, OraclesAgreeOnRandomFormulas) {
     SCOPED_TRACE("GRIDLOCK_TEST_SEED=" + std::to_string(seed) + " case " + std::to_string(t));
     Rng rng(seed * 7777 + static_cast<uint64_t>(t));
     const int n = static_cast<int>(rng.between(1, 12));
-    const int m = static_cast<int>(rng.between(0, 6 * n));
+    const int m = static_cast<int>(rng.between(0, 6 * static_cast<int64_t>(n)));
     // Every third formula is messy: empty clauses, repeats, tautologies.
     Formula f = test::random_cnf(rng, n, m, t % 3 == 0 ? 0 : 1, t % 4 == 0 ? 5 : 3, t % 3 == 0);
     SatResult ex = exhaustive_sat(f);

@@ -147,7 +147,7 @@ TEST(ToLsat, Random3CnfBothWays) {
     Rng rng(seed * 1000 + static_cast<uint64_t>(t));
     const int n = static_cast<int>(rng.between(3, 14));
     // Ratios from 0 to 8 around the threshold 4.27: both answers common.
-    const int m = static_cast<int>(rng.between(0, 8 * n));
+    const int m = static_cast<int>(rng.between(0, 8 * static_cast<int64_t>(n)));
     Formula in = test::random_cnf(rng, n, m, 3, 3, false);
     ToLsatOptions opt;
     opt.passthrough = t % 2 == 0;
@@ -172,7 +172,7 @@ TEST(ToLsat, MessyCnfBothWays) {
     SCOPED_TRACE("GRIDLOCK_TEST_SEED=" + std::to_string(seed) + " case " + std::to_string(t));
     Rng rng(seed * 1000 + static_cast<uint64_t>(t));
     const int n = static_cast<int>(rng.between(1, 10));
-    const int m = static_cast<int>(rng.between(0, 5 * n));
+    const int m = static_cast<int>(rng.between(0, 5 * static_cast<int64_t>(n)));
     Formula in = test::random_cnf(rng, n, m, t % 5 == 0 ? 0 : 1, 7, true);
     ToLsatOptions opt;
     opt.passthrough = t % 3 != 0;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "collide/collide_pairs.hpp"
+#include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
@@ -11,15 +12,15 @@
 namespace gridlock {
 namespace {
 
-RegionForm random_form(uint64_t& s, size_t nq) {
+RegionForm random_form(Rng& rng, size_t nq) {
   RegionForm F;
   F.ref = 0;
-  int64_t x = static_cast<int64_t>(draw_below(s, 7)) - 3, y = static_cast<int64_t>(draw_below(s, 7)) - 3;
+  int64_t x = static_cast<int64_t>(rng.below(7)) - 3, y = static_cast<int64_t>(rng.below(7)) - 3;
   F.base[0] = x, F.base[1] = x + 1, F.base[2] = y, F.base[3] = y + 1;
-  uint64_t kind = draw_below(s, 4);  // 0 node, 1 inserted/grown (width p), 2 contracting (width 1-p)
+  uint64_t kind = rng.below(4);  // 0 node, 1 inserted/grown (width p), 2 contracting (width 1-p)
   if (kind == 0 || kind == 3) return F;
-  F.own = static_cast<CouplingId>(draw_below(s, nq));
-  int face = static_cast<int>(draw_below(s, 4));
+  F.own = static_cast<CouplingId>(rng.below(nq));
+  int face = static_cast<int>(rng.below(4));
   int opp = face ^ 1;
   bool hi_face = face % 2 == 1;
   if (kind == 1) {  // zero width at p = 0: face moves away from its opposite
@@ -36,14 +37,14 @@ TEST(CollidePairs, AgainstVertexEnumeration) {
   const int cases = test::scaled(10000);
   for (int i = 0; i < cases; ++i) {
     uint64_t seed = test::base_seed(4242) + static_cast<uint64_t>(i);
-    uint64_t s = seed * 104729 + 7;
-    size_t nq = 1 + draw_below(s, 4);
-    RegionForm A = random_form(s, nq), B = random_form(s, nq);
+    Rng rng(seed * 104729 + 7);
+    size_t nq = 1 + rng.below(4);
+    RegionForm A = random_form(rng, nq), B = random_form(rng, nq);
     PathNets nets;
     for (size_t q = 0; q < nq; ++q) {
-      if (draw_below(s, 4) == 0) continue;
-      Vec2 w{static_cast<int64_t>(draw_below(s, 5)) - 2, static_cast<int64_t>(draw_below(s, 5)) - 2};
-      if (draw_below(s, 3) == 0) w.y = 0;
+      if (rng.below(4) == 0) continue;
+      Vec2 w{static_cast<int64_t>(rng.below(5)) - 2, static_cast<int64_t>(rng.below(5)) - 2};
+      if (rng.below(3) == 0) w.y = 0;
       if (!w.is_zero()) nets.push_back({static_cast<CouplingId>(q), w});
     }
     std::string info = "seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED; A own " +

@@ -5,6 +5,7 @@
 
 #include "collide/collide.hpp"
 #include "collide/collide_tree.hpp"
+#include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
@@ -12,15 +13,15 @@
 namespace gridlock {
 namespace {
 
-RandomInstanceParams tiny_params(uint64_t& s, uint32_t max_coupling, uint32_t max_ops = 5) {
+RandomInstanceParams tiny_params(Rng& rng, uint32_t max_coupling, uint32_t max_ops = 5) {
   RandomInstanceParams p;
-  p.nodes = 2 + static_cast<uint32_t>(draw_below(s, 8 + max_ops - 5));
-  p.ops = 1 + static_cast<uint32_t>(draw_below(s, max_ops));
+  p.nodes = 2 + static_cast<uint32_t>(rng.below(8 + max_ops - 5));
+  p.ops = 1 + static_cast<uint32_t>(rng.below(max_ops));
   p.max_coupling = max_coupling;
-  p.extra_edge_percent = draw_below(s, 3) == 0 ? 40 : 0;
-  p.horizontal_only = draw_below(s, 6) == 0;
-  p.path_shape = draw_below(s, 5) == 0;
-  p.spread = static_cast<uint32_t>(draw_below(s, 3));
+  p.extra_edge_percent = rng.below(3) == 0 ? 40 : 0;
+  p.horizontal_only = rng.below(6) == 0;
+  p.path_shape = rng.below(5) == 0;
+  p.spread = static_cast<uint32_t>(rng.below(3));
   return p;
 }
 
@@ -56,8 +57,8 @@ void run_against_brute(uint64_t seed0, int cases, uint32_t max_coupling, size_t 
                        uint32_t max_ops = 5) {
   for (int i = 0; i < cases; ++i) {
     uint64_t seed = seed0 + static_cast<uint64_t>(i);
-    uint64_t s = seed * 7919 + 17;
-    RandomInstanceParams p = tiny_params(s, max_coupling, max_ops);
+    Rng rng(seed * 7919 + 17);
+    RandomInstanceParams p = tiny_params(rng, max_coupling, max_ops);
     Instance inst = random_instance(p, seed);
     std::string where = describe_seed(seed, p);
     SCOPED_TRACE(where);

@@ -9,7 +9,7 @@
 
 #include "cnf/formula.hpp"
 #include "common/assert.hpp"
-#include "lattice/random_instance.hpp"
+#include "common/random.hpp"
 #include "lattice/schedule.hpp"
 
 namespace gridlock {
@@ -18,8 +18,9 @@ namespace {
 #ifdef GRIDLOCK_ENABLE_ASSERT
 
 TEST(AssertDeathTest, BrokenRequiresStopsWithTheContract) {
-  uint64_t state = 1;
-  EXPECT_DEATH(draw_below(state, 0), "assertion failed: .*draw_below needs n > 0");
+  Rng rng(1);
+  EXPECT_DEATH(rng.below(0), "assertion failed: .*Rng::below needs bound > 0");
+  EXPECT_DEATH(rng.between(2, 1), "Rng::between needs lo <= hi");
   EXPECT_DEATH(var_of(0), "var_of needs a non-zero literal");
   EXPECT_DEATH(var_of(INT_MIN), "var_of needs a non-zero literal");
   EXPECT_DEATH(schedule_from_order({0, 0}), "needs a permutation of all coupling ids");
@@ -27,8 +28,8 @@ TEST(AssertDeathTest, BrokenRequiresStopsWithTheContract) {
 }
 
 TEST(AssertDeathTest, KeptContractsPass) {
-  uint64_t state = 1;
-  EXPECT_LT(draw_below(state, 3), 3U);
+  Rng rng(1);
+  EXPECT_LT(rng.below(3), 3U);
   EXPECT_EQ(var_of(-4), 4);
   EXPECT_EQ(schedule_from_order({1, 0}).start.size(), 2U);
 }

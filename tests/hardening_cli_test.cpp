@@ -225,7 +225,7 @@ TEST(HardeningCli, BreakGadgetMustBreakTheGadgetDrawn) {
   for (const std::string kind : {"variable", "clause", "order"})
     for (const std::string m :
          {"variable-loose-y", "clause-loose", "clause-tight", "order-loose", "order-drop-release"}) {
-      SCOPED_TRACE(kind + " " + m);
+      SCOPED_TRACE(std::string(kind).append(" ").append(m));
       auto r = run_gridlock({"gadget", kind, "--break-gadget", m});
       bool ok = std::find(applies.begin(), applies.end(), std::make_pair(kind, m)) != applies.end();
       if (ok) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "common/random.hpp"
 #include "lattice/animation.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
@@ -15,30 +16,30 @@ namespace {
 
 RandomInstanceParams params(uint64_t seed) {
   RandomInstanceParams p;
-  uint64_t s = seed * 7 + 3;
-  p.nodes = 2 + static_cast<uint32_t>(draw_below(s, 14));
-  p.ops = 1 + static_cast<uint32_t>(draw_below(s, 7));
-  p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 3));
-  p.extra_edge_percent = draw_below(s, 3) == 0 ? 40 : 0;
-  p.horizontal_only = draw_below(s, 4) == 0;
-  p.path_shape = draw_below(s, 4) == 0;  // long paths: deep part trees
-  p.spread = static_cast<uint32_t>(draw_below(s, 3));
+  Rng rng(seed * 7 + 3);
+  p.nodes = 2 + static_cast<uint32_t>(rng.below(14));
+  p.ops = 1 + static_cast<uint32_t>(rng.below(7));
+  p.max_coupling = 1 + static_cast<uint32_t>(rng.below(3));
+  p.extra_edge_percent = rng.below(3) == 0 ? 40 : 0;
+  p.horizontal_only = rng.below(4) == 0;
+  p.path_shape = rng.below(4) == 0;  // long paths: deep part trees
+  p.spread = static_cast<uint32_t>(rng.below(3));
   return p;
 }
 
 Schedule schedule(const Instance& inst, uint64_t seed, bool discrete) {
-  uint64_t s = seed ^ 0x5eed;
+  Rng rng(seed ^ 0x5eed);
   size_t k = inst.couplings().size();
   if (discrete) {
     std::vector<CouplingId> order(k);
     for (CouplingId q = 0; q < k; ++q) order[q] = q;
-    for (size_t i = k; i > 1; --i) std::swap(order[i - 1], order[draw_below(s, i)]);
+    rng.shuffle(order);
     return schedule_from_order(order);
   }
   Schedule sc;
   for (size_t q = 0; q < k; ++q) {
-    int64_t den = 1 + static_cast<int64_t>(draw_below(s, 4));
-    sc.start.push_back(Rational(static_cast<int64_t>(draw_below(s, 3 * static_cast<uint64_t>(den) + 1)) - den, den));
+    int64_t den = 1 + static_cast<int64_t>(rng.below(4));
+    sc.start.push_back(Rational(static_cast<int64_t>(rng.below(3 * static_cast<uint64_t>(den) + 1)) - den, den));
   }
   return sc;
 }

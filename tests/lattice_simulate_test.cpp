@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "common/random.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
@@ -37,7 +38,7 @@ Schedule times(const Instance& inst, const std::vector<std::pair<std::string, Ra
 
 TEST(ModelCases, Case1TwoGrowthsAlwaysMeet) {
   Instance inst = load("model-case1-two-growths.grid");
-  for (auto order : {std::vector<std::string>{"g1", "g2"}, std::vector<std::string>{"g2", "g1"}}) {
+  for (const auto& order : {std::vector<std::string>{"g1", "g2"}, std::vector<std::string>{"g2", "g1"}}) {
     auto c = run_order(inst, order);
     ASSERT_TRUE(c);
     EXPECT_EQ(c->kind, Collision::Kind::Node);
@@ -204,30 +205,30 @@ TEST(OperationGeometry, TouchingIsNoCollision) {
 
 RandomInstanceParams small_params(uint64_t seed) {
   RandomInstanceParams p;
-  uint64_t s = seed;
-  p.nodes = 2 + static_cast<uint32_t>(draw_below(s, 9));
-  p.ops = 1 + static_cast<uint32_t>(draw_below(s, 5));
-  p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 3));
-  p.extra_edge_percent = draw_below(s, 3) == 0 ? 40 : 0;
-  p.horizontal_only = draw_below(s, 4) == 0;
-  p.spread = static_cast<uint32_t>(draw_below(s, 3));
+  Rng rng(seed);
+  p.nodes = 2 + static_cast<uint32_t>(rng.below(9));
+  p.ops = 1 + static_cast<uint32_t>(rng.below(5));
+  p.max_coupling = 1 + static_cast<uint32_t>(rng.below(3));
+  p.extra_edge_percent = rng.below(3) == 0 ? 40 : 0;
+  p.horizontal_only = rng.below(4) == 0;
+  p.spread = static_cast<uint32_t>(rng.below(3));
   return p;
 }
 
 Schedule random_schedule(const Instance& inst, uint64_t seed, bool discrete) {
-  uint64_t s = seed ^ 0xabcdef;
+  Rng rng(seed ^ 0xabcdef);
   size_t k = inst.couplings().size();
   if (discrete) {
     std::vector<CouplingId> order(k);
     for (CouplingId q = 0; q < k; ++q) order[q] = q;
-    for (size_t i = k; i > 1; --i) std::swap(order[i - 1], order[draw_below(s, i)]);
+    rng.shuffle(order);
     return schedule_from_order(order);
   }
   Schedule sc;
   for (size_t q = 0; q < k; ++q) {
     // Small denominators so that starts and ends coincide often (the hard cases).
-    int64_t den = 1 + static_cast<int64_t>(draw_below(s, 3));
-    sc.start.push_back(Rational(static_cast<int64_t>(draw_below(s, 3 * static_cast<uint64_t>(den) + 1)), den));
+    int64_t den = 1 + static_cast<int64_t>(rng.below(3));
+    sc.start.push_back(Rational(static_cast<int64_t>(rng.below(3 * static_cast<uint64_t>(den) + 1)), den));
   }
   return sc;
 }

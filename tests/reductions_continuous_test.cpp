@@ -51,9 +51,10 @@ TEST(CompileContinuous, SizesFollowTheFormulas) {
     const auto L = static_cast<int64_t>(num_literals(f));
     SCOPED_TRACE("seed " + std::to_string(seed) + "\n" + to_dimacs(f));
     EXPECT_EQ(c.model, kCont);
-    EXPECT_EQ(c.stats.nodes, static_cast<size_t>(43 * n + 5 * L + 15 * m - 9));
+    EXPECT_EQ(c.stats.nodes,
+              static_cast<size_t>((43 * static_cast<int64_t>(n)) + (5 * L) + (15 * static_cast<int64_t>(m)) - 9));
     EXPECT_EQ(c.stats.edges, c.stats.nodes - 1);  // a tree
-    EXPECT_EQ(c.stats.ops, static_cast<size_t>(8 * n + L + 3 * m - 2));
+    EXPECT_EQ(c.stats.ops, static_cast<size_t>((8 * static_cast<int64_t>(n)) + L + (3 * static_cast<int64_t>(m)) - 2));
     EXPECT_EQ(c.stats.couplings, static_cast<size_t>(4 * n + m));
     EXPECT_EQ(c.stats.rows, static_cast<size_t>(11 * n + 6 * m - 4));
     EXPECT_EQ(c.stats.separation_gadgets, 1u);

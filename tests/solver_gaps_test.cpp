@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
 #include "solver/constraints.hpp"
@@ -18,17 +19,17 @@ namespace gridlock {
 namespace {
 
 RandomInstanceParams horizontal_params(uint64_t seed) {
-  uint64_t s = seed * 0x9E3779B97F4A7C15ULL + 7;
+  Rng rng(seed * 0x9E3779B97F4A7C15ULL + 7);
   RandomInstanceParams p;
   p.horizontal_only = true;
-  p.nodes = 2 + static_cast<uint32_t>(draw_below(s, 40));
-  p.ops = static_cast<uint32_t>(draw_below(s, p.nodes + 1));
-  p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 4));
-  p.extra_edge_percent = draw_below(s, 2) ? static_cast<uint32_t>(draw_below(s, 60)) : 0;
-  p.allow_grow = draw_below(s, 4) != 0;
-  p.allow_contract = draw_below(s, 4) != 0;
-  p.path_shape = draw_below(s, 5) == 0;
-  p.spread = static_cast<uint32_t>(draw_below(s, 3));
+  p.nodes = 2 + static_cast<uint32_t>(rng.below(40));
+  p.ops = static_cast<uint32_t>(rng.below(p.nodes + 1));
+  p.max_coupling = 1 + static_cast<uint32_t>(rng.below(4));
+  p.extra_edge_percent = rng.below(2) ? static_cast<uint32_t>(rng.below(60)) : 0;
+  p.allow_grow = rng.below(4) != 0;
+  p.allow_contract = rng.below(4) != 0;
+  p.path_shape = rng.below(5) == 0;
+  p.spread = static_cast<uint32_t>(rng.below(3));
   return p;
 }
 
@@ -116,14 +117,14 @@ TEST(Constraints, ReplayAgreesWithSimulator) {
   int collide = 0, clean = 0;
   for (int i = 0; i < test::scaled(3000); ++i) {
     uint64_t seed = base + static_cast<uint64_t>(i);
-    uint64_t s = seed * 31 + 5;
+    Rng rng(seed * 31 + 5);
     RandomInstanceParams p;
-    p.nodes = 3 + static_cast<uint32_t>(draw_below(s, 30));
-    p.ops = 1 + static_cast<uint32_t>(draw_below(s, 12));
-    p.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, 3));
-    p.extra_edge_percent = draw_below(s, 3) == 0 ? 30 : 0;
-    p.horizontal_only = draw_below(s, 2) == 0;
-    p.spread = static_cast<uint32_t>(draw_below(s, 3));
+    p.nodes = 3 + static_cast<uint32_t>(rng.below(30));
+    p.ops = 1 + static_cast<uint32_t>(rng.below(12));
+    p.max_coupling = 1 + static_cast<uint32_t>(rng.below(3));
+    p.extra_edge_percent = rng.below(3) == 0 ? 30 : 0;
+    p.horizontal_only = rng.below(2) == 0;
+    p.spread = static_cast<uint32_t>(rng.below(3));
     Instance inst = random_instance(p, seed);
     FaceNets faces = FaceNets::build(inst);
     if (std::any_of(faces.coupling_breaks_cycle.begin(), faces.coupling_breaks_cycle.end(), [](char b) { return b; }))
@@ -134,7 +135,7 @@ TEST(Constraints, ReplayAgreesWithSimulator) {
     if (inst.horizontal_only()) systems.push_back(build_gap_constraints(inst, tree));
     std::vector<CouplingId> order(inst.couplings().size());
     std::iota(order.begin(), order.end(), 0);
-    for (size_t j = order.size(); j > 1; --j) std::swap(order[j - 1], order[draw_below(s, j)]);
+    rng.shuffle(order);
     Simulator sim(inst);
     SimResult r = sim.run_order(order);
     for (const ConstraintSystem& sys : systems) {

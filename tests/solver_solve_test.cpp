@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "common/random.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
@@ -167,10 +168,10 @@ void run_family(const char* family, RandomInstanceParams p, int count, uint64_t 
     uint64_t seed = base + static_cast<uint64_t>(i);
     RandomInstanceParams q = p;
     if (vary) {
-      uint64_t s = seed * 0x9E3779B97F4A7C15ULL + 1;
-      q.nodes = 3 + static_cast<uint32_t>(draw_below(s, p.nodes));
-      q.ops = p.ops / 2 + static_cast<uint32_t>(draw_below(s, p.ops - p.ops / 2 + 1));
-      q.max_coupling = 1 + static_cast<uint32_t>(draw_below(s, p.max_coupling));
+      Rng rng(seed * 0x9E3779B97F4A7C15ULL + 1);
+      q.nodes = 3 + static_cast<uint32_t>(rng.below(p.nodes));
+      q.ops = p.ops / 2 + static_cast<uint32_t>(rng.below(p.ops - p.ops / 2 + 1));
+      q.max_coupling = 1 + static_cast<uint32_t>(rng.below(p.max_coupling));
     }
     Instance inst = random_instance(q, seed);
     if (inst.couplings().size() > 7) continue;

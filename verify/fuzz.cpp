@@ -15,13 +15,6 @@ const char* fuzz_kind_name(FuzzKind k) {
   return "?";
 }
 
-uint64_t fuzz_formula_seed(uint64_t seed, uint64_t index) {
-  uint64_t z = seed * 0x9E3779B97F4A7C15ull + index + 0x632BE59BD9B4E019ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
   const uint64_t s = fuzz_formula_seed(p.seed, index);
   Rng rng(s);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "common/random.hpp"
 #include "verify/shrink.hpp"
 #include "verify/verify.hpp"
 
@@ -22,9 +23,10 @@ struct FuzzParams {
   std::vector<FuzzKind> kinds = {FuzzKind::Ksat, FuzzKind::Lsat, FuzzKind::Planted};  // non-empty
 };
 
-// The seed of formula `index`: splitmix64 of (seed, index), so any formula of
-// any campaign is replayed from two numbers, whatever the sharding.
-uint64_t fuzz_formula_seed(uint64_t seed, uint64_t index);
+// The seed of formula `index`: derive_seed(seed, index) (common/random.hpp),
+// so any formula of any campaign is replayed from two numbers, whatever the
+// sharding.
+inline uint64_t fuzz_formula_seed(uint64_t seed, uint64_t index) { return derive_seed(seed, index); }
 
 // Formula `index` of the campaign: kind kinds[index % |kinds|], variables
 // uniform in [min_vars, max_vars], then

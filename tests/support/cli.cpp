@@ -70,6 +70,7 @@ CliResult run_gridlock(const std::vector<std::string>& args, const std::string& 
   std::vector<std::string> argv_s{GRIDLOCK_BINARY};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
+  argv.reserve(argv_s.size() + 1);
   for (auto& a : argv_s) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
@@ -99,6 +100,7 @@ CliProcess start_gridlock(const std::vector<std::string>& args, const std::strin
   std::vector<std::string> argv_s{GRIDLOCK_BINARY};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
+  argv.reserve(argv_s.size() + 1);
   for (auto& a : argv_s) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
