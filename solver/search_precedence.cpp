@@ -1,16 +1,12 @@
 // Learning precedence search for gap systems. Why it is exact and how the
-// learning works: docs/solver.md, "Precedence search (learning)".
+// learning works: docs/solver.md, section Engine "precedence".
 //
 // Variables: one per pair of couplings that share a gap; its two literals
-// are "a before b" and "b before a". A gap system holds along an order iff,
-// right after each narrower t of each gap c,
-//   base_c + coef_t + sum over u in c, u before t, of coef_u <= 0,
-// a pseudo-Boolean constraint over the literals "u before t" (narrowers u,
-// weight coef_u) and "t before w" (wideners w, weight |coef_w|) with bound
-//   K = -base_c - coef_t + sum of the wideners' |coef_w|
-// (the same constraint the SAT engine encodes as clauses). An assignment of
-// every variable that meets every such constraint and whose edges form no
-// cycle gives a solution: any topological order of its edges.
+// are "a before b" and "b before a". The gap system is a set of weighted
+// inequalities over them (solver/gap_inequalities.hpp, one per narrower and
+// gap). An assignment of every variable that meets every inequality and
+// whose edges form no cycle gives a solution: any topological order of its
+// edges (couplings that share no gap are free relative to each other).
 //
 // The search is CDCL over these literals: every derived "a before b" keeps
 // its reason (a gap constraint, a learned nogood, or two edges it closes a
@@ -21,8 +17,9 @@
 // on the Luby sequence, branches on the most active variable (bumped by
 // conflicts), and forgets the learned nogoods of worst glue periodically.
 // Node work is proportional to what changed: gap constraints keep running
-// sums of their true literals, nogoods are watched by two literals, and the
-// cycle check keeps a topological order edge by edge (PrecedenceOrder).
+// sums of their true literals, nogoods are watched by two literals, edges
+// join and leave the graph in O(1), and longer cycles than triangles are
+// looked for only when every variable is set (PrecedenceGraph).
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>

@@ -1,6 +1,6 @@
 // Chronological precedence search for gap systems (the twin of the learning
 // engine in search_precedence.cpp). Why each rule keeps the answer exact:
-// docs/solver.md, "Precedence search (chronological twin)".
+// docs/solver.md, "Chronological precedence search".
 //
 // In a gap system a state S is valid iff every form v_c(S) <= 0 (no gap is
 // negative), and a step from a valid state collides iff the state after it
