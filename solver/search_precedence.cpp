@@ -423,6 +423,7 @@ class LearningSearch {
 
   uint32_t glue(const std::vector<Lit>& lits) {
     std::vector<uint32_t> lv;
+    lv.reserve(lits.size());
     for (Lit l : lits) lv.push_back(level_[var(l)]);
     std::sort(lv.begin(), lv.end());
     return static_cast<uint32_t>(std::unique(lv.begin(), lv.end()) - lv.begin());
@@ -432,6 +433,7 @@ class LearningSearch {
   void learn(std::vector<Lit>& learned) {
     if (hooks_ && hooks_->on_learned) {
       std::vector<std::pair<CouplingId, CouplingId>> edges;
+      edges.reserve(learned.size());
       for (Lit l : learned) edges.push_back({from(l), to(l)});
       hooks_->on_learned(edges);
     }
