@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "cnf/dimacs.hpp"
+#include "cnf/generate.hpp"
 #include "cnf/sat_solver.hpp"
 #include "lattice/prepared.hpp"
 #include "lattice/random_instance.hpp"
@@ -310,6 +311,30 @@ void satlib_folder(const std::string& folder) {
 TEST(LearnEngine, SatlibUf20AgreesWithCadical) { satlib_folder("uf20-91"); }
 TEST(LearnEngine, SatlibUf50AgreesWithCadical) { satlib_folder("uf50-218"); }
 TEST(LearnEngine, SatlibUuf50AgreesWithCadical) { satlib_folder("uuf50-218"); }
+
+// Random 3-SAT at the threshold with 100 variables (seeds 7 and 33 of
+// docs/performance.md: 3 000-5 000 conflicts, so that the deletion of learned
+// nogoods, which starts at 2 000 live ones, runs): the learning engine agrees
+// with CaDiCaL on the source formula.
+TEST(LearnEngine, Random100AgreesWithCadicalThroughDeletion) {
+  const std::vector<uint64_t> seeds = {7, 33};
+  const auto want = static_cast<size_t>(test::scaled(2));
+  for (size_t i = 0; i < seeds.size() && i < want; ++i) {
+    KSatParams p;
+    p.n = 100;
+    p.m = 430;
+    p.seed = seeds[i];
+    const Formula f = random_ksat(p);
+    const bool sat = solve_sat(f).status == SatResult::Sat;
+    const Instance inst = compile_formula(reduce_to_lsat(f).output()).instance;
+    SolveOptions o;
+    o.engine = SolveOptions::Engine::Precedence;
+    const SolveResult r = solve_discrete(inst, o);
+    ASSERT_NE(r.status, Status::Unknown) << "seed " << seeds[i];
+    EXPECT_EQ(r.status == Status::Yes, sat) << "seed " << seeds[i];
+    EXPECT_GT(r.stats.refuted, 2000u) << "seed " << seeds[i] << ": deletion never ran";
+  }
+}
 
 }  // namespace
 }  // namespace gridlock
