@@ -18,7 +18,7 @@
 
 namespace gridlock {
 
-struct GapTerm {
+struct PrecedenceTerm {
   CouplingId first, second;  // the literal "first before second"
   int64_t weight;            // > 0
 };
@@ -27,7 +27,7 @@ struct GapTerm {
 // negative (base + all narrowers <= 0: no inequality). Returns false as soon
 // as f does. Requires c.num_forms == 1. O(|c.rel|^2).
 template <class F>
-bool for_each_gap_inequality(const CollisionConstraint& c, std::vector<GapTerm>& terms, F&& f) {
+bool for_each_gap_inequality(const CollisionConstraint& c, std::vector<PrecedenceTerm>& terms, F&& f) {
   int64_t narrow = 0, widen = 0;
   for (size_t j = 0; j < c.rel.size(); ++j) {
     const int64_t a = c.coef_of(j)[0];

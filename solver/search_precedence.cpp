@@ -103,14 +103,14 @@ class LearningSearch {
   bool build() {
     std::unordered_map<uint64_t, uint32_t> index;
     std::vector<std::pair<int64_t, Lit>> lits;
-    std::vector<GapTerm> terms;
+    std::vector<PrecedenceTerm> terms;
     for (const CollisionConstraint& c : sys_.constraints) {
       if (c.num_forms != 1) throw std::invalid_argument("precedence search needs one form per constraint");
       if (c.base[0] > 0) return false;  // overlapping from the start: the first step of c collides
       const bool ok = for_each_gap_inequality(c, terms, [&](auto& ts, int64_t bound) {
         if (bound < 0) return false;
         lits.clear();
-        for (const GapTerm& x : ts) lits.push_back({x.weight, make_lit(x.first, x.second, index)});
+        for (const PrecedenceTerm& x : ts) lits.push_back({x.weight, make_lit(x.first, x.second, index)});
         std::sort(lits.begin(), lits.end(), [](auto& p, auto& q) { return p.first > q.first; });
         gaps_.push_back(
             {bound, static_cast<uint32_t>(gap_lits_.size()), static_cast<uint32_t>(gap_lits_.size() + lits.size())});

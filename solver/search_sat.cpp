@@ -123,12 +123,12 @@ class SatSearch {
 
   bool encode() {
     std::vector<std::pair<int, int64_t>> lits;
-    std::vector<GapTerm> terms;
+    std::vector<PrecedenceTerm> terms;
     for (size_t ci = 0; ci < sys_.constraints.size(); ++ci) {
       if ((ci & 255) == 0) budget_.check(st_);
       const bool ok = for_each_gap_inequality(sys_.constraints[ci], terms, [&](auto& ts, int64_t bound) {
         lits.clear();
-        for (const GapTerm& x : ts) lits.push_back({before(x.first, x.second), x.weight});
+        for (const PrecedenceTerm& x : ts) lits.push_back({before(x.first, x.second), x.weight});
         return at_most(lits, bound);
       });
       if (!ok) return false;
