@@ -16,8 +16,11 @@
 // unsatisfiable formulas of seeds 1, 2, ...; m = 325 and 430 as SATLIB's
 // uf75-325 and uf100-430).
 //
-// Environment: GRIDLOCK_BENCH_ENGINES (comma list of sat, precedence, z3,
-// cadical; default sat,z3,cadical), GRIDLOCK_BENCH_SAMPLES (per family,
+// Engines: sat (CaDiCaL on the gap system), precedence (the learning
+// precedence engine), chrono (the chronological precedence engine, the
+// "before" of issue 15; search only, on the gap system), z3, cadical.
+// Environment: GRIDLOCK_BENCH_ENGINES (comma list of sat, precedence, chrono,
+// z3, cadical; default sat,precedence,z3,cadical), GRIDLOCK_BENCH_SAMPLES (per family,
 // default all), GRIDLOCK_BENCH_TIMEOUT (seconds per run, default 60),
 // GRIDLOCK_BENCH_CSV (append one line per sample and engine to this file).
 #include <benchmark/benchmark.h>
@@ -40,6 +43,7 @@
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
 #include "solver/constraints.hpp"
+#include "solver/search.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {
@@ -60,7 +64,7 @@ std::string env_or(const char* name, const std::string& dflt) {
 }
 double timeout_s() { return std::atof(env_or("GRIDLOCK_BENCH_TIMEOUT", "60").c_str()); }
 bool engine_on(const std::string& e) {
-  const std::string list = "," + env_or("GRIDLOCK_BENCH_ENGINES", "sat,z3,cadical") + ",";
+  const std::string list = "," + env_or("GRIDLOCK_BENCH_ENGINES", "sat,precedence,z3,cadical") + ",";
   return list.find("," + e + ",") != std::string::npos;
 }
 
@@ -186,7 +190,7 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
     state.SkipWithError("no samples");
     return;
   }
-  const std::vector<std::string> engines = {"sat", "precedence", "z3", "cadical"};
+  const std::vector<std::string> engines = {"sat", "precedence", "chrono", "z3", "cadical"};
   std::map<std::string, std::vector<Run>> runs;
   const double limit = timeout_s();
   for (auto _ : state) {
@@ -202,7 +206,20 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
           o.engine = e == "sat" ? SolveOptions::Engine::Sat : SolveOptions::Engine::Precedence;
           SolveResult res = solve_discrete(smp.inst, o);
           r.decisions = res.stats.decisions;
-          r.code = res.status == Verdict::Yes ? 10 : res.status == Verdict::No ? 20 : 0;
+          r.code = exit_code(res.status);
+        } else if (e == "chrono") {
+          const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
+          SolveOptions o;
+          o.seconds = limit;
+          SearchBudget budget(o);
+          SolveStats st;
+          try {
+            const SearchOutcome out = search_precedence_chronological(sys, budget, st);
+            r.code = out.status == Verdict::Yes ? 10 : 20;
+          } catch (const SearchBudget::LimitReached&) {
+            r.code = 0;
+          }
+          r.decisions = st.decisions;
         } else if (e == "z3") {
           const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
           r.code = z3_gap_system(sys, limit);
@@ -252,12 +269,18 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
   }
   // Worst per-sample ratio of the default engine against Z3 (same sample,
   // same run).
-  if (runs.count("sat") && runs.count("z3")) {
-    double worst_ratio = 0;
-    for (size_t i = 0; i < runs["sat"].size(); ++i)
-      worst_ratio = std::max(worst_ratio, runs["sat"][i].seconds / std::max(runs["z3"][i].seconds, 1e-9));
-    state.counters["sat_over_z3_max"] = worst_ratio;
-  }
+  // (and of the learning engine against Z3, CaDiCaL and the sat engine).
+  auto worst_ratio = [&](const std::string& a, const std::string& b) {
+    if (!runs.count(a) || !runs.count(b)) return;
+    double worst = 0;
+    for (size_t i = 0; i < runs[a].size(); ++i)
+      worst = std::max(worst, runs[a][i].seconds / std::max(runs[b][i].seconds, 1e-9));
+    state.counters[a + "_over_" + b + "_max"] = worst;
+  };
+  worst_ratio("sat", "z3");
+  worst_ratio("precedence", "z3");
+  worst_ratio("precedence", "sat");
+  worst_ratio("precedence", "cadical");
 }
 
 void BM_Satlib(benchmark::State& state, const std::string& set) { run_family(state, set, satlib(set)); }

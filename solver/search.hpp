@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 #include "common/limits.hpp"
@@ -92,10 +93,28 @@ struct SearchOutcome {
 // branched on; a closed set with none enabled proves a dead end).
 SearchOutcome search_states(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
 
-// Precedence search, gap systems only (every constraint one form; then a
-// step collides iff the state after it has a positive form, so only states
-// matter). Throws std::invalid_argument for a system with more forms.
-SearchOutcome search_precedence(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
+// What a test may watch inside the learning precedence search.
+struct PrecedenceHooks {
+  // Called with every nogood learned, as the clause it adds: at least one
+  // of these (a, b), "a before b", holds in every collision-free order.
+  std::function<void(const std::vector<std::pair<CouplingId, CouplingId>>&)> on_learned;
+};
+
+// Precedence search with learning, gap systems only (docs/solver.md,
+// "Precedence search (learning)"): CDCL over the literals "a before b" for
+// couplings that share a gap, with the gap constraints propagated as
+// weighted sums and cycles refused by an incrementally kept topological
+// order. Statistics: decisions, refuted = conflicts, propagations = implied
+// literals, states = decisions + conflicts. hooks (optional) for tests.
+// Throws std::invalid_argument for a system with more forms.
+SearchOutcome search_precedence(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
+                                const PrecedenceHooks* hooks = nullptr);
+
+// The chronological precedence search (no learning; the twin in tests):
+// a transitively closed partial order on the couplings not yet done, safe
+// moves, branching on requirements (docs/solver.md). Gap systems only;
+// throws std::invalid_argument for a system with more forms.
+SearchOutcome search_precedence_chronological(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
 
 // SAT back end, gap systems only: the system as clauses over order literals
 // "a before b" for couplings sharing a gap (one weighted at-most-K counter per

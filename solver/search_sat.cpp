@@ -21,6 +21,7 @@
 #include <unordered_map>
 
 #include "cnf/incremental_sat.hpp"
+#include "solver/gap_inequalities.hpp"
 #include "solver/search.hpp"
 
 namespace gridlock {
@@ -122,28 +123,15 @@ class SatSearch {
 
   bool encode() {
     std::vector<std::pair<int, int64_t>> lits;
+    std::vector<PrecedenceTerm> terms;
     for (size_t ci = 0; ci < sys_.constraints.size(); ++ci) {
       if ((ci & 255) == 0) budget_.check(st_);
-      const CollisionConstraint& c = sys_.constraints[ci];
-      int64_t narrow = 0, widen = 0;
-      for (size_t j = 0; j < c.rel.size(); ++j) {
-        const int64_t a = c.coef_of(j)[0];
-        (a > 0 ? narrow : widen) += a > 0 ? a : -a;
-      }
-      if (c.base[0] + narrow <= 0) continue;  // never negative
-      for (size_t jt = 0; jt < c.rel.size(); ++jt) {
-        const int64_t at = c.coef_of(jt)[0];
-        if (at <= 0) continue;
-        const CouplingId t = c.rel[jt];
+      const bool ok = for_each_gap_inequality(sys_.constraints[ci], terms, [&](auto& ts, int64_t bound) {
         lits.clear();
-        for (size_t j = 0; j < c.rel.size(); ++j) {
-          if (j == jt) continue;
-          const int64_t a = c.coef_of(j)[0];
-          if (a > 0) lits.push_back({before(c.rel[j], t), a});
-          else lits.push_back({before(t, c.rel[j]), -a});
-        }
-        if (!at_most(lits, -c.base[0] - at + widen)) return false;
-      }
+        for (const PrecedenceTerm& x : ts) lits.push_back({before(x.first, x.second), x.weight});
+        return at_most(lits, bound);
+      });
+      if (!ok) return false;
     }
     return true;
   }
