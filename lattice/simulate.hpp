@@ -73,9 +73,15 @@ class Simulator {
 
   // Runs schedule s. Requires check_schedule_bounds(inst, s) to pass. Work
   // arrays are kept between runs: after the first run of a simulator, runs
-  // allocate only for what they return.
+  // allocate only for what they return, and a run resets only the regions
+  // the previous run moved (all of them when the time scale D changes).
   SimResult run(const Schedule& s);
   SimResult run_order(const std::vector<CouplingId>& order) { return run(schedule_from_order(order)); }
+
+  // Simulates prep from now on (its tables must outlive the simulator),
+  // keeping the work arrays' memory: one simulator serves many instances
+  // (verify's Verifier, one formula after another). O(n + r).
+  void rebind(const PreparedInstance& prep);
 
   const Instance& instance() const { return prep_->inst; }
   const PreparedInstance& prepared() const { return *prep_; }
