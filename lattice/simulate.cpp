@@ -72,6 +72,17 @@ Rational to_rational(__int128 num, __int128 den) {
 
 int axis_of(size_t face) { return face < 2 ? 0 : 1; }
 
+// Two boxes {xlo, xhi, ylo, yhi} overlap with positive area. Regions that
+// collide during an interval have swept boxes (a static region: its
+// rectangle) that do, so this is a filter before the exact test.
+bool boxes_overlap(const std::array<int64_t, 4>& a, const std::array<int64_t, 4>& b) {
+  return a[0] < b[1] && b[0] < a[1] && a[2] < b[3] && b[2] < a[3];
+}
+
+// Below this many moving regions the broad phase pairs them all (with the
+// box filter) instead of sweeping cells.
+constexpr size_t kAllMovingPairs = 48;
+
 }  // namespace
 
 namespace {
@@ -515,7 +526,7 @@ int64_t Simulator::Scratch::moving_against_static(int64_t span) {
     for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
       for (int64_t cy = cy0 - 1; cy <= cy1; ++cy)
         for (uint32_t x = grid.head(cell_key(Vec2{cx, cy})); x != kNone; x = grid.next(x))
-          if (region_stamp[x] != stamp) test_pair(r, x, false, span);
+          if (region_stamp[x] != stamp && boxes_overlap(sw, rect[x])) test_pair(r, x, false, span);
   }
   return vmax;
 }
@@ -531,16 +542,28 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
   hit_head[d] = static_cast<uint32_t>(hit_index.size() - 1);
 }
 
-// Moving against moving: split the interval into S = max speed sub-steps
+// Moving against moving. Up to kAllMovingPairs moving regions (one coupling
+// running, as in every order): every pair whose swept boxes overlap. More:
+// split the interval into S = max speed sub-steps
 // (for the broad phase only), so that in each sub-step every region sweeps
 // at most about two cells and a cell holds O(1) regions; pairs that share a
 // cell in some sub-step go to the exact test over the whole interval.
 // Without the split, long sweeps (many coupled operations in a row) would
 // pile many regions into each cell: quadratic.
 void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
-  const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
-  auto floor128 = [](__int128 a, __int128 b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); };
   moving_pairs.clear();
+  if (moving.size() <= kAllMovingPairs) {  // few: every pair whose swept boxes overlap
+    for (size_t i = 0; i < moving.size(); ++i)
+      for (size_t j = i + 1; j < moving.size(); ++j)
+        if (boxes_overlap(swept[i], swept[j])) test_pair(moving[i], moving[j], true, span);
+    return;
+  }
+  const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
+  auto floor128 = [](__int128 a, __int128 b) -> __int128 {
+    if (a >= INT64_MIN && a <= INT64_MAX && b > 0 && b <= INT64_MAX)  // the usual case: a 64-bit division
+      return floor_div(static_cast<int64_t>(a), static_cast<int64_t>(b));
+    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
+  };
   for (int64_t step = 0; step < S; ++step) {
     cell_hits.clear();
     for (size_t i = 0; i < moving.size(); ++i) {
