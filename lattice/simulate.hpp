@@ -14,7 +14,8 @@
 //  - a broad phase finds the pairs whose swept boxes overlap: moving regions
 //    query a table of all regions by grid cell (a dense array over the
 //    shape's box, a hash table elsewhere), and moving regions meet each
-//    other in per-cell lists of their swept boxes;
+//    other in per-cell lists of their swept boxes (up to 48 moving regions:
+//    every pair whose swept boxes overlap);
 //  - the exact test solves eight strict linear inequalities in time.
 // Cycle collisions are found up front from the face walks (FaceNets): the
 // mismatch around a face is piecewise linear in time, so the first moment it
