@@ -195,10 +195,10 @@ CellLists make_cell_lists(const Regions& regions) {
     xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
     ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
   }
-  constexpr int64_t margin = 2;
-  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + 2 * margin,
-                 h = static_cast<__int128>(yhi) - ylo + 1 + 2 * margin;
-  if (w * h > static_cast<__int128>(16 * nr + 4096)) return CellLists(nr, 0, 0, 0, 0);
+  constexpr int64_t margin = 2, both_margins = 4;
+  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + both_margins,
+                 h = static_cast<__int128>(yhi) - ylo + 1 + both_margins;
+  if (w * h > static_cast<__int128>(nr) * 16 + 4096) return CellLists(nr, 0, 0, 0, 0);
   return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
 }
 

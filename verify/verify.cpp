@@ -46,6 +46,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 std::vector<std::string> names_of(const Instance& inst, const std::vector<CouplingId>& order) {
   std::vector<std::string> out;
+  out.reserve(order.size());
   for (CouplingId q : order) out.push_back(inst.couplings()[q].name);
   return out;
 }
