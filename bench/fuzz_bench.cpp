@@ -1,5 +1,5 @@
 // Fuzzer throughput (docs/performance.md, "Fuzzing throughput"): formulas per
-// second through verify_formula (CaDiCaL, to-lsat, compile, the exact solver
+// second through Verifier::verify (CaDiCaL, to-lsat, compile, the exact solver
 // with its simulator replay, the gap checker, the two certificate runs) for
 // each kind of `gridlock fuzz` and each variable count, one core. The same
 // campaign formulas as `gridlock fuzz --seed 1 --min-vars V --max-vars V
@@ -34,8 +34,9 @@ void BM_Fuzz(benchmark::State& state) {
   opt.solve_seconds = 10;
   opt.max_states = 2'000'000;
   uint64_t i = 0, disagreements = 0;
+  Verifier verifier;  // as a campaign loop runs it: work arrays kept from formula to formula
   for (auto _ : state) {
-    VerifyResult r = verify_formula(formulas[i++ % kFormulas], "bench", opt);
+    VerifyResult r = verifier.verify(formulas[i++ % kFormulas], "bench", opt);
     disagreements += !r.agree;
     benchmark::DoNotOptimize(r.agree);
   }

@@ -13,12 +13,17 @@ SpanningTree SpanningTree::build(const Instance& inst, NodeId root) {
   t.parent_dir.assign(n, Dir::PosX);
   t.parent_op.assign(n, kNone);
   t.tree_edge.assign(inst.edges().size(), 0);
-  std::vector<std::vector<NodeId>> children(n);
+  // Children lists as one array: a node's children are consecutive in the
+  // BFS queue (pushed while the node is at its head), in direction order.
+  std::vector<uint32_t> first_child(n, 0), num_children(n, 0);
   std::vector<char> seen(n, 0);
-  std::vector<NodeId> queue{t.root};
+  std::vector<NodeId> queue;
+  queue.reserve(n);
+  queue.push_back(t.root);
   seen[t.root] = 1;
   for (size_t head = 0; head < queue.size(); ++head) {
     NodeId w = queue[head];
+    first_child[w] = static_cast<uint32_t>(queue.size());
     for (Dir d : kDirs) {
       NodeId x = inst.neighbour(w, d);
       if (x == kNone || seen[x]) continue;
@@ -28,7 +33,7 @@ SpanningTree SpanningTree::build(const Instance& inst, NodeId root) {
       t.parent[x] = w;
       t.parent_dir[x] = d;
       t.parent_op[x] = inst.edges()[e].op;
-      children[w].push_back(x);
+      ++num_children[w];
       queue.push_back(x);
     }
   }
@@ -37,13 +42,15 @@ SpanningTree SpanningTree::build(const Instance& inst, NodeId root) {
   t.tout.assign(n, 0);
   t.subtree.assign(n, 1);
   t.order.reserve(n);
-  std::vector<std::pair<NodeId, size_t>> stack{{t.root, 0}};
+  std::vector<std::pair<NodeId, uint32_t>> stack;
+  stack.reserve(n);
+  stack.push_back({t.root, 0});
   t.tin[t.root] = 0;
   t.order.push_back(t.root);
   while (!stack.empty()) {
     auto& [w, i] = stack.back();
-    if (i < children[w].size()) {
-      NodeId c = children[w][i++];
+    if (i < num_children[w]) {
+      NodeId c = queue[first_child[w] + i++];
       t.tin[c] = static_cast<uint32_t>(t.order.size());
       t.order.push_back(c);
       stack.push_back({c, 0});

@@ -68,6 +68,17 @@ Rational to_rational(__int128 num, __int128 den) {
 
 int axis_of(size_t face) { return face < 2 ? 0 : 1; }
 
+// Two boxes {xlo, xhi, ylo, yhi} overlap with positive area. Regions that
+// collide during an interval have swept boxes (a static region: its
+// rectangle) that do, so this is a filter before the exact test.
+bool boxes_overlap(const std::array<int64_t, 4>& a, const std::array<int64_t, 4>& b) {
+  return a[0] < b[1] && b[0] < a[1] && a[2] < b[3] && b[2] < a[3];
+}
+
+// Below this many moving regions the broad phase pairs them all (with the
+// box filter) instead of sweeping cells.
+constexpr size_t kAllMovingPairs = 48;
+
 }  // namespace
 
 namespace {
@@ -111,6 +122,8 @@ class CellLists {
     return static_cast<size_t>(y * w_ + x);
   }
   size_t dense_size() const { return dense_.size(); }
+  // Cells that have a slot in the hash table (slots are never freed).
+  size_t hashed_cells() const { return used_; }
   void insert(uint32_t r, uint64_t key) {
     uint32_t& h = head_ref(key);
     next_[r] = h;
@@ -178,26 +191,37 @@ CellLists make_cell_lists(const Regions& regions) {
     xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
     ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
   }
-  constexpr int64_t margin = 2;
-  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + 2 * margin,
-                 h = static_cast<__int128>(yhi) - ylo + 1 + 2 * margin;
-  if (w * h > static_cast<__int128>(16 * nr + 4096)) return CellLists(nr, 0, 0, 0, 0);
+  constexpr int64_t margin = 2, both_margins = 4;
+  const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + both_margins,
+                 h = static_cast<__int128>(yhi) - ylo + 1 + both_margins;
+  if (w * h > static_cast<__int128>(nr) * 16 + 4096) return CellLists(nr, 0, 0, 0, 0);
   return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
 }
 
 }  // namespace
 
-// Everything run() needs besides the prepared tables, kept between runs.
+// Everything run() needs besides the prepared tables, kept between runs, and
+// the steps of one run (docs/simulator.md): scale the start times, find the
+// first cycle collision, then sweep the intervals between events; in each,
+// cut the spanning tree, collect the moving regions, and test them.
 struct Simulator::Scratch {
   struct Event {
     int64_t time;
     CouplingId q;
     bool start;
   };
+  const PreparedInstance* prep = nullptr;
   CellLists initial_grid;  // every region at its base cell (independent of D)
   std::vector<uint64_t> initial_key;
+  // The state of the sweep. Between runs every region is back at its base
+  // cell in grid and region_key except those in `touched` (moved by the last
+  // run), and rect holds base * rect_D for the untouched ones (rect_D = 0:
+  // not yet filled).
   CellLists grid;
   std::vector<uint64_t> region_key;
+  int64_t rect_D = 0;
+  std::vector<uint32_t> touched;
+  std::vector<char> is_touched;
   std::vector<int64_t> T, ev;
   std::vector<std::array<int64_t, 4>> rect, rvel, swept;
   std::vector<Event> events;
@@ -220,50 +244,96 @@ struct Simulator::Scratch {
   std::vector<uint32_t> hit_head, hit_index, hit_prev;
   std::vector<size_t> hit_cells;
 
-  explicit Scratch(const PreparedInstance& p) : initial_grid(make_cell_lists(p.regions)) {
+  // The run in progress: scale D, the first cycle collision (if any), stats,
+  // and the earliest node collision of the current interval.
+  int64_t D = 1;
+  bool cycle_found = false;
+  int64_t cycle_time = 0;
+  size_t cycle_face = 0;
+  SimStats stats;
+  Frac best{};
+  uint32_t best_a = kNone, best_b = kNone;
+
+  explicit Scratch(const PreparedInstance& p) { bind(p); }
+
+  // Points the scratch at p's tables (a new instance, or the first one),
+  // keeping the arrays' memory. O(n + r) for r regions.
+  void bind(const PreparedInstance& p) {
+    prep = &p;
+    initial_grid = make_cell_lists(p.regions);
     const size_t nr = p.regions.size();
     initial_key.resize(nr);
     for (uint32_t r = 0; r < nr; ++r) {
       const RegionShape& sh = p.regions.shapes[r];
       initial_grid.insert(r, initial_key[r] = cell_key(Vec2{sh.base[0], sh.base[2]}));
     }
+    grid = initial_grid;
+    region_key = initial_key;
+    rect_D = 0;
+    touched.clear();
+    is_touched.assign(nr, 0);
     hit_head.assign(initial_grid.dense_size(), kNone);
     node_stamp.assign(p.inst.num_nodes(), 0);
     region_stamp.assign(nr, 0);
+    stamp = 0;
     node_vel.resize(p.inst.num_nodes());
     rect.resize(nr);
     rvel.resize(nr);
   }
+
+  SimResult run(const Schedule& s);
+
+ private:
+  const Instance& inst() const { return prep->inst; }
+  const SpanningTree& tree() const { return prep->tree; }
+  const Regions& regions() const { return prep->regions; }
+  void scale_times(const Schedule& s);
+  void find_cycle_collision();
+  void reset_positions();
+  void sort_events();
+  void next_stamp();
+  void cut_tree();
+  void collect_moving();
+  void add_moving(uint32_t r) {
+    if (r != kNone && region_stamp[r] != stamp) region_stamp[r] = stamp, moving.push_back(r);
+  }
+  void add_op_regions(OpId k) {
+    add_moving(regions().region_of_op[k]);
+    if (inst().ops()[k].kind == OpKind::Contract) add_moving(inst().ops()[k].v);
+  }
+  void sweep_boxes(int64_t span);
+  void test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t span);
+  int64_t moving_against_static(int64_t span);
+  void moving_against_moving(int64_t span, int64_t S);
+  void pairs_in_dense_cell(size_t d, uint32_t i);
+  void advance(int64_t span);
+  SimResult cycle_result() const;
+  SimResult node_result(int64_t now) const;
 };
 
-Simulator::Simulator(const Instance& inst) : owned_(std::make_unique<PreparedInstance>(inst)), prep_(owned_.get()) {}
-Simulator::Simulator(const PreparedInstance& prep) : prep_(&prep) {}
-Simulator::~Simulator() = default;
-Simulator::Simulator(Simulator&&) noexcept = default;
+namespace {
+// The cell of scaled coordinate a: floor(a / D); integer schedules (D = 1,
+// every order) need no division.
+int64_t cell_of(int64_t a, int64_t D) { return D == 1 ? a : floor_div(a, D); }
+}  // namespace
 
-SimResult Simulator::run(const Schedule& s) {
-  const Instance& inst_ = prep_->inst;
-  const SpanningTree& tree_ = prep_->tree;
-  const Regions& regions_ = prep_->regions;
-  const FaceNets& faces_ = prep_->faces;
-  if (auto problem = check_schedule_bounds(inst_, s)) throw std::invalid_argument(*problem);
-  if (!scratch_) scratch_ = std::make_unique<Scratch>(*prep_);
-  Scratch& sc = *scratch_;
-  SimResult result;
-  const size_t n = inst_.num_nodes(), nq = inst_.couplings().size(), nr = regions_.size();
-  int64_t D = 1;
+void Simulator::Scratch::scale_times(const Schedule& s) {
+  const size_t nq = inst().couplings().size();
+  D = 1;
   for (const auto& t : s.start) D = std::lcm(D, t.den());
-  std::vector<int64_t>& T = sc.T;
   T.resize(nq);
   for (size_t q = 0; q < nq; ++q) T[q] = s.start[q].num() * (D / s.start[q].den());
+}
 
-  // --- Cycle collisions: the earliest over all faces (an event time). ---
-  bool cycle_found = false;
-  int64_t cycle_time = 0;
-  size_t cycle_face = 0;
-  for (size_t f = 0; f < faces_.faces.size(); ++f) {
-    const auto& nets = faces_.faces[f].nets;
-    std::vector<int64_t>& ev = sc.ev;
+// The earliest cycle collision over all faces (an event time): the first
+// moment the mismatch around a face is non-zero.
+void Simulator::Scratch::find_cycle_collision() {
+  cycle_found = false;
+  cycle_time = 0;
+  cycle_face = 0;
+  const auto& faces = prep->faces.faces;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const auto& nets = faces[f].nets;
     ev.clear();
     for (auto& [q, v] : nets) ev.push_back(T[q]), ev.push_back(T[q] + D);
     std::sort(ev.begin(), ev.end());
@@ -277,222 +347,229 @@ SimResult Simulator::run(const Schedule& s) {
       }
     }
   }
+}
 
-  // --- Node collisions: sweep the intervals between events. ---
-  auto& rect = sc.rect;
-  for (size_t r = 0; r < nr; ++r)
-    for (int f = 0; f < 4; ++f) rect[r][f] = regions_.shapes[r].base[f] * D;
-  CellLists& grid = sc.grid;
-  grid = sc.initial_grid;
-  std::vector<uint64_t>& region_key = sc.region_key;
-  region_key = sc.initial_key;
-  auto key_of = [&](uint32_t r) { return cell_key(Vec2{floor_div(rect[r][0], D), floor_div(rect[r][2], D)}); };
+// Every region back at its base, scaled by D: only the regions the last run
+// moved, unless D changed (or the cell table grew much: then a fresh copy).
+void Simulator::Scratch::reset_positions() {
+  const size_t nr = regions().size();
+  if (grid.hashed_cells() > initial_grid.hashed_cells() + nr + 64) {
+    grid = initial_grid;
+    region_key = initial_key;
+  } else {
+    for (uint32_t r : touched)
+      if (region_key[r] != initial_key[r]) {
+        grid.remove(r, region_key[r]);
+        grid.insert(r, initial_key[r]);
+        region_key[r] = initial_key[r];
+      }
+  }
+  auto set_rect = [&](uint32_t r) {
+    for (int f = 0; f < 4; ++f) rect[r][f] = regions().shapes[r].base[f] * D;
+  };
+  if (rect_D != D) {
+    for (uint32_t r = 0; r < nr; ++r) set_rect(r);
+    rect_D = D;
+  } else {
+    for (uint32_t r : touched) set_rect(r);
+  }
+  for (uint32_t r : touched) is_touched[r] = 0;
+  touched.clear();
+}
 
-  using Event = Scratch::Event;
-  std::vector<Event>& events = sc.events;
+void Simulator::Scratch::sort_events() {
+  const size_t nq = inst().couplings().size();
   events.clear();
   for (CouplingId q = 0; q < nq; ++q) events.push_back({T[q], q, true}), events.push_back({T[q] + D, q, false});
   std::sort(events.begin(), events.end(),
             [](const Event& a, const Event& b) { return a.time != b.time ? a.time < b.time : a.start < b.start; });
+}
 
-  std::vector<char>& running = sc.running;
-  running.assign(nq, 0);
-  std::vector<CouplingId>& run_list = sc.run_list;
-  run_list.clear();
-  std::vector<uint32_t>& node_stamp = sc.node_stamp;
-  std::vector<uint32_t>& region_stamp = sc.region_stamp;
-  std::vector<Vec2>& node_vel = sc.node_vel;
-  auto& rvel = sc.rvel;
-  uint32_t& stamp = sc.stamp;
+// A fresh stamp for the interval's node and region marks.
+void Simulator::Scratch::next_stamp() {
+  if (++stamp == 0) {  // the stamps wrapped around: start them afresh
+    std::fill(node_stamp.begin(), node_stamp.end(), 0);
+    std::fill(region_stamp.begin(), region_stamp.end(), 0);
+    stamp = 1;
+  }
+}
 
-  auto report_cycle = [&]() {
-    Collision c;
-    c.kind = Collision::Kind::Cycle;
-    c.time = to_rational(cycle_time, D);
-    c.cycle = faces_.faces[cycle_face].walk;
-    for (CouplingId q = 0; q < nq; ++q)
-      if (T[q] <= cycle_time && cycle_time < T[q] + D) c.moving.push_back(q);
-    result.collision = c;
-    return result;
-  };
-
-  for (size_t ei = 0; ei < events.size();) {
-    int64_t now = events[ei].time;
-    for (; ei < events.size() && events[ei].time == now; ++ei) {
-      CouplingId q = events[ei].q;
-      if (events[ei].start) {
-        running[q] = 1;
-        run_list.push_back(q);
-      } else {
-        running[q] = 0;
-        run_list.erase(std::find(run_list.begin(), run_list.end(), q));
-      }
+// Cut the tree at the running operations' tree edges: `cuts` (by Euler
+// position), the component above each cut (`up`), their sizes, and the
+// Euler ranges of every component but the largest (which stays put).
+void Simulator::Scratch::cut_tree() {
+  const SpanningTree& t = tree();
+  cuts.clear();
+  running_ops.clear();
+  for (CouplingId q : run_list)
+    for (OpId k : inst().couplings()[q].ops) {
+      running_ops.push_back(k);
+      const Operation& op = inst().ops()[k];
+      if (!op.is_edge_op()) continue;
+      if (t.parent[op.v] == op.u && t.parent_op[op.v] == k) cuts.push_back(op.v);
+      else if (t.parent[op.u] == op.v && t.parent_op[op.u] == k) cuts.push_back(op.u);
     }
-    if (cycle_found && cycle_time <= now) return report_cycle();
-    if (run_list.empty() || ei == events.size()) continue;
-    const int64_t span = events[ei].time - now;
-    ++result.stats.intervals;
-    if (++stamp == 0) {  // the stamps wrapped around: start them afresh
-      std::fill(node_stamp.begin(), node_stamp.end(), 0);
-      std::fill(region_stamp.begin(), region_stamp.end(), 0);
-      stamp = 1;
-    }
-
-    // Cut the tree at the running operations' tree edges.
-    std::vector<NodeId>& cuts = sc.cuts;
-    std::vector<OpId>& running_ops = sc.running_ops;
-    cuts.clear();
-    running_ops.clear();
-    for (CouplingId q : run_list)
-      for (OpId k : inst_.couplings()[q].ops) {
-        running_ops.push_back(k);
-        const Operation& op = inst_.ops()[k];
-        if (!op.is_edge_op()) continue;
-        if (tree_.parent[op.v] == op.u && tree_.parent_op[op.v] == k) cuts.push_back(op.v);
-        else if (tree_.parent[op.u] == op.v && tree_.parent_op[op.u] == k) cuts.push_back(op.u);
-      }
-    std::sort(cuts.begin(), cuts.end(), [&](NodeId a, NodeId b) { return tree_.tin[a] < tree_.tin[b]; });
-    const size_t nc = cuts.size();
-    const size_t ROOT = nc;
-    std::vector<int64_t>& comp_size = sc.comp_size;
-    std::vector<size_t>& up = sc.up;
-    comp_size.assign(nc + 1, 0);
-    up.assign(nc, ROOT);
-    comp_size[ROOT] = static_cast<int64_t>(n);
-    {
-      std::vector<size_t>& st = sc.cut_stack;
-      st.clear();
-      for (size_t i = 0; i < nc; ++i) {
-        comp_size[i] = tree_.subtree[cuts[i]];
-        while (!st.empty() && tree_.tout[cuts[st.back()]] <= tree_.tin[cuts[i]]) st.pop_back();
-        up[i] = st.empty() ? ROOT : st.back();
-        comp_size[up[i]] -= tree_.subtree[cuts[i]];
-        st.push_back(i);
-      }
-    }
-    size_t L = ROOT;
+  std::sort(cuts.begin(), cuts.end(), [&](NodeId a, NodeId b) { return t.tin[a] < t.tin[b]; });
+  const size_t nc = cuts.size(), ROOT = nc;
+  comp_size.assign(nc + 1, 0);
+  up.assign(nc, ROOT);
+  comp_size[ROOT] = static_cast<int64_t>(inst().num_nodes());
+  cut_stack.clear();
+  for (size_t i = 0; i < nc; ++i) {
+    comp_size[i] = t.subtree[cuts[i]];
+    while (!cut_stack.empty() && t.tout[cuts[cut_stack.back()]] <= t.tin[cuts[i]]) cut_stack.pop_back();
+    up[i] = cut_stack.empty() ? ROOT : cut_stack.back();
+    comp_size[up[i]] -= t.subtree[cuts[i]];
+    cut_stack.push_back(i);
+  }
+  size_t L = ROOT;
+  for (size_t i = 0; i < nc; ++i)
+    if (comp_size[i] > comp_size[L]) L = i;
+  // Ranges of Euler positions that move, in increasing order.
+  ranges.clear();
+  if (L == ROOT) {
     for (size_t i = 0; i < nc; ++i)
-      if (comp_size[i] > comp_size[L]) L = i;
-    Vec2 vel_L{0, 0};
-    if (L != ROOT)
-      for (size_t i = L;; i = up[i]) {
-        vel_L += op_child_vector(inst_, tree_, cuts[i]);
-        if (up[i] == ROOT) break;
-      }
-    // Ranges of Euler positions that move, in increasing order.
-    std::vector<std::pair<uint32_t, uint32_t>>& ranges = sc.ranges;
-    ranges.clear();
-    if (L == ROOT) {
-      for (size_t i = 0; i < nc; ++i)
-        if (up[i] == ROOT) ranges.push_back({tree_.tin[cuts[i]], tree_.tout[cuts[i]]});
-    } else {
-      ranges.push_back({0, tree_.tin[cuts[L]]});
-      for (size_t i = 0; i < nc; ++i)
-        if (up[i] == L) ranges.push_back({tree_.tin[cuts[i]], tree_.tout[cuts[i]]});
-      ranges.push_back({tree_.tout[cuts[L]], static_cast<uint32_t>(n)});
+      if (up[i] == ROOT) ranges.push_back({t.tin[cuts[i]], t.tout[cuts[i]]});
+  } else {
+    ranges.push_back({0, t.tin[cuts[L]]});
+    for (size_t i = 0; i < nc; ++i)
+      if (up[i] == L) ranges.push_back({t.tin[cuts[i]], t.tout[cuts[i]]});
+    ranges.push_back({t.tout[cuts[L]], static_cast<uint32_t>(inst().num_nodes())});
+  }
+  // The largest component's velocity, subtracted from every node's.
+  Vec2 vel_L{0, 0};
+  if (L != ROOT)
+    for (size_t i = L;; i = up[i]) {
+      vel_L += op_child_vector(inst(), t, cuts[i]);
+      if (up[i] == ROOT) break;
     }
-    std::vector<uint32_t>& moving = sc.moving;
-    moving.clear();
-    auto add_region = [&](uint32_t r) {
-      if (r != kNone && region_stamp[r] != stamp) region_stamp[r] = stamp, moving.push_back(r);
-    };
-    {
-      std::vector<std::pair<uint32_t, Vec2>>& st = sc.vel_stack;  // (tout, velocity) of enclosing cuts
-      st.clear();
-      size_t ptr = 0;
-      for (auto [b, e] : ranges)
-        for (uint32_t p = b; p < e; ++p) {
-          while (!st.empty() && st.back().first <= p) st.pop_back();
-          while (ptr < nc && tree_.tin[cuts[ptr]] <= p) {
-            NodeId c = cuts[ptr++];
-            while (!st.empty() && st.back().first <= tree_.tin[c]) st.pop_back();
-            if (tree_.tout[c] > p) {
-              Vec2 base = st.empty() ? Vec2{0, 0} : st.back().second;
-              st.push_back({tree_.tout[c], base + op_child_vector(inst_, tree_, c)});
-            }
-          }
-          NodeId w = tree_.order[p];
-          node_vel[w] = (st.empty() ? Vec2{0, 0} : st.back().second) - vel_L;
-          node_stamp[w] = stamp;
-          add_region(w);
-          OpId k = inst_.op_of_node(w);
-          if (k != kNone) {
-            add_region(regions_.region_of_op[k]);
-            if (inst_.ops()[k].kind == OpKind::Contract) add_region(inst_.ops()[k].v);
-          }
-        }
-    }
-    for (OpId k : running_ops) {
-      add_region(regions_.region_of_op[k]);
-      if (inst_.ops()[k].kind == OpKind::Contract) add_region(inst_.ops()[k].v);
-    }
-    result.stats.moved_regions += moving.size();
+  vel_stack.clear();
+  vel_stack.push_back({UINT32_MAX, Vec2{0, 0} - vel_L});  // the bottom: the root component
+}
 
-    // Velocities and swept boxes of the moving regions.
-    auto vel_of = [&](NodeId w) { return node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0}; };
-    auto& swept = sc.swept;
-    swept.resize(moving.size());
-    for (size_t i = 0; i < moving.size(); ++i) {
-      uint32_t r = moving[i];
-      const RegionShape& sh = regions_.shapes[r];
-      for (int f = 0; f < 4; ++f) {
-        Vec2 v = vel_of(sh.ref[f]);
-        int64_t vf = axis_of(f) == 0 ? v.x : v.y;
-        if (sh.grow_op != kNone && f == sh.grow_face && running[inst_.ops()[sh.grow_op].coupling]) vf += sh.grow_sign;
-        rvel[r][f] = vf;
+// The nodes of the moving ranges get their velocities (relative to the
+// largest component); the moving regions are theirs, plus those of the
+// running operations (whose width changes).
+void Simulator::Scratch::collect_moving() {
+  const SpanningTree& t = tree();
+  const size_t nc = cuts.size();
+  moving.clear();
+  size_t ptr = 0;
+  for (auto [b, e] : ranges)
+    for (uint32_t p = b; p < e; ++p) {
+      while (vel_stack.back().first <= p) vel_stack.pop_back();
+      while (ptr < nc && t.tin[cuts[ptr]] <= p) {
+        NodeId c = cuts[ptr++];
+        while (vel_stack.back().first <= t.tin[c]) vel_stack.pop_back();
+        if (t.tout[c] > p) vel_stack.push_back({t.tout[c], vel_stack.back().second + op_child_vector(inst(), t, c)});
       }
-      for (int f = 0; f < 4; f += 2) {
-        int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
-        int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
-        swept[i][f] = std::min(a0, a1);
-        swept[i][f + 1] = std::max(b0, b1);
-      }
+      NodeId w = t.order[p];
+      node_vel[w] = vel_stack.back().second;
+      node_stamp[w] = stamp;
+      add_moving(w);
+      if (OpId k = inst().op_of_node(w); k != kNone) add_op_regions(k);
     }
+  for (OpId k : running_ops) add_op_regions(k);
+  stats.moved_regions += moving.size();
+}
 
-    // Broad phase, then the exact test; keep the earliest (the smallest
-    // pair on ties), so the order of the tests does not matter.
-    Frac best{};
-    uint32_t best_a = kNone, best_b = kNone;
-    static const int64_t zero4[4] = {0, 0, 0, 0};
-    auto test = [&](uint32_t a, uint32_t b, bool b_moves) {
-      ++result.stats.candidate_pairs;
-      Frac f = first_overlap(rect[a].data(), rvel[a].data(), rect[b].data(), b_moves ? rvel[b].data() : zero4, span);
-      if (!f.none() && (best.none() || frac_less(f, best) ||
-                        (!frac_less(best, f) && std::minmax(a, b) < std::minmax(best_a, best_b))))
-        best = f, best_a = std::min(a, b), best_b = std::max(a, b);
-    };
-    // Moving against static: each moving region queries the cells of its
-    // swept box (a static region's lower-left corner lies at most one cell
-    // before the box). Cells hold O(1) static regions: the shape has no overlaps.
-    int64_t vmax = 1;
-    for (size_t i = 0; i < moving.size(); ++i) {
-      uint32_t r = moving[i];
-      for (int f = 0; f < 4; ++f) vmax = std::max(vmax, rvel[r][f] < 0 ? -rvel[r][f] : rvel[r][f]);
-      const auto& sw = swept[i];
-      if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;  // never of positive area
-      int64_t cx0 = floor_div(sw[0], D), cx1 = floor_div(sw[1] - 1, D);
-      int64_t cy0 = floor_div(sw[2], D), cy1 = floor_div(sw[3] - 1, D);
-      for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
-        for (int64_t cy = cy0 - 1; cy <= cy1; ++cy)
-          for (uint32_t x = grid.head(cell_key(Vec2{cx, cy})); x != kNone; x = grid.next(x))
-            if (region_stamp[x] != stamp) test(r, x, false);
+// Velocities and swept boxes of the moving regions over `span`.
+void Simulator::Scratch::sweep_boxes(int64_t span) {
+  swept.resize(moving.size());
+  for (size_t i = 0; i < moving.size(); ++i) {
+    uint32_t r = moving[i];
+    const RegionShape& sh = regions().shapes[r];
+    for (int f = 0; f < 4; ++f) {
+      const NodeId w = sh.ref[f];
+      const Vec2 v = node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0};
+      int64_t vf = axis_of(f) == 0 ? v.x : v.y;
+      if (sh.grow_op != kNone && f == sh.grow_face && running[inst().ops()[sh.grow_op].coupling]) vf += sh.grow_sign;
+      rvel[r][f] = vf;
     }
-    // Moving against moving: split the interval into S = max speed sub-steps
-    // (for the broad phase only), so that in each sub-step every region
-    // sweeps at most about two cells and a cell holds O(1) regions; pairs that
-    // share a cell in some sub-step go to the exact test over the whole
-    // interval. Without the split, long sweeps (many coupled operations in a
-    // row) would pile many regions into each cell: quadratic.
-    const int64_t S = vmax;
-    const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
-    auto floor128 = [](__int128 a, __int128 b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0); };
-    auto& cell_hits = sc.cell_hits;
-    auto& moving_pairs = sc.moving_pairs;
-    moving_pairs.clear();
-    for (int64_t step = 0; step < S; ++step) {
-      cell_hits.clear();
-      for (size_t i = 0; i < moving.size(); ++i) {
-        uint32_t r = moving[i];
+    for (int f = 0; f < 4; f += 2) {
+      int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
+      int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
+      swept[i][f] = std::min(a0, a1);
+      swept[i][f + 1] = std::max(b0, b1);
+    }
+  }
+}
+
+// The exact test of one candidate pair; keeps the earliest collision (the
+// smallest pair on ties), so the order of the tests does not matter.
+void Simulator::Scratch::test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t span) {
+  static const int64_t zero4[4] = {0, 0, 0, 0};
+  ++stats.candidate_pairs;
+  Frac f = first_overlap(rect[a].data(), rvel[a].data(), rect[b].data(), b_moves ? rvel[b].data() : zero4, span);
+  if (!f.none() &&
+      (best.none() || frac_less(f, best) || (!frac_less(best, f) && std::minmax(a, b) < std::minmax(best_a, best_b))))
+    best = f, best_a = std::min(a, b), best_b = std::max(a, b);
+}
+
+// Moving against static: each moving region queries the cells of its swept
+// box (a static region's lower-left corner lies at most one cell before the
+// box). Cells hold O(1) static regions: the shape has no overlaps. Returns
+// the largest speed of a moving face (at least 1).
+int64_t Simulator::Scratch::moving_against_static(int64_t span) {
+  int64_t vmax = 1;
+  for (size_t i = 0; i < moving.size(); ++i) {
+    uint32_t r = moving[i];
+    for (int f = 0; f < 4; ++f) vmax = std::max(vmax, rvel[r][f] < 0 ? -rvel[r][f] : rvel[r][f]);
+    const auto& sw = swept[i];
+    if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;  // never of positive area
+    const int64_t cx0 = cell_of(sw[0], D), cx1 = cell_of(sw[1] - 1, D);
+    const int64_t cy0 = cell_of(sw[2], D), cy1 = cell_of(sw[3] - 1, D);
+    for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
+      for (int64_t cy = cy0 - 1; cy <= cy1; ++cy)
+        for (uint32_t x = grid.head(cell_key(Vec2{cx, cy})); x != kNone; x = grid.next(x))
+          if (region_stamp[x] != stamp && boxes_overlap(sw, rect[x])) test_pair(r, x, false, span);
+  }
+  return vmax;
+}
+
+// Moving region i enters dense cell d in this sub-step: pair it with every
+// earlier region of the cell (all of smaller index).
+void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
+  for (uint32_t h = hit_head[d]; h != kNone; h = hit_prev[h])
+    moving_pairs.push_back((static_cast<uint64_t>(hit_index[h]) << 32) | i);
+  if (hit_head[d] == kNone) hit_cells.push_back(d);
+  hit_prev.push_back(hit_head[d]);
+  hit_index.push_back(i);
+  hit_head[d] = static_cast<uint32_t>(hit_index.size() - 1);
+}
+
+// Moving against moving. Up to kAllMovingPairs moving regions (one coupling
+// running, as in every order): every pair whose swept boxes overlap. More:
+// split the interval into S = max speed sub-steps
+// (for the broad phase only), so that in each sub-step every region sweeps
+// at most about two cells and a cell holds O(1) regions; pairs that share a
+// cell in some sub-step go to the exact test over the whole interval.
+// Without the split, long sweeps (many coupled operations in a row) would
+// pile many regions into each cell: quadratic.
+void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
+  moving_pairs.clear();
+  if (moving.size() <= kAllMovingPairs) {  // few: every pair whose swept boxes overlap
+    for (size_t i = 0; i < moving.size(); ++i)
+      for (size_t j = i + 1; j < moving.size(); ++j)
+        if (boxes_overlap(swept[i], swept[j])) test_pair(moving[i], moving[j], true, span);
+    return;
+  }
+  const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
+  auto floor128 = [](__int128 a, __int128 b) -> __int128 {
+    if (a >= INT64_MIN && a <= INT64_MAX && b > 0 && b <= INT64_MAX)  // the usual case: a 64-bit division
+      return floor_div(static_cast<int64_t>(a), static_cast<int64_t>(b));
+    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
+  };
+  for (int64_t step = 0; step < S; ++step) {
+    cell_hits.clear();
+    for (size_t i = 0; i < moving.size(); ++i) {
+      int64_t c[4];  // cells x0, x1, y0, y1 of the sub-step's swept box
+      if (S == 1) {  // the sub-step is the interval: its swept box
+        const auto& sw = swept[i];
+        if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;
+        c[0] = cell_of(sw[0], D), c[1] = cell_of(sw[1] - 1, D), c[2] = cell_of(sw[2], D), c[3] = cell_of(sw[3] - 1, D);
+      } else {
+        const uint32_t r = moving[i];
         __int128 box[4];
         for (int f = 0; f < 4; ++f) {
           __int128 p0 = static_cast<__int128>(rect[r][f]) * S + static_cast<__int128>(rvel[r][f]) * span * step;
@@ -500,69 +577,132 @@ SimResult Simulator::run(const Schedule& s) {
           box[f] = (f % 2 == 0) ? std::min(p0, p1) : std::max(p0, p1);
         }
         if (box[1] <= box[0] || box[3] <= box[2]) continue;
-        auto cx0 = static_cast<int64_t>(floor128(box[0], unit)), cx1 = static_cast<int64_t>(floor128(box[1] - 1, unit));
-        auto cy0 = static_cast<int64_t>(floor128(box[2], unit)), cy1 = static_cast<int64_t>(floor128(box[3] - 1, unit));
-        for (int64_t cx = cx0; cx <= cx1; ++cx)
-          for (int64_t cy = cy0; cy <= cy1; ++cy) {
-            const uint64_t key = cell_key(Vec2{cx, cy});
-            const size_t d = grid.dense_index(key);
-            if (d == CellLists::kNoDense) {
-              cell_hits.push_back({key, static_cast<uint32_t>(i)});
-              continue;
-            }
-            // Pair i with every earlier region of the cell (all of smaller index).
-            for (uint32_t h = sc.hit_head[d]; h != kNone; h = sc.hit_prev[h])
-              moving_pairs.push_back((static_cast<uint64_t>(sc.hit_index[h]) << 32) | i);
-            if (sc.hit_head[d] == kNone) sc.hit_cells.push_back(d);
-            sc.hit_prev.push_back(sc.hit_head[d]);
-            sc.hit_index.push_back(static_cast<uint32_t>(i));
-            sc.hit_head[d] = static_cast<uint32_t>(sc.hit_index.size() - 1);
-          }
+        c[0] = static_cast<int64_t>(floor128(box[0], unit)), c[1] = static_cast<int64_t>(floor128(box[1] - 1, unit));
+        c[2] = static_cast<int64_t>(floor128(box[2], unit)), c[3] = static_cast<int64_t>(floor128(box[3] - 1, unit));
       }
-      for (size_t d : sc.hit_cells) sc.hit_head[d] = kNone;
-      sc.hit_cells.clear();
-      sc.hit_index.clear();
-      sc.hit_prev.clear();
-      // Regions sharing a cell outside the box in this sub-step: runs of equal
-      // keys, indices increasing.
-      std::sort(cell_hits.begin(), cell_hits.end());
-      for (size_t x = 0; x < cell_hits.size();) {
-        size_t y = x + 1;
-        while (y < cell_hits.size() && cell_hits[y].first == cell_hits[x].first) ++y;
-        for (size_t a = x; a < y; ++a)
-          for (size_t b = a + 1; b < y; ++b)
-            moving_pairs.push_back((static_cast<uint64_t>(cell_hits[a].second) << 32) | cell_hits[b].second);
-        x = y;
-      }
+      for (int64_t cx = c[0]; cx <= c[1]; ++cx)
+        for (int64_t cy = c[2]; cy <= c[3]; ++cy) {
+          const uint64_t key = cell_key(Vec2{cx, cy});
+          const size_t d = grid.dense_index(key);
+          if (d == CellLists::kNoDense) cell_hits.push_back({key, static_cast<uint32_t>(i)});
+          else pairs_in_dense_cell(d, static_cast<uint32_t>(i));
+        }
     }
-    std::sort(moving_pairs.begin(), moving_pairs.end());
-    moving_pairs.erase(std::unique(moving_pairs.begin(), moving_pairs.end()), moving_pairs.end());
-    for (uint64_t ij : moving_pairs)
-      test(moving[static_cast<uint32_t>(ij >> 32)], moving[static_cast<uint32_t>(ij & 0xffffffffu)], true);
-    if (!best.none()) {
-      Collision c;
-      c.kind = Collision::Kind::Node;
-      c.time = to_rational(static_cast<__int128>(now) * best.den + best.num, best.den * D);
-      c.a = best_a;
-      c.b = best_b;
-      c.moving = run_list;
-      std::sort(c.moving.begin(), c.moving.end());
-      result.collision = c;
-      return result;
-    }
-    // Advance the moving regions to the end of the interval.
-    for (uint32_t r : moving) {
-      for (int f = 0; f < 4; ++f) rect[r][f] += rvel[r][f] * span;
-      uint64_t k = key_of(r);
-      if (k != region_key[r]) {
-        grid.remove(r, region_key[r]);
-        grid.insert(r, k);
-        region_key[r] = k;
-      }
+    for (size_t d : hit_cells) hit_head[d] = kNone;
+    hit_cells.clear();
+    hit_index.clear();
+    hit_prev.clear();
+    // Regions sharing a cell outside the box in this sub-step: runs of equal
+    // keys, indices increasing.
+    std::sort(cell_hits.begin(), cell_hits.end());
+    for (size_t x = 0; x < cell_hits.size();) {
+      size_t y = x + 1;
+      while (y < cell_hits.size() && cell_hits[y].first == cell_hits[x].first) ++y;
+      for (size_t a = x; a < y; ++a)
+        for (size_t b = a + 1; b < y; ++b)
+          moving_pairs.push_back((static_cast<uint64_t>(cell_hits[a].second) << 32) | cell_hits[b].second);
+      x = y;
     }
   }
-  if (cycle_found) return report_cycle();
+  std::sort(moving_pairs.begin(), moving_pairs.end());
+  moving_pairs.erase(std::unique(moving_pairs.begin(), moving_pairs.end()), moving_pairs.end());
+  for (uint64_t ij : moving_pairs)
+    test_pair(moving[static_cast<uint32_t>(ij >> 32)], moving[static_cast<uint32_t>(ij & 0xffffffffu)], true, span);
+}
+
+// Advance the moving regions to the end of the interval.
+void Simulator::Scratch::advance(int64_t span) {
+  for (uint32_t r : moving) {
+    for (int f = 0; f < 4; ++f) rect[r][f] += rvel[r][f] * span;
+    if (!is_touched[r]) is_touched[r] = 1, touched.push_back(r);
+    const uint64_t k = cell_key(Vec2{cell_of(rect[r][0], D), cell_of(rect[r][2], D)});
+    if (k != region_key[r]) {
+      grid.remove(r, region_key[r]);
+      grid.insert(r, k);
+      region_key[r] = k;
+    }
+  }
+}
+
+SimResult Simulator::Scratch::cycle_result() const {
+  SimResult result;
+  result.stats = stats;
+  Collision c;
+  c.kind = Collision::Kind::Cycle;
+  c.time = to_rational(cycle_time, D);
+  c.cycle = prep->faces.faces[cycle_face].walk;
+  for (CouplingId q = 0; q < inst().couplings().size(); ++q)
+    if (T[q] <= cycle_time && cycle_time < T[q] + D) c.moving.push_back(q);
+  result.collision = c;
   return result;
+}
+
+SimResult Simulator::Scratch::node_result(int64_t now) const {
+  SimResult result;
+  result.stats = stats;
+  Collision c;
+  c.kind = Collision::Kind::Node;
+  c.time = to_rational(static_cast<__int128>(now) * best.den + best.num, best.den * D);
+  c.a = best_a;
+  c.b = best_b;
+  c.moving = run_list;
+  std::sort(c.moving.begin(), c.moving.end());
+  result.collision = c;
+  return result;
+}
+
+SimResult Simulator::Scratch::run(const Schedule& s) {
+  stats = SimStats{};
+  scale_times(s);
+  find_cycle_collision();
+  reset_positions();
+  sort_events();
+  running.assign(inst().couplings().size(), 0);
+  run_list.clear();
+  for (size_t ei = 0; ei < events.size();) {
+    const int64_t now = events[ei].time;
+    for (; ei < events.size() && events[ei].time == now; ++ei) {
+      const CouplingId q = events[ei].q;
+      running[q] = events[ei].start;
+      if (events[ei].start) run_list.push_back(q);
+      else run_list.erase(std::find(run_list.begin(), run_list.end(), q));
+    }
+    if (cycle_found && cycle_time <= now) return cycle_result();
+    if (run_list.empty() || ei == events.size()) continue;
+    const int64_t span = events[ei].time - now;
+    ++stats.intervals;
+    next_stamp();
+    cut_tree();
+    collect_moving();
+    sweep_boxes(span);
+    best = Frac{};
+    best_a = best_b = kNone;
+    const int64_t vmax = moving_against_static(span);
+    moving_against_moving(span, vmax);
+    if (!best.none()) return node_result(now);
+    advance(span);
+  }
+  if (cycle_found) return cycle_result();
+  SimResult result;
+  result.stats = stats;
+  return result;
+}
+
+Simulator::Simulator(const Instance& inst) : owned_(std::make_unique<PreparedInstance>(inst)), prep_(owned_.get()) {}
+Simulator::Simulator(const PreparedInstance& prep) : prep_(&prep) {}
+Simulator::~Simulator() = default;
+Simulator::Simulator(Simulator&&) noexcept = default;
+
+void Simulator::rebind(const PreparedInstance& prep) {
+  owned_.reset();
+  prep_ = &prep;
+  if (scratch_) scratch_->bind(prep);
+}
+
+SimResult Simulator::run(const Schedule& s) {
+  if (auto problem = check_schedule_bounds(prep_->inst, s)) throw std::invalid_argument(*problem);
+  if (!scratch_) scratch_ = std::make_unique<Scratch>(*prep_);
+  return scratch_->run(s);
 }
 
 std::vector<RectQ> configuration_at(const Instance& inst, const Schedule& s, const Rational& t) {

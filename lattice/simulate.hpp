@@ -14,7 +14,8 @@
 //  - a broad phase finds the pairs whose swept boxes overlap: moving regions
 //    query a table of all regions by grid cell (a dense array over the
 //    shape's box, a hash table elsewhere), and moving regions meet each
-//    other in per-cell lists of their swept boxes;
+//    other in per-cell lists of their swept boxes (up to 48 moving regions:
+//    every pair whose swept boxes overlap);
 //  - the exact test solves eight strict linear inequalities in time.
 // Cycle collisions are found up front from the face walks (FaceNets): the
 // mismatch around a face is piecewise linear in time, so the first moment it
@@ -73,9 +74,15 @@ class Simulator {
 
   // Runs schedule s. Requires check_schedule_bounds(inst, s) to pass. Work
   // arrays are kept between runs: after the first run of a simulator, runs
-  // allocate only for what they return.
+  // allocate only for what they return, and a run resets only the regions
+  // the previous run moved (all of them when the time scale D changes).
   SimResult run(const Schedule& s);
   SimResult run_order(const std::vector<CouplingId>& order) { return run(schedule_from_order(order)); }
+
+  // Simulates prep from now on (its tables must outlive the simulator),
+  // keeping the work arrays' memory: one simulator serves many instances
+  // (verify's Verifier, one formula after another). O(n + r).
+  void rebind(const PreparedInstance& prep);
 
   const Instance& instance() const { return prep_->inst; }
   const PreparedInstance& prepared() const { return *prep_; }

@@ -2,8 +2,9 @@
 // size, with assignment maps both ways. The construction and its proof are in
 // docs/formulas.md ("3-SAT to LSAT<=3"); in short:
 //
-//  1. normalise: drop repeated literals within a clause, drop tautologies,
-//     split a clause of s > 3 literals into s - 2 clauses with s - 3 fresh
+//  1. normalise: drop repeated literals within a clause, drop tautologies
+//     and clauses with the same literals as an earlier one (unless
+//     ToLsatOptions::keep_duplicates), split a clause of s > 3 literals into s - 2 clauses with s - 3 fresh
 //     chain variables (l1 l2 a1)(-a1 l3 a2)...(-a_{s-3} l_{s-1} l_s), and
 //     replace an empty clause by (u)(-u) for a fresh u;
 //  2. a variable whose two literals each occur at most once is kept as it is;
@@ -26,7 +27,8 @@
 // meaning, so lift_to_source is truncation.
 //
 // Sizes, with n, m the input's counts, A the chain variables, e the empty
-// clauses, m' the clauses after step 1 (excluding the (u)(-u) pairs), X the
+// clauses, m' the clauses after step 1 (excluding the (u)(-u) pairs and the
+// dropped duplicates; A counts only the kept long clauses), X the
 // variables of step 3 with their path lengths k_x, and d the number of links
 // (sum over clauses of max(0, r - 1), r = literals in the clause of
 // variables in X that are not a free end):
@@ -52,6 +54,9 @@ struct ToLsatOptions {
   // true: an input that is already LSAT<=3 is passed through unchanged.
   // false: always build the construction (tests exercise it on every input).
   bool passthrough = true;
+  // false (the default): a clause with the same set of literals as an
+  // earlier one is dropped in step 1 (smaller output, same models).
+  bool keep_duplicates = false;
 };
 
 struct ToLsatStats {
@@ -60,6 +65,7 @@ struct ToLsatStats {
   size_t in_clauses = 0;
   size_t repeated_literals = 0;   // literals dropped as repeats within a clause
   size_t tautologies = 0;         // clauses dropped as always true
+  size_t duplicate_clauses = 0;   // clauses dropped as repeats of an earlier one (as literal sets)
   size_t empty_clauses = 0;       // e: each became (u)(-u)
   size_t split_clauses = 0;       // clauses of more than 3 literals
   size_t chain_vars = 0;          // A
@@ -93,7 +99,7 @@ class LsatReduction {
   std::vector<bool> lift_to_target(const std::vector<bool>& in) const;
 
  private:
-  friend LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt);
+  friend class LsatBuilder;
 
   // How lift_to_target values an output variable above source_vars.
   struct Recipe {
@@ -116,7 +122,8 @@ class LsatReduction {
 // tautological ones). Requires validate(in) empty (throws
 // std::invalid_argument); throws std::length_error if the output would have
 // more than INT_MAX variables. Time and memory O(n + L) for L literal
-// occurrences (plus O(L log L) for the LSAT<=3 pass-through test).
+// occurrences (plus O(L log L) for the LSAT<=3 pass-through test and the
+// duplicate test).
 LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt = {});
 
 }  // namespace gridlock

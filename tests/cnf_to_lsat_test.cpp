@@ -27,8 +27,9 @@ struct Size {
   int64_t vars = 0, clauses = 0;
 };
 
-Size documented_size(const Formula& in) {
+Size documented_size(const Formula& in, bool keep_duplicates = false) {
   std::vector<std::vector<int>> groups;  // per normalised clause: its input literals
+  std::set<std::set<int>> kept;          // the literal sets of the clauses kept so far
   int64_t A = 0, e = 0, mprime = 0;
   for (const auto& c : in.clauses) {
     std::vector<int> s;
@@ -41,6 +42,7 @@ Size documented_size(const Formula& in) {
       ++e;
       continue;
     }
+    if (!keep_duplicates && !kept.insert(std::set<int>(s.begin(), s.end())).second) continue;
     if (s.size() <= 3) {
       groups.push_back(s);
       ++mprime;
@@ -101,7 +103,7 @@ Verdict check_reduction(const Formula& in, const ToLsatOptions& opt, bool with_d
     EXPECT_EQ(out.clauses, in.clauses);
     EXPECT_EQ(out.num_vars, in.num_vars);
   } else {
-    Size s = documented_size(in);
+    Size s = documented_size(in, opt.keep_duplicates);
     EXPECT_EQ(out.num_vars, s.vars);
     EXPECT_EQ(static_cast<int64_t>(out.clauses.size()), s.clauses);
   }
@@ -151,6 +153,7 @@ TEST(ToLsat, Random3CnfBothWays) {
     Formula in = test::random_cnf(rng, n, m, 3, 3, false);
     ToLsatOptions opt;
     opt.passthrough = t % 2 == 0;
+    opt.keep_duplicates = t % 5 == 1;  // both ways (small n: many repeated clauses)
     auto st = check_reduction(in, opt, t % 4 == 0, t % 25 == 0 && n <= 8);
     (st == Verdict::Yes ? tally.sat : tally.unsat)++;
     if (::testing::Test::HasFailure()) break;  // one seed to replay, not a flood
@@ -176,6 +179,7 @@ TEST(ToLsat, MessyCnfBothWays) {
     Formula in = test::random_cnf(rng, n, m, t % 5 == 0 ? 0 : 1, 7, true);
     ToLsatOptions opt;
     opt.passthrough = t % 3 != 0;
+    opt.keep_duplicates = t % 5 == 2;
     auto st = check_reduction(in, opt, t % 4 == 0, t % 25 == 0 && n <= 8);
     (st == Verdict::Yes ? tally.sat : tally.unsat)++;
     if (::testing::Test::HasFailure()) break;
@@ -227,9 +231,24 @@ TEST(ToLsat, SmallCasesByHand) {
     Formula g;
     g.num_vars = 2;
     g.clauses = {{1, 2}, {1, 2}, {-1}};
-    LsatReduction r2 = reduce_to_lsat(g);
+    ToLsatOptions keep;
+    keep.keep_duplicates = true;  // by default the second {1, 2} is dropped (next case)
+    LsatReduction r2 = reduce_to_lsat(g, keep);
     EXPECT_EQ(r2.output().clauses, (std::vector<std::vector<int>>{{3, 4}, {1, 5}, {-5, 2}, {-1}, {-3, 1}, {-4, 2}}));
     EXPECT_EQ(r2.stats().links, 1u);
+  }
+  // Clauses with the same literals as an earlier one are dropped (the input
+  // is not LSAT<=3: literal 1 occurs three times).
+  {
+    Formula g;
+    g.num_vars = 2;
+    g.clauses = {{1, 2}, {2, 1}, {1, 2, 1}};
+    LsatReduction r3 = reduce_to_lsat(g);
+    EXPECT_EQ(r3.output().clauses, (std::vector<std::vector<int>>{{1, 2}}));
+    EXPECT_EQ(r3.stats().duplicate_clauses, 2u);
+    EXPECT_EQ(r3.stats().repeated_literals, 1u);
+    EXPECT_FALSE(r3.stats().identity);
+    check_reduction(g, ToLsatOptions{}, true, true);
   }
   // Tautologies vanish; a formula of tautologies becomes empty (when built:
   // as it stands it is LSAT<=3 and would pass through).

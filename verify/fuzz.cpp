@@ -50,7 +50,8 @@ Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
 }
 
 Formula shrink_disagreement(const Formula& f, const VerifyOptions& opt, ShrinkStats* stats) {
-  auto disagrees = [&](const Formula& g) { return !verify_formula(g, "shrink", opt).agree; };
+  Verifier verifier;  // one simulator's work arrays for every try
+  auto disagrees = [&](const Formula& g) { return !verifier.verify(g, "shrink", opt).agree; };
   Formula g = shrink_formula(f, disagrees, stats);
   g.comments.push_back("shrunk from a formula with " + std::to_string(f.num_vars) + " variables and " +
                        std::to_string(f.clauses.size()) + " clauses");

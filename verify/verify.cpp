@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -45,6 +46,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 std::vector<std::string> names_of(const Instance& inst, const std::vector<CouplingId>& order) {
   std::vector<std::string> out;
+  out.reserve(order.size());
   for (CouplingId q : order) out.push_back(inst.couplings()[q].name);
   return out;
 }
@@ -58,9 +60,6 @@ std::vector<std::string> times_of(const Instance& inst, const Schedule& s) {
   return out;
 }
 
-// The continuous reduction: compile G for continuous time, CaDiCaL's model
-// as start times through the simulator, the exact continuous solver, its
-// start times through the simulator and back to an assignment of F.
 // The certificate maps between F and G: to-lsat's, or the identity when G = F
 // (VerifyOptions::direct).
 struct Lift {
@@ -69,7 +68,39 @@ struct Lift {
   std::vector<bool> lift_to_source(const std::vector<bool>& v) const { return red ? red->lift_to_source(v) : v; }
 };
 
-void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt) {
+// The Verifier's simulator, pointed at prep (created on first use).
+Simulator& simulator_for(std::unique_ptr<Simulator>& sim, const PreparedInstance& prep) {
+  if (sim) sim->rebind(prep);
+  else sim = std::make_unique<Simulator>(prep);
+  return *sim;
+}
+
+SolveOptions solve_options(const VerifyOptions& opt) {
+  SolveOptions so;
+  so.seconds = opt.solve_seconds;
+  so.max_states = opt.max_states;
+  return so;
+}
+
+// What disagreed, joined by "; ".
+struct Problems {
+  std::string text;
+  void add(const std::string& p) { text += (text.empty() ? "" : "; ") + p; }
+  // An exact solver's answer against CaDiCaL's (UNKNOWN on either side is no disagreement).
+  void compare(const std::string& solver, Verdict got, Verdict sat) {
+    if (got != Verdict::Unknown && sat != Verdict::Unknown && got != sat)
+      add(solver + " says " + verdict_name(got) + ", CaDiCaL says " + (sat == Verdict::Yes ? "SAT" : "UNSAT"));
+  }
+  void check(Check c, const std::string& what) {
+    if (c == Check::Invalid) add(what);
+  }
+};
+
+// The continuous reduction: compile G for continuous time, CaDiCaL's model
+// as start times through the simulator, the exact continuous solver, its
+// start times through the simulator and back to an assignment of F.
+void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt,
+                       std::unique_ptr<Simulator>& simulator) {
   r.ran_continuous = true;
   auto t0 = std::chrono::steady_clock::now();
   r.compiled_continuous = compile_formula(r.lsat, opt.mutation, ReductionModel::Continuous);
@@ -79,17 +110,15 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
   r.cnodes = c.stats.nodes;
   r.couplings = c.stats.couplings;  // the same in both reductions
   r.max_coupling = c.stats.max_coupling;
-  Simulator sim(inst);
+  const PreparedInstance prep(inst);
+  Simulator& sim = simulator_for(simulator, prep);
   if (r.sat == Verdict::Yes) {
     Schedule s = times_from_assignment(c, red.lift_to_target(sat.model));
     r.csat_times = times_of(inst, s);
     r.csat_witness = sim.run(s).collision ? Check::Invalid : Check::Valid;
   }
   t0 = std::chrono::steady_clock::now();
-  SolveOptions so;
-  so.seconds = opt.solve_seconds;
-  so.max_states = opt.max_states;
-  ContinuousResult cr = solve_continuous(inst, so);
+  ContinuousResult cr = solve_continuous(inst, solve_options(opt));
   r.ms_csolve = ms_since(t0);
   r.csolver_conflicts = cr.stats.refuted;
   r.continuous_solver = cr.status;
@@ -104,33 +133,18 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
   }
 }
 
-template <class F>
-void append_continuous_problems(const VerifyResult& r, F&& problem) {
-  if (r.continuous_solver != Verdict::Unknown && r.sat != Verdict::Unknown && r.continuous_solver != r.sat)
-    problem(std::string("exact continuous solver says ") + verdict_name(r.continuous_solver) + ", CaDiCaL says " +
-            (r.sat == Verdict::Yes ? "SAT" : "UNSAT"));
-  if (r.csat_witness == Check::Invalid) problem("the SAT model's start times collide in the simulator (continuous)");
-  if (r.csolver_witness == Check::Invalid) problem(r.csolver_issue);
+void continuous_problems(const VerifyResult& r, Problems& p) {
+  p.compare("exact continuous solver", r.continuous_solver, r.sat);
+  p.check(r.csat_witness, "the SAT model's start times collide in the simulator (continuous)");
+  if (r.csolver_witness == Check::Invalid) p.add(r.csolver_issue);
 }
 
-}  // namespace
-
-VerifyResult verify_formula(const Formula& f, const std::string& name, const VerifyOptions& opt) {
-  VerifyResult r;
-  r.name = name;
-  r.source = f;
-
-  // 1. CaDiCaL on the source.
+// G: F itself (VerifyOptions::direct, no empty clause) or to-lsat's output.
+Lift lsat_form(VerifyResult& r, const VerifyOptions& opt, std::optional<LsatReduction>& lsat) {
+  const Formula& f = r.source;
   auto t0 = std::chrono::steady_clock::now();
-  SatResult sat = solve_sat(f);
-  r.ms_sat = ms_since(t0);
-  r.sat = sat.status;
-
-  // 2. to-lsat if needed, compile.
-  t0 = std::chrono::steady_clock::now();
   const bool direct = opt.direct && std::none_of(f.clauses.begin(), f.clauses.end(),
                                                  [](const std::vector<int>& cl) { return cl.empty(); });
-  std::optional<LsatReduction> lsat;
   Lift red;
   if (direct) {
     r.lsat = f;
@@ -141,18 +155,16 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
     r.lsat = lsat->output();
   }
   r.ms_compile = ms_since(t0);
-  if (opt.model != VerifyModel::Discrete) verify_continuous(r, sat, red, opt);
-  if (opt.model == VerifyModel::Continuous) {
-    std::string p;
-    auto problem = [&](const std::string& x) { p += (p.empty() ? "" : "; ") + x; };
-    if (r.sat == Verdict::Unknown) problem("CaDiCaL gave no answer");
-    append_continuous_problems(r, problem);
-    r.problem = p;
-    r.agree = p.empty();
-    return r;
-  }
+  return red;
+}
+
+// The discrete reduction: compile G, lift CaDiCaL's model to a schedule
+// through the simulator, the exact discrete solver (its YES order replayed
+// by the simulator, lifted back to F), the gap checker and its witness.
+void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt,
+                     std::unique_ptr<Simulator>& simulator, Problems& p) {
   r.ran_discrete = true;
-  t0 = std::chrono::steady_clock::now();
+  auto t0 = std::chrono::steady_clock::now();
   r.compiled = compile_formula(r.lsat, opt.mutation);
   const CompiledFormula& c = r.compiled;
   r.ms_compile += ms_since(t0);
@@ -161,34 +173,26 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   r.couplings = c.stats.couplings;
   r.max_coupling = c.stats.max_coupling;
   const Instance& inst = c.instance;
-  // The motion tables, built once for every check below (and the simulator's
-  // work arrays, reused by its three runs).
+  // The motion tables, built once for every check below; the simulator's
+  // work arrays serve its three runs (and every formula of a Verifier).
   const PreparedInstance prep(inst);
-  Simulator sim(prep);
-
-  // Certificate: the SAT model, lifted to a schedule, through the simulator.
+  Simulator& sim = simulator_for(simulator, prep);
   if (r.sat == Verdict::Yes) {
     std::vector<CouplingId> order = schedule_from_assignment(c, red.lift_to_target(sat.model));
     r.sat_schedule = names_of(inst, order);
     r.sat_witness = sim.run_order(order).collision ? Check::Invalid : Check::Valid;
   }
-
-  // The exact discrete solver.
   t0 = std::chrono::steady_clock::now();
-  SolveOptions so;
-  so.seconds = opt.solve_seconds;
-  so.max_states = opt.max_states;
-  SolveResult sr = solve_discrete(prep, so, &sim);
+  SolveResult sr = solve_discrete(prep, solve_options(opt), &sim);
   r.ms_solve = ms_since(t0);
   r.solver_states = sr.stats.states;
   r.discrete = sr.status;
   if (r.discrete == Verdict::Yes) {
     r.solver_schedule = names_of(inst, sr.order);
     std::vector<bool> back = red.lift_to_source(assignment_from_schedule(c, sr.order));
-    r.solver_witness = satisfies(f, back) ? Check::Valid : Check::Invalid;
+    r.solver_witness = satisfies(r.source, back) ? Check::Valid : Check::Invalid;
   }
-
-  // 3. The gap checker (continuous model), its witness through the simulator.
+  // The gap checker (continuous model), its witness through the simulator.
   t0 = std::chrono::steady_clock::now();
   GapVerdict gv = check_gaps(inst);
   r.ms_gaps = ms_since(t0);
@@ -198,24 +202,47 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
     all_at_once.start.assign(inst.couplings().size(), Rational(0));
     r.gaps_witness = sim.run(all_at_once).collision ? Check::Invalid : Check::Valid;
   }
-
-  // Compare.
-  std::string p;
-  auto problem = [&](const std::string& s) { p += (p.empty() ? "" : "; ") + s; };
-  if (r.sat == Verdict::Unknown) problem("CaDiCaL gave no answer");
-  if (r.discrete != Verdict::Unknown && r.sat != Verdict::Unknown && r.discrete != r.sat)
-    problem(std::string("exact solver says ") + verdict_name(r.discrete) + ", CaDiCaL says " +
-            (r.sat == Verdict::Yes ? "SAT" : "UNSAT"));
+  p.compare("exact solver", r.discrete, r.sat);
   if (r.continuous != Verdict::Yes)
-    problem("gap checker says the continuous model collides: " + describe_gap_verdict(inst, gv));
-  if (r.sat_witness == Check::Invalid) problem("the SAT model's schedule collides in the simulator");
-  if (r.solver_witness == Check::Invalid)
-    problem("the solver's schedule lifts to an assignment that falsifies the formula");
-  if (r.gaps_witness == Check::Invalid) problem("running every coupling at time 0 collides in the simulator");
-  if (r.ran_continuous) append_continuous_problems(r, problem);
-  r.problem = p;
-  r.agree = p.empty();
+    p.add("gap checker says the continuous model collides: " + describe_gap_verdict(inst, gv));
+  p.check(r.sat_witness, "the SAT model's schedule collides in the simulator");
+  p.check(r.solver_witness, "the solver's schedule lifts to an assignment that falsifies the formula");
+  p.check(r.gaps_witness, "running every coupling at time 0 collides in the simulator");
+}
+
+}  // namespace
+
+Verifier::Verifier() = default;
+Verifier::~Verifier() = default;
+Verifier::Verifier(Verifier&&) noexcept = default;
+Verifier& Verifier::operator=(Verifier&&) noexcept = default;
+
+VerifyResult Verifier::verify(const Formula& f, const std::string& name, const VerifyOptions& opt) {
+  VerifyResult r;
+  r.name = name;
+  r.source = f;
+  // 1. CaDiCaL on the source.
+  auto t0 = std::chrono::steady_clock::now();
+  SatResult sat = solve_sat(f);
+  r.ms_sat = ms_since(t0);
+  r.sat = sat.status;
+  // 2. to-lsat if needed, then each reduction asked for.
+  std::optional<LsatReduction> lsat;
+  const Lift red = lsat_form(r, opt, lsat);
+  Problems p;
+  if (r.sat == Verdict::Unknown) p.add("CaDiCaL gave no answer");
+  if (opt.model != VerifyModel::Continuous) verify_discrete(r, sat, red, opt, sim_, p);
+  if (opt.model != VerifyModel::Discrete) {
+    verify_continuous(r, sat, red, opt, sim_);
+    continuous_problems(r, p);
+  }
+  r.problem = p.text;
+  r.agree = p.text.empty();
   return r;
+}
+
+VerifyResult verify_formula(const Formula& f, const std::string& name, const VerifyOptions& opt) {
+  return Verifier().verify(f, name, opt);
 }
 
 std::string write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt) {

@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -95,6 +96,28 @@ struct VerifyResult {
 // to-lsat); limits give UNKNOWN. Time: CaDiCaL + O(size) compile + the
 // solver (exponential worst case, bounded by the limits) + simulator runs.
 VerifyResult verify_formula(const Formula& f, const std::string& name, const VerifyOptions& opt);
+
+class Simulator;
+
+// The same check, for many formulas in a row (a fuzz campaign, a folder of
+// formulas): one Verifier keeps the simulator's work arrays from formula to
+// formula instead of allocating them again for each. verify(f, name, opt)
+// returns exactly what verify_formula(f, name, opt) returns. Not thread-safe:
+// one Verifier per thread.
+class Verifier {
+ public:
+  Verifier();
+  ~Verifier();
+  Verifier(Verifier&&) noexcept;
+  Verifier& operator=(Verifier&&) noexcept;
+  Verifier(const Verifier&) = delete;
+  Verifier& operator=(const Verifier&) = delete;
+
+  VerifyResult verify(const Formula& f, const std::string& name, const VerifyOptions& opt);
+
+ private:
+  std::unique_ptr<Simulator> sim_;  // rebound to each formula's instance
+};
 
 // Writes a reproducer for r into dir (created, with parents): formula.cnf,
 // lsat.cnf, instance.grid, sat-schedule.txt, solver-schedule.txt, README.txt
