@@ -13,11 +13,13 @@ namespace {
 
 // Checks formula i of a fuzz campaign and counts it; false when the campaign
 // ends here (a stop request, or a disagreement without keep_going).
-bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const FuzzEvents& ev, FuzzTally& t) {
+// One Verifier serves the whole campaign (its simulator's arrays are kept).
+bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const FuzzEvents& ev, Verifier& verifier,
+              FuzzTally& t) {
   Formula f = fuzz_formula(c.formulas, i);
   VerifyOptions vi = c.verify;  // the time limit bounds the campaign: the last formula gets what is left
   if (c.seconds > 0) vi.solve_seconds = std::min(c.verify.solve_seconds, std::max(c.seconds - clock.elapsed(), 0.001));
-  VerifyResult r = verify_formula(f, "formula " + std::to_string(i), vi);
+  VerifyResult r = verifier.verify(f, "formula " + std::to_string(i), vi);
   if (stop_requested()) return false;  // answers may be cut short: the formula is not counted
   ++t.formulas;
   t.sat += r.sat == Verdict::Yes;
@@ -31,7 +33,7 @@ bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const Fu
   found.index = i;
   found.shrunk = shrink_disagreement(f, c.verify, &found.shrink);
   if (stop_requested()) return false;  // shrinking cut short: no reproducer rather than a wrong one
-  VerifyResult rs = verify_formula(found.shrunk, "shrunk formula " + std::to_string(i), c.verify);
+  VerifyResult rs = verifier.verify(found.shrunk, "shrunk formula " + std::to_string(i), c.verify);
   found.problem = rs.problem;
   found.original = std::move(f);
   if (ev.finding) ev.finding(found, rs);
@@ -63,9 +65,10 @@ FormulaStatus count(const VerifyResult& r, VerifyTally& t) {
 FuzzTally run_fuzz_campaign(const FuzzCampaign& c, const FuzzEvents& events) {
   const Deadline clock;  // no limit: only its clock is used
   FuzzTally t;
+  Verifier verifier;
   for (uint64_t i = c.first; i < c.last && !stop_requested(); i += c.step) {
     if (c.seconds > 0 && clock.elapsed() >= c.seconds) break;
-    if (!fuzz_one(c, i, clock, events, t)) break;
+    if (!fuzz_one(c, i, clock, events, verifier, t)) break;
     if (i > UINT64_MAX - c.step) break;
     t.seconds = clock.elapsed();
     if (events.progress) events.progress(t);
@@ -91,10 +94,11 @@ std::string formula_stem(const std::string& path) {
 VerifyTally run_verify_campaign(const std::vector<Formula>& formulas, const std::vector<std::string>& names,
                                 const VerifyCampaign& c, const VerifyEvents& events) {
   VerifyTally t;
+  Verifier verifier;  // one for all formulas: its simulator's arrays are kept
   for (size_t i = 0; i < formulas.size() && !stop_requested(); ++i) {
     if (!c.shard.has(i)) continue;
     if (events.start) events.start(i);
-    VerifyResult r = verify_formula(formulas[i], names[i], c.verify);
+    VerifyResult r = verifier.verify(formulas[i], names[i], c.verify);
     if (stop_requested()) break;  // its answers may be cut short: not counted
     const FormulaStatus s = count(r, t);
     if (s == FormulaStatus::Disagree && !c.reproducers.empty()) {
