@@ -212,10 +212,12 @@ TEST(Recipes, GnuParallelLocallyAndThroughSshloginfile) {
 TEST(Recipes, SlurmArrayScriptByHand) {
   std::string dir = test::temp_dir();
   const std::string script = std::string(GRIDLOCK_SOURCE_DIR) + "/examples/slurm-fuzz.sbatch";
-  for (int k = 0; k < 4; ++k)
-    ASSERT_EQ(sh("cd " + dir + " && GRIDLOCK=" + GRIDLOCK_BINARY + " SEED=9 COUNT=40 OUT=res SLURM_ARRAY_TASK_ID=" +
-                 std::to_string(k) + " SLURM_ARRAY_TASK_COUNT=4 bash " + script + " >/dev/null"),
-              0);
+  for (int k = 0; k < 4; ++k) {
+    std::string cmd = "cd " + dir;
+    cmd += " && GRIDLOCK=" GRIDLOCK_BINARY " SEED=9 COUNT=40 OUT=res SLURM_ARRAY_TASK_ID=" + std::to_string(k);
+    cmd += " SLURM_ARRAY_TASK_COUNT=4 bash " + script + " >/dev/null";
+    ASSERT_EQ(sh(cmd), 0);
+  }
   expect_merge_equals_unsharded(dir, dir + "/res/fuzz-*.json");
 }
 

@@ -24,7 +24,7 @@ Formula fuzz_formula(const FuzzParams& p, uint64_t index) {
   auto three_sat = [&](auto params) {
     params.n = n;
     params.k = std::min(3, n);
-    params.m = static_cast<int>(rng.between(1, 7 * n));
+    params.m = static_cast<int>(rng.between(1, 7 * static_cast<int64_t>(n)));
     params.seed = rng.next();
     return params;
   };
