@@ -14,7 +14,8 @@
 // Signals: the write itself is not interrupted by our SIGINT/SIGTERM
 // handlers (they only set a flag, common/limits.hpp), so a campaign that
 // stops between files leaves only whole files. Library code returns the
-// Diagnostic; tools/cli_common.hpp's write_text_file throws it as UserError.
+// Diagnostic; tools/cli_common.hpp's write_text_file throws it as
+// the command line's UserError (tools/user_error.hpp).
 #pragma once
 
 #include <fcntl.h>

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -28,14 +27,5 @@ struct Diagnostic {
 
 // A readers' result: either a value or the first problem found.
 using MaybeError = std::optional<Diagnostic>;
-
-// Thrown only by command-line code (tools/) for bad usage or bad input that
-// has already been turned into a Diagnostic; main() catches it, prints
-// "gridlock: error: <what>" and exits 1. Library code returns Diagnostics.
-class UserError : public std::runtime_error {
- public:
-  explicit UserError(const std::string& what) : std::runtime_error(what) {}
-  explicit UserError(const Diagnostic& d) : std::runtime_error(d.str()) {}
-};
 
 }  // namespace gridlock

@@ -12,6 +12,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 namespace {

@@ -23,6 +23,7 @@
 #include "lattice/animation.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/schedule.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 

@@ -8,6 +8,7 @@
 #include "common/diagnostic.hpp"
 #include "common/limits.hpp"
 #include "tools/cli_common.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock::cli {
 

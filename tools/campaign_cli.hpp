@@ -9,6 +9,7 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tools/user_error.hpp"
 #include "verify/campaign.hpp"
 
 namespace gridlock::cli {

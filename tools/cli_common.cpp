@@ -20,6 +20,7 @@
 #include "lattice/grid_format.hpp"
 #include "reductions/compile.hpp"
 #include "tools/options.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock::cli {
 

@@ -11,6 +11,7 @@
 #include "cnf/formula.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/schedule.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock::cli {
 

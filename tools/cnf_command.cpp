@@ -19,6 +19,7 @@
 #include "tools/command.hpp"
 #include "tools/options.hpp"
 #include "tools/output.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 namespace {

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "tools/user_error.hpp"
+
 namespace gridlock {
 
 using CommandFn = std::function<int(const std::vector<std::string>& args)>;

@@ -18,6 +18,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/user_error.hpp"
 #include "verify/campaign.hpp"
 
 namespace gridlock {

@@ -17,6 +17,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/user_error.hpp"
 #include "verify/instance_set.hpp"
 
 namespace gridlock {

@@ -10,6 +10,7 @@
 #include "common/diagnostic.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 

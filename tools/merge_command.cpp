@@ -10,6 +10,7 @@
 
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 namespace {

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "common/diagnostic.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock::cli {
 

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/verdict.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 

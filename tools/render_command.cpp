@@ -4,6 +4,7 @@
 #include "lattice/render.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/user_error.hpp"
 
 namespace gridlock {
 namespace {

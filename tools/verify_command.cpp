@@ -23,6 +23,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/user_error.hpp"
 #include "verify/campaign.hpp"
 #include "verify/verify.hpp"
 
