@@ -127,8 +127,4 @@ Schedule times_from_assignment(const CompiledFormula& c, const std::vector<bool>
 // coupling. Result indexed 1..num_vars. O(n).
 std::vector<bool> assignment_from_times(const CompiledFormula& c, const Schedule& s);
 
-// The c-lines of `gridlock compile`: sizes, the size formulas checked against
-// the counts, and the coupling-size report.
-std::vector<std::string> describe_compiled(const CompiledFormula& c);
-
 }  // namespace gridlock

@@ -2,6 +2,8 @@
 // reduction; reductions/compile.hpp, docs/gadgets.md).
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "gadgets/mutation.hpp"
 #include "lattice/grid_format.hpp"
@@ -14,6 +16,39 @@
 
 namespace gridlock {
 namespace {
+
+// The c-lines of `gridlock compile`: sizes, the size formulas checked against
+// the counts, and the coupling-size report.
+std::vector<std::string> describe_compiled(const CompiledFormula& c) {
+  const CompileStats& s = c.stats;
+  std::vector<std::string> lines;
+  lines.push_back("instance: " + std::to_string(s.nodes) + " nodes, " + std::to_string(s.edges) + " edges, " +
+                  std::to_string(s.ops) + " operations (" +
+                  (s.vertical_ops ? "expansions, " + std::to_string(s.vertical_ops) + " of them vertical"
+                                  : std::string("horizontal expansions")) +
+                  "), " + std::to_string(s.couplings) + " couplings, " + std::to_string(s.rows) + " rows");
+  lines.push_back("model: " + std::string(reduction_model_name(c.model)) + " time" +
+                  (c.model == ReductionModel::Continuous ? " (the link y_n < z_1 is a separation gadget)" : ""));
+  lines.push_back("gadgets: " + std::to_string(s.variable_gadgets) + " variable, " + std::to_string(s.clause_gadgets) +
+                  " clause, " + std::to_string(s.order_gadgets) + " order" +
+                  (c.model == ReductionModel::Continuous ? ", " + std::to_string(s.separation_gadgets) + " separation"
+                                                         : std::string()));
+  if (c.num_vars >= 1) {
+    const auto n = static_cast<long long>(c.num_vars), m = static_cast<long long>(c.num_clauses),
+               L = static_cast<long long>(s.literals);
+    const bool cont = c.model == ReductionModel::Continuous;
+    lines.push_back("size formulas (n=" + std::to_string(n) + ", m=" + std::to_string(m) + ", L=" + std::to_string(L) +
+                    "): nodes " +
+                    (cont ? "43n+5L+15m-9 = " + std::to_string(43 * n + 5 * L + 15 * m - 9)
+                          : "43n+5L+15m-11 = " + std::to_string(43 * n + 5 * L + 15 * m - 11)) +
+                    ", operations 8n+L+3m-2 = " + std::to_string(8 * n + L + 3 * m - 2) +
+                    ", couplings 4n+m = " + std::to_string(4 * n + m));
+  }
+  lines.push_back("largest coupling: " + s.max_coupling_name + " with " + std::to_string(s.max_coupling) +
+                  " operations" + (s.max_coupling <= 3 ? " (at most 3, as the paper's theorem needs)" : ""));
+  for (const auto& o : s.oversize) lines.push_back("coupling above 3: " + o);
+  return lines;
+}
 
 int run_compile(const std::vector<std::string>& args) {
   namespace po = boost::program_options;
