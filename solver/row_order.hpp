@@ -4,8 +4,8 @@
 // gap constraints in solver/constraints.hpp) need, for every row, its nodes
 // from left to right. A comparison sort would cost O(n log n); the gap checker
 // is promised linear time (solver/gaps.hpp), so this is an LSD radix sort on the key (y, x) shifted to
-// be non-negative: coordinates are bounded by kMaxCoordinate < 2^30, so the
-// key fits 62 bits and four passes of 16 bits sort it.
+// start at zero: coordinates are bounded by kMaxCoordinate < 2^30, so the
+// key fits 62 bits, and passes of 11 bits over the bits the key uses sort it.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +17,8 @@ namespace gridlock {
 
 // Returns every node id, ordered by (y, x) of its cell.
 // Requires: cells within +-kMaxCoordinate (guaranteed by InstanceBuilder).
-// Complexity: O(n) time (4 counting passes of 2^16 buckets) and O(n) memory.
+// Complexity: O(n) time (at most 6 counting passes of 2^11 buckets, one per
+// 11 bits of the instance's extent) and O(n) memory.
 std::vector<NodeId> nodes_by_row(const Instance& inst);
 
 // A run [begin, end) of nodes_by_row's result that shares one y.

@@ -86,6 +86,36 @@ TEST(Gaps, RejectsVerticalInstances) {
   FAIL() << "no vertical instance drawn";
 }
 
+// Shapes wider and taller than one radix digit (2^11), at both ends of the
+// coordinate range, added in a shuffled order: several passes, and keys
+// shifted from the most negative coordinates.
+TEST(RowOrder, WideShapesAtTheCoordinateLimits) {
+  const uint64_t base = test::base_seed(8100);
+  for (int i = 0; i < test::scaled(6); ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    Rng rng(seed);
+    const int64_t w = rng.between(1, 5000), h = rng.between(1, 5000);
+    const int64_t x0 = i % 2 == 0 ? -kMaxCoordinate : kMaxCoordinate - w;
+    const int64_t y0 = i % 3 == 0 ? -kMaxCoordinate : kMaxCoordinate - h;
+    std::vector<Vec2> cells;  // an L: a row of w cells and a column of h
+    for (int64_t x = 0; x < w; ++x) cells.push_back({x0 + x, y0});
+    for (int64_t y = 1; y < h; ++y) cells.push_back({x0, y0 + y});
+    rng.shuffle(cells);
+    InstanceBuilder b;
+    for (Vec2 c : cells) ASSERT_FALSE(b.add_node(c)) << "seed " << seed;
+    for (int64_t x = 1; x < w; ++x) ASSERT_FALSE(b.add_edge({x0 + x - 1, y0}, {x0 + x, y0}));
+    for (int64_t y = 1; y < h; ++y) ASSERT_FALSE(b.add_edge({x0, y0 + y - 1}, {x0, y0 + y}));
+    Instance inst;
+    ASSERT_FALSE(b.finish(inst)) << "seed " << seed;
+    std::vector<NodeId> want(inst.num_nodes());
+    std::iota(want.begin(), want.end(), 0);
+    const auto& c = inst.cells();
+    std::sort(want.begin(), want.end(),
+              [&](NodeId a, NodeId d) { return c[a].y != c[d].y ? c[a].y < c[d].y : c[a].x < c[d].x; });
+    ASSERT_EQ(nodes_by_row(inst), want) << "seed " << seed << " (" << w << " x " << h << ")";
+  }
+}
+
 TEST(RowOrder, MatchesComparisonSort) {
   const uint64_t base = test::base_seed(8000);
   for (int i = 0; i < test::scaled(300); ++i) {
