@@ -185,6 +185,101 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// Runs the chronological precedence engine (search only) on smp's gap
+// system; fills r's code and decisions.
+void run_chrono(const Sample& smp, double limit, Run& r) {
+  const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
+  SolveOptions o;
+  o.seconds = limit;
+  SearchBudget budget(o);
+  SolveStats st;
+  try {
+    const SearchOutcome out = search_precedence_chronological(sys, budget, st);
+    r.code = out.status == Verdict::Yes ? 10 : 20;
+  } catch (const SearchBudget::LimitReached&) {
+    r.code = 0;
+  }
+  r.decisions = st.decisions;
+}
+
+// One timed run of engine e on smp (wall and CPU time, decisions, answer).
+Run run_engine(const std::string& e, const Sample& smp, double limit) {
+  Run r;
+  const auto t0 = Clock::now();
+  const double c0 = cpu_now();
+  if (e == "sat" || e == "precedence") {
+    SolveOptions o;
+    o.seconds = limit;
+    o.engine = e == "sat" ? SolveOptions::Engine::Sat : SolveOptions::Engine::Precedence;
+    SolveResult res = solve_discrete(smp.inst, o);
+    r.decisions = res.stats.decisions;
+    r.code = exit_code(res.status);
+  } else if (e == "chrono") {
+    run_chrono(smp, limit, r);
+  } else if (e == "z3") {
+    const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
+    r.code = z3_gap_system(sys, limit);
+  } else {
+    SatLimits lim;
+    lim.seconds = limit;
+    SatResult sr = solve_sat(smp.source, lim);
+    r.code = sr.status == Verdict::Yes ? 10 : sr.status == Verdict::No ? 20 : 0;
+  }
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  r.cpu = cpu_now() - c0;
+  return r;
+}
+
+// Appends one CSV line for run r to GRIDLOCK_BENCH_CSV, if set.
+void append_csv(const std::string& family, const Sample& smp, const std::string& e, const Run& r) {
+  if (const char* csv = std::getenv("GRIDLOCK_BENCH_CSV")) {
+    std::ofstream out(csv, std::ios::app);
+    out << family << ',' << smp.name << ',' << (smp.sat ? "SAT" : "UNSAT") << ',' << e << ',' << r.seconds << ','
+        << r.cpu << ',' << r.decisions << ',' << r.code << '\n';
+  }
+}
+
+// Sets engine e's counters (times, wrong and unknown answers, decisions)
+// from its runs rs, run i being on samples[i % samples.size()].
+void report_engine(benchmark::State& state, const std::string& e, const std::vector<Run>& rs,
+                   const std::vector<Sample>& samples) {
+  std::vector<double> t, cpu;
+  double total = 0, worst = 0;
+  uint64_t dec = 0, wrong = 0, unknown = 0;
+  for (size_t i = 0; i < rs.size(); ++i) {
+    const Sample& smp = samples[i % samples.size()];
+    t.push_back(rs[i].seconds);
+    cpu.push_back(rs[i].cpu);
+    total += rs[i].seconds;
+    worst = std::max(worst, rs[i].seconds);
+    dec += rs[i].decisions;
+    if (rs[i].code == 0) ++unknown;
+    else if ((rs[i].code == 10) != smp.sat) ++wrong;
+  }
+  state.counters[e + "_median_s"] = median(t);
+  state.counters[e + "_max_s"] = worst;
+  state.counters[e + "_cpu_median_s"] = median(cpu);
+  state.counters[e + "_cpu_max_s"] = *std::max_element(cpu.begin(), cpu.end());
+  state.counters[e + "_wrong"] = static_cast<double>(wrong);
+  state.counters[e + "_unknown"] = static_cast<double>(unknown);
+  if (dec > 0) {
+    state.counters[e + "_decisions"] = static_cast<double>(dec) / static_cast<double>(rs.size());
+    state.counters[e + "_ms_per_decision"] = 1000 * total / static_cast<double>(dec);
+  }
+}
+
+// Sets the counter of the worst per-sample time ratio of engine a over
+// engine b (same sample, same run), if both ran.
+void report_worst_ratio(benchmark::State& state, const std::map<std::string, std::vector<Run>>& runs,
+                        const std::string& a, const std::string& b) {
+  if (!runs.count(a) || !runs.count(b)) return;
+  const std::vector<Run>& ra = runs.at(a);
+  const std::vector<Run>& rb = runs.at(b);
+  double worst = 0;
+  for (size_t i = 0; i < ra.size(); ++i) worst = std::max(worst, ra[i].seconds / std::max(rb[i].seconds, 1e-9));
+  state.counters[a + "_over_" + b + "_max"] = worst;
+}
+
 void run_family(benchmark::State& state, const std::string& family, const std::vector<Sample>& samples) {
   if (samples.empty()) {
     state.SkipWithError("no samples");
@@ -197,90 +292,22 @@ void run_family(benchmark::State& state, const std::string& family, const std::v
     for (const Sample& smp : samples) {
       for (const std::string& e : engines) {
         if (!engine_on(e)) continue;
-        Run r;
-        const auto t0 = Clock::now();
-        const double c0 = cpu_now();
-        if (e == "sat" || e == "precedence") {
-          SolveOptions o;
-          o.seconds = limit;
-          o.engine = e == "sat" ? SolveOptions::Engine::Sat : SolveOptions::Engine::Precedence;
-          SolveResult res = solve_discrete(smp.inst, o);
-          r.decisions = res.stats.decisions;
-          r.code = exit_code(res.status);
-        } else if (e == "chrono") {
-          const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
-          SolveOptions o;
-          o.seconds = limit;
-          SearchBudget budget(o);
-          SolveStats st;
-          try {
-            const SearchOutcome out = search_precedence_chronological(sys, budget, st);
-            r.code = out.status == Verdict::Yes ? 10 : 20;
-          } catch (const SearchBudget::LimitReached&) {
-            r.code = 0;
-          }
-          r.decisions = st.decisions;
-        } else if (e == "z3") {
-          const ConstraintSystem sys = build_gap_constraints(smp.inst, SpanningTree::build(smp.inst));
-          r.code = z3_gap_system(sys, limit);
-        } else {
-          SatLimits lim;
-          lim.seconds = limit;
-          SatResult sr = solve_sat(smp.source, lim);
-          r.code = sr.status == Verdict::Yes ? 10 : sr.status == Verdict::No ? 20 : 0;
-        }
-        r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        r.cpu = cpu_now() - c0;
+        const Run r = run_engine(e, smp, limit);
         runs[e].push_back(r);
-        if (const char* csv = std::getenv("GRIDLOCK_BENCH_CSV")) {
-          std::ofstream out(csv, std::ios::app);
-          out << family << ',' << smp.name << ',' << (smp.sat ? "SAT" : "UNSAT") << ',' << e << ',' << r.seconds << ','
-              << r.cpu << ',' << r.decisions << ',' << r.code << '\n';
-        }
+        append_csv(family, smp, e, r);
       }
     }
   }
   state.counters["samples"] = static_cast<double>(samples.size());
   state.counters["couplings"] = static_cast<double>(samples[0].inst.couplings().size());
-  for (auto& [e, rs] : runs) {
-    std::vector<double> t, cpu;
-    double total = 0, worst = 0;
-    uint64_t dec = 0, wrong = 0, unknown = 0;
-    for (size_t i = 0; i < rs.size(); ++i) {
-      const Sample& smp = samples[i % samples.size()];
-      t.push_back(rs[i].seconds);
-      cpu.push_back(rs[i].cpu);
-      total += rs[i].seconds;
-      worst = std::max(worst, rs[i].seconds);
-      dec += rs[i].decisions;
-      if (rs[i].code == 0) ++unknown;
-      else if ((rs[i].code == 10) != smp.sat) ++wrong;
-    }
-    state.counters[e + "_median_s"] = median(t);
-    state.counters[e + "_max_s"] = worst;
-    state.counters[e + "_cpu_median_s"] = median(cpu);
-    state.counters[e + "_cpu_max_s"] = *std::max_element(cpu.begin(), cpu.end());
-    state.counters[e + "_wrong"] = static_cast<double>(wrong);
-    state.counters[e + "_unknown"] = static_cast<double>(unknown);
-    if (dec > 0) {
-      state.counters[e + "_decisions"] = static_cast<double>(dec) / static_cast<double>(rs.size());
-      state.counters[e + "_ms_per_decision"] = 1000 * total / static_cast<double>(dec);
-    }
-  }
+  for (auto& [e, rs] : runs) report_engine(state, e, rs, samples);
   // Worst per-sample ratio of the default engine against Z3 (same sample,
-  // same run).
-  // (and of the learning engine against Z3, CaDiCaL and the sat engine).
-  auto worst_ratio = [&](const std::string& a, const std::string& b) {
-    if (!runs.count(a) || !runs.count(b)) return;
-    double worst = 0;
-    for (size_t i = 0; i < runs[a].size(); ++i)
-      worst = std::max(worst, runs[a][i].seconds / std::max(runs[b][i].seconds, 1e-9));
-    state.counters[a + "_over_" + b + "_max"] = worst;
-  };
-  worst_ratio("sat", "z3");
-  worst_ratio("precedence", "z3");
-  worst_ratio("precedence", "sat");
-  worst_ratio("precedence", "cadical");
+  // same run), and of the learning engine against Z3, CaDiCaL and the sat
+  // engine.
+  report_worst_ratio(state, runs, "sat", "z3");
+  report_worst_ratio(state, runs, "precedence", "z3");
+  report_worst_ratio(state, runs, "precedence", "sat");
+  report_worst_ratio(state, runs, "precedence", "cadical");
 }
 
 void BM_Satlib(benchmark::State& state, const std::string& set) { run_family(state, set, satlib(set)); }

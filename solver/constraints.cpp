@@ -152,50 +152,76 @@ ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree,
 
 int axis_of_face(int f) { return f < 2 ? 0 : 1; }
 
-ConstraintSystem pair_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions,
-                                  const Deadline* deadline) {
-  ConstraintSystem sys;
-  sys.kind = ConstraintKind::Pairs;
-  sys.num_couplings = inst.couplings().size();
-  const OpTree ot(inst, tree);
+// Each region's base cell and main node: the region stays inside its base
+// cell shifted by the displacement of its main node (the node itself; u for
+// the region an operation creates and for a contracting v, whose near face
+// follows u).
+struct RegionAnchors {
+  std::vector<Vec2> cell;
+  std::vector<NodeId> main;
+};
+
+// Fills the base cell and main node of every region.
+RegionAnchors region_anchors(const Instance& inst, const Regions& regions) {
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
-  const size_t n = inst.num_nodes(), nr = regions.size();
-
-  // Each region stays inside its base cell shifted by the displacement of
-  // its main node (the node itself; u for the region an operation creates
-  // and for a contracting v, whose near face follows u).
-  std::vector<Vec2> cell(nr);
-  std::vector<NodeId> main(nr);
+  const size_t nr = regions.size();
+  RegionAnchors an;
+  an.cell.resize(nr);
+  an.main.resize(nr);
   for (uint32_t r = 0; r < nr; ++r) {
     const RegionShape& sh = regions.shapes[r];
     if (sh.kind == RegionKind::Node) {
-      cell[r] = cells[sh.id];
+      an.cell[r] = cells[sh.id];
       OpId k = inst.op_of_node(sh.id);
-      main[r] = (k != kNone && ops[k].kind == OpKind::Contract && ops[k].v == sh.id) ? ops[k].u : sh.id;
+      an.main[r] = (k != kNone && ops[k].kind == OpKind::Contract && ops[k].v == sh.id) ? ops[k].u : sh.id;
     } else {
       const Operation& op = ops[sh.id];
-      cell[r] = cells[op.u] + unit(op.dir);
-      main[r] = op.u;
+      an.cell[r] = cells[op.u] + unit(op.dir);
+      an.main[r] = op.u;
     }
   }
-  // Operations per axis on each node's root path: bounds for the scan box.
-  std::vector<int64_t> hdepth(n, 0), vdepth(n, 0);
+  return an;
+}
+
+// Operations per axis on each node's root path, and their maxima.
+struct AxisDepths {
+  std::vector<int64_t> h, v;
   int64_t hmax = 0, vmax = 0;
+};
+
+// Counts horizontal and vertical operations on every root path of the tree
+// (bounds for the scan box).
+AxisDepths axis_depths(const Instance& inst, const SpanningTree& tree) {
+  const auto& ops = inst.ops();
+  const size_t n = inst.num_nodes();
+  AxisDepths dp;
+  dp.h.assign(n, 0);
+  dp.v.assign(n, 0);
   for (NodeId w : tree.order) {
     if (w == tree.root) continue;
     NodeId p = tree.parent[w];
-    hdepth[w] = hdepth[p], vdepth[w] = vdepth[p];
+    dp.h[w] = dp.h[p], dp.v[w] = dp.v[p];
     OpId k = tree.parent_op[w];
-    if (k != kNone) (is_horizontal(ops[k].dir) ? hdepth[w] : vdepth[w]) += 1;
-    hmax = std::max(hmax, hdepth[w]), vmax = std::max(vmax, vdepth[w]);
+    if (k != kNone) (is_horizontal(ops[k].dir) ? dp.h[w] : dp.v[w]) += 1;
+    dp.hmax = std::max(dp.hmax, dp.h[w]), dp.vmax = std::max(dp.vmax, dp.v[w]);
   }
-  std::unordered_map<uint64_t, std::vector<uint32_t>> by_cell;
-  by_cell.reserve(nr * 2);
-  for (uint32_t r = 0; r < nr; ++r) by_cell[cell_key(cell[r])].push_back(r);
+  return dp;
+}
 
-  // The face of region r as a linear form, relative to pivot node P.
-  auto face_form = [&](uint32_t r, int f, NodeId P, LinForm& out) {
+// The pairwise pass of pair_constraints: tests candidate region pairs and
+// appends their constraints to sys.
+struct PairScan {
+  const Instance& inst;
+  const Regions& regions;
+  const OpTree& ot;
+  const RegionAnchors& an;
+  const Deadline* deadline;
+  ConstraintSystem& sys;
+
+  // The face f of region r as a linear form, relative to pivot node P.
+  void face_form(uint32_t r, int f, NodeId P, LinForm& out) const {
+    const auto& ops = inst.ops();
     const RegionShape& sh = regions.shapes[r];
     out.base = sh.base[f];
     out.terms.clear();
@@ -207,40 +233,68 @@ ConstraintSystem pair_constraints(const Instance& inst, const SpanningTree& tree
     });
     if (sh.grow_op != kNone && f == sh.grow_face) out.terms.push_back({ops[sh.grow_op].coupling, sh.grow_sign});
     out.normalise();
-  };
+  }
 
-  auto consider = [&](uint32_t a, uint32_t b) {
+  // Counts the candidate pair (a, b) and adds its constraint unless the two
+  // cannot meet (too far apart for the path between their main nodes, or
+  // some overlap form never positive).
+  void consider(uint32_t a, uint32_t b) {
+    const auto& ops = inst.ops();
     if (deadline && (sys.candidate_pairs & 63) == 0) deadline->check();
     ++sys.candidate_pairs;
-    Vec2 d = cell[a] - cell[b];
+    Vec2 d = an.cell[a] - an.cell[b];
     int64_t H = 0, V = 0;
-    ot.for_each_op_on_path(main[a], main[b], [&](OpId k, int) { (is_horizontal(ops[k].dir) ? H : V) += 1; });
+    ot.for_each_op_on_path(an.main[a], an.main[b], [&](OpId k, int) { (is_horizontal(ops[k].dir) ? H : V) += 1; });
     if ((d.x < 0 ? -d.x : d.x) > H || (d.y < 0 ? -d.y : d.y) > V) return;
-    NodeId P = main[a];
+    NodeId P = an.main[a];
     LinForm fa[4], fb[4];
     for (int f = 0; f < 4; ++f) face_form(a, f, P, fa[f]), face_form(b, f, P, fb[f]);
     std::vector<LinForm> forms = {fa[1] - fb[0], fb[1] - fa[0], fa[3] - fb[2], fb[3] - fa[2],
                                   fa[1] - fa[0], fb[1] - fb[0], fa[3] - fa[2], fb[3] - fb[2]};
     CollisionConstraint c;
     if (make_constraint(std::move(forms), a, b, c)) sys.constraints.push_back(std::move(c));
-  };
+  }
 
-  for (uint32_t a = 0; a < nr; ++a) {
-    if (deadline) deadline->check();
-    int64_t hx = hdepth[main[a]] + hmax, vy = vdepth[main[a]] + vmax;
-    // Scan the box of cells around a, unless it is larger than the region list.
-    auto box = static_cast<__int128>(2 * hx + 1) * (2 * vy + 1);
-    if (box > static_cast<__int128>(4 * nr + 16)) {
+  // Considers every region b > a that region a could meet: those in the box
+  // of cells around a (half-widths hx, vy), or all of them if the box is
+  // larger than the region list.
+  void scan_from(uint32_t a, int64_t hx, int64_t vy,
+                 const std::unordered_map<uint64_t, std::vector<uint32_t>>& by_cell) {
+    const size_t nr = regions.size();
+    auto box = (2 * static_cast<__int128>(hx) + 1) * (2 * static_cast<__int128>(vy) + 1);
+    if (box > 4 * static_cast<__int128>(nr) + 16) {
       for (uint32_t b = a + 1; b < nr; ++b) consider(a, b);
-      continue;
+      return;
     }
-    for (int64_t x = cell[a].x - hx; x <= cell[a].x + hx; ++x)
-      for (int64_t y = cell[a].y - vy; y <= cell[a].y + vy; ++y) {
+    const Vec2 ca = an.cell[a];
+    for (int64_t x = ca.x - hx; x <= ca.x + hx; ++x)
+      for (int64_t y = ca.y - vy; y <= ca.y + vy; ++y) {
         auto it = by_cell.find(cell_key(Vec2{x, y}));
         if (it == by_cell.end()) continue;
         for (uint32_t b : it->second)
           if (b > a) consider(a, b);
       }
+  }
+};
+
+ConstraintSystem pair_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                  const Deadline* deadline) {
+  ConstraintSystem sys;
+  sys.kind = ConstraintKind::Pairs;
+  sys.num_couplings = inst.couplings().size();
+  const OpTree ot(inst, tree);
+  const size_t nr = regions.size();
+
+  const RegionAnchors an = region_anchors(inst, regions);
+  const AxisDepths dp = axis_depths(inst, tree);
+  std::unordered_map<uint64_t, std::vector<uint32_t>> by_cell;
+  by_cell.reserve(nr * 2);
+  for (uint32_t r = 0; r < nr; ++r) by_cell[cell_key(an.cell[r])].push_back(r);
+
+  PairScan scan{inst, regions, ot, an, deadline, sys};
+  for (uint32_t a = 0; a < nr; ++a) {
+    if (deadline) deadline->check();
+    scan.scan_from(a, dp.h[an.main[a]] + dp.hmax, dp.v[an.main[a]] + dp.vmax, by_cell);
   }
   sys.index();
   return sys;

@@ -222,34 +222,65 @@ class SatSearch {
     return true;
   }
 
+  // The orientation of the pairs in the model, as a graph in CSR form: the
+  // successors of v are adj[deg[v]] .. adj[deg[v + 1] - 1].
+  struct Orientation {
+    std::vector<uint32_t> deg;
+    std::vector<CouplingId> adj;
+  };
+
+  // Strongly connected components of an orientation.
+  struct Components {
+    std::vector<uint32_t> comp;                   // component of each coupling
+    std::vector<CouplingId> order_rev;            // couplings, sinks first
+    std::vector<std::vector<CouplingId>> cyclic;  // members of each non-trivial component
+  };
+
   // Orients every pair as the model says. Acyclic: out = a topological
   // order of all couplings, true. Cyclic: adds one clause per cycle found
   // (a shortest cycle through each uncovered vertex of each non-trivial
   // strongly connected component), false.
   bool order_of_model(std::vector<CouplingId>& out) {
-    // Adjacency (CSR) of the orientation.
-    std::vector<uint32_t> deg(k_ + 1, 0);
+    const Orientation g = model_orientation();
+    const Components cc = components(g);
+    if (cc.cyclic.empty()) {
+      out.assign(cc.order_rev.rbegin(), cc.order_rev.rend());
+      return true;
+    }
+    add_cycle_clauses(g, cc);
+    return false;
+  }
+
+  // Adjacency (CSR) of the orientation the current model gives the pairs.
+  Orientation model_orientation() const {
+    Orientation g;
+    g.deg.assign(k_ + 1, 0);
     std::vector<std::pair<CouplingId, CouplingId>> edges;
     edges.reserve(pair_vars_.size());
     for (const PairVar& p : pair_vars_) {
       const bool lo_first = sat_.value(p.var);
       edges.push_back(lo_first ? std::make_pair(p.lo, p.hi) : std::make_pair(p.hi, p.lo));
     }
-    for (auto [a, b] : edges) ++deg[a + 1];
-    for (size_t i = 0; i < k_; ++i) deg[i + 1] += deg[i];
-    std::vector<CouplingId> adj(edges.size());
-    {
-      std::vector<uint32_t> fill(deg.begin(), deg.end() - 1);
-      for (auto [a, b] : edges) adj[fill[a]++] = b;
-    }
-    // Tarjan's strongly connected components, iteratively. Components come
-    // out sinks first.
-    std::vector<uint32_t> index(k_, UINT32_MAX), low(k_, 0), comp(k_, UINT32_MAX);
-    std::vector<CouplingId> stack, order_rev;
+    for (auto [a, b] : edges) ++g.deg[a + 1];
+    for (size_t i = 0; i < k_; ++i) g.deg[i + 1] += g.deg[i];
+    g.adj.resize(edges.size());
+    std::vector<uint32_t> fill(g.deg.begin(), g.deg.end() - 1);
+    for (auto [a, b] : edges) g.adj[fill[a]++] = b;
+    return g;
+  }
+
+  // Tarjan's strongly connected components of g, iteratively. Components
+  // come out sinks first.
+  Components components(const Orientation& g) const {
+    const auto& deg = g.deg;
+    const auto& adj = g.adj;
+    Components cc;
+    cc.comp.assign(k_, UINT32_MAX);
+    std::vector<uint32_t> index(k_, UINT32_MAX), low(k_, 0);
+    std::vector<CouplingId> stack;
     std::vector<std::pair<CouplingId, uint32_t>> call;  // (vertex, next edge)
     std::vector<char> on_stack(k_, 0);
     uint32_t next_index = 0, num_comp = 0;
-    std::vector<std::vector<CouplingId>> cyclic;
     for (CouplingId s = 0; s < k_; ++s) {
       if (index[s] != UINT32_MAX) continue;
       call.push_back({s, deg[s]});
@@ -280,26 +311,29 @@ class SatSearch {
           x = stack.back();
           stack.pop_back();
           on_stack[x] = 0;
-          comp[x] = num_comp;
+          cc.comp[x] = num_comp;
           members.push_back(x);
-          order_rev.push_back(x);
+          cc.order_rev.push_back(x);
         } while (x != done);
         ++num_comp;
-        if (members.size() > 1) cyclic.push_back(std::move(members));
+        if (members.size() > 1) cc.cyclic.push_back(std::move(members));
       }
     }
-    if (cyclic.empty()) {
-      out.assign(order_rev.rbegin(), order_rev.rend());
-      return true;
-    }
-    // Shortest cycles inside each cyclic component (BFS from each vertex
-    // not yet on a cycle clause of this round).
+    return cc;
+  }
+
+  // Shortest cycles inside each cyclic component (BFS from each vertex not
+  // yet on a cycle clause of this round); adds "not all of these B's" for each.
+  void add_cycle_clauses(const Orientation& g, const Components& cc) {
+    const auto& deg = g.deg;
+    const auto& adj = g.adj;
+    const auto& comp = cc.comp;
     std::vector<char> covered(k_, 0);
     std::vector<CouplingId> parent(k_, kNone), queue;
     std::vector<uint32_t> seen(k_, UINT32_MAX);
     uint32_t stamp = 0;
     std::vector<int> clause;
-    for (const auto& members : cyclic) {
+    for (const auto& members : cc.cyclic) {
       for (CouplingId s : members) {
         if (covered[s]) continue;
         ++stamp;
@@ -334,7 +368,6 @@ class SatSearch {
       }
       if ((++stamp & 63) == 0) budget_.check(st_);
     }
-    return false;
   }
 
   struct PairVar {
