@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 # performance, ...). TIDY_FUNCTION_SIZE: its readability-function-size limit
 # (80 lines of body outside tests/) too.
 TIDY=1
-TIDY_FUNCTION_SIZE=0
+TIDY_FUNCTION_SIZE=1
 quick=0
 [ "${1:-}" = "--quick" ] && quick=1
 bash scripts/setup.sh
