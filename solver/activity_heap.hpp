@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/assert.hpp"
+
 namespace gridlock {
 
 class ActivityHeap {
@@ -33,6 +35,7 @@ class ActivityHeap {
   }
   // Requires !empty().
   uint32_t pop() {
+    GRIDLOCK_ASSERT(!heap_.empty(), "ActivityHeap::pop on an empty heap");
     const uint32_t top = heap_[0];
     heap_[0] = heap_.back();
     slot_[heap_[0]] = 0;

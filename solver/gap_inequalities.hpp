@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/assert.hpp"
 #include "solver/constraints.hpp"
 
 namespace gridlock {
@@ -28,6 +29,7 @@ struct PrecedenceTerm {
 // as f does. Requires c.num_forms == 1. O(|c.rel|^2).
 template <class F>
 bool for_each_gap_inequality(const CollisionConstraint& c, std::vector<PrecedenceTerm>& terms, F&& f) {
+  GRIDLOCK_ASSERT(c.num_forms == 1, "for_each_gap_inequality needs a gap constraint (one form)");
   int64_t narrow = 0, widen = 0;
   for (size_t j = 0; j < c.rel.size(); ++j) {
     const int64_t a = c.coef_of(j)[0];

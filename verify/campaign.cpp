@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "common/assert.hpp"
 #include "common/limits.hpp"
 
 namespace gridlock {
@@ -93,6 +94,7 @@ std::string formula_stem(const std::string& path) {
 
 VerifyTally run_verify_campaign(const std::vector<Formula>& formulas, const std::vector<std::string>& names,
                                 const VerifyCampaign& c, const VerifyEvents& events) {
+  GRIDLOCK_ASSERT(names.size() == formulas.size(), "run_verify_campaign needs one name per formula");
   VerifyTally t;
   Verifier verifier;  // one for all formulas: its simulator's arrays are kept
   for (size_t i = 0; i < formulas.size() && !stop_requested(); ++i) {
