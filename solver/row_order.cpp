@@ -1,22 +1,12 @@
 #include "solver/row_order.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdlib>
 
 #include "common/assert.hpp"
 
 namespace gridlock {
-
-namespace {
-
-// Bits needed to write v (0 for v == 0).
-int bit_width(uint64_t v) {
-  int b = 0;
-  for (; v != 0; v >>= 1) ++b;
-  return b;
-}
-
-}  // namespace
 
 std::vector<NodeId> nodes_by_row(const Instance& inst) {
   const auto& cells = inst.cells();
@@ -34,7 +24,7 @@ std::vector<NodeId> nodes_by_row(const Instance& inst) {
     if (i == 0 || cells[i].y < min_y) min_y = cells[i].y;
     if (i == 0 || cells[i].x > max_x) max_x = cells[i].x;
   }
-  const int x_bits = bit_width(static_cast<uint64_t>(max_x - min_x));
+  const auto x_bits = static_cast<int>(std::bit_width(static_cast<uint64_t>(max_x - min_x)));
   std::vector<uint64_t> key(n);
   uint64_t max_key = 0;
   for (size_t i = 0; i < n; ++i) {
@@ -47,7 +37,7 @@ std::vector<NodeId> nodes_by_row(const Instance& inst) {
   constexpr int kDigit = 11;
   constexpr uint64_t kMask = (uint64_t{1} << kDigit) - 1;
   std::vector<uint32_t> count((size_t{1} << kDigit) + 1);
-  const int key_bits = bit_width(max_key);
+  const auto key_bits = static_cast<int>(std::bit_width(max_key));
   for (int shift = 0; shift < key_bits; shift += kDigit) {
     std::fill(count.begin(), count.end(), 0);
     for (NodeId w : a) ++count[((key[w] >> shift) & kMask) + 1];

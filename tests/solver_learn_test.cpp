@@ -39,7 +39,7 @@ ConstraintSystem random_system(Rng& rng, size_t k) {
   for (size_t g = 0; g < gaps; ++g) {
     std::vector<CouplingId> ids(k);
     std::iota(ids.begin(), ids.end(), 0);
-    for (size_t i = k; i > 1; --i) std::swap(ids[i - 1], ids[rng.below(i)]);
+    rng.shuffle(ids);
     const int64_t most = rng.coin() ? 3 : static_cast<int64_t>(k);
     ids.resize(static_cast<size_t>(rng.between(2, std::min<int64_t>(most, static_cast<int64_t>(k)))));
     std::sort(ids.begin(), ids.end());
@@ -144,7 +144,7 @@ TEST(LearnEngine, RandomGapSystemsAgreeAndNogoodsAreImplied) {
 ConstraintSystem tight_system(Rng& rng, size_t k, size_t gaps) {
   std::vector<CouplingId> hidden(k);
   std::iota(hidden.begin(), hidden.end(), 0);
-  for (size_t i = k; i > 1; --i) std::swap(hidden[i - 1], hidden[rng.below(i)]);
+  rng.shuffle(hidden);
   std::vector<size_t> pos(k);
   for (size_t i = 0; i < k; ++i) pos[hidden[i]] = i;
   ConstraintSystem s = random_system(rng, k);

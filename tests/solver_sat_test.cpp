@@ -34,7 +34,7 @@ ConstraintSystem random_gap_system(Rng& rng, size_t k) {
   for (size_t g = 0; g < gaps; ++g) {
     std::vector<CouplingId> ids(k);
     std::iota(ids.begin(), ids.end(), 0);
-    for (size_t i = k; i > 1; --i) std::swap(ids[i - 1], ids[rng.below(i)]);
+    rng.shuffle(ids);
     const auto r = static_cast<size_t>(rng.between(2, static_cast<int64_t>(k)));
     ids.resize(r);
     std::sort(ids.begin(), ids.end());
