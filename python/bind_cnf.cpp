@@ -73,13 +73,17 @@ void bind_formula_class(py::module_& m) {
       .def_static("parse", &parse_text, py::arg("text"), py::arg("name") = "<string>", py::arg("strict_count") = true)
       .def("to_dimacs", [](const Formula& f) { return to_dimacs(valid(f)); })
       .def(
-          "write", [](const Formula& f, const std::string& path) { check(write_file_atomic(path, to_dimacs(valid(f)))); },
+          "write",
+          [](const Formula& f, const std::string& path) { check(write_file_atomic(path, to_dimacs(valid(f)))); },
           py::arg("path"))
-      .def("is_lsat", [](const Formula& f, const std::string& form) { return is_lsat(valid(f), form_arg(form)); },
-           py::arg("form") = "<=3")
+      .def(
+          "is_lsat", [](const Formula& f, const std::string& form) { return is_lsat(valid(f), form_arg(form)); },
+          py::arg("form") = "<=3")
       .def(
           "satisfies",
-          [](const Formula& f, const py::object& model) { return satisfies(valid(f), assignment_arg(model, f.num_vars)); },
+          [](const Formula& f, const py::object& model) {
+            return satisfies(valid(f), assignment_arg(model, f.num_vars));
+          },
           py::arg("model"), "True iff the assignment (DIMACS literals; unnamed variables false) satisfies every clause")
       .def("__eq__", [](const Formula& a, const Formula& b) { return a == b; })
       .def("__repr__", [](const Formula& f) { return "<gridlock.Formula: " + summary(f) + ">"; });
@@ -87,7 +91,10 @@ void bind_formula_class(py::module_& m) {
 
 void bind_generators(py::module_& m) {
   m.def(
-      "random_ksat", [](int n, int m_, int k, uint64_t seed) { return random_ksat(KSatParams{n, m_, k, seed}); },
+      "random_ksat",
+      [](int n, int m_, int k, uint64_t seed) {
+        return random_ksat(KSatParams{n, m_, k, seed});
+      },
       py::arg("n"), py::arg("m"), py::arg("k") = 3, py::arg("seed") = 1);
   m.def(
       "random_lsat",
@@ -96,7 +103,10 @@ void bind_generators(py::module_& m) {
       },
       py::arg("n"), py::arg("m"), py::arg("min_len") = 3, py::arg("max_len") = 3, py::arg("seed") = 1);
   m.def(
-      "planted_ksat", [](int n, int m_, int k, uint64_t seed) { return planted_ksat(PlantedParams{n, m_, k, seed}); },
+      "planted_ksat",
+      [](int n, int m_, int k, uint64_t seed) {
+        return planted_ksat(PlantedParams{n, m_, k, seed});
+      },
       py::arg("n"), py::arg("m"), py::arg("k") = 3, py::arg("seed") = 1);
   m.def("sat_solve", &sat_solve, py::arg("formula"), py::arg("timeout") = py::none(), py::arg("conflicts") = -1);
 }
@@ -173,8 +183,9 @@ py::object lift(const CompiledFormula& c, const py::object& assignment, const py
 
 void bind_compile(py::module_& m) {
   py::class_<CompiledFormula>(m, "Compiled", "A formula compiled to a lattice instance, with its certificate maps")
-      .def_property_readonly("instance", [](const CompiledFormula& c) -> const Instance& { return c.instance; },
-                             py::return_value_policy::reference_internal)
+      .def_property_readonly(
+          "instance", [](const CompiledFormula& c) -> const Instance& { return c.instance; },
+          py::return_value_policy::reference_internal)
       .def_property_readonly("model", [](const CompiledFormula& c) { return reduction_model_name(c.model); })
       .def_readonly("num_vars", &CompiledFormula::num_vars)
       .def_readonly("num_clauses", &CompiledFormula::num_clauses)

@@ -77,7 +77,8 @@ void bind_instance_class(py::module_& m) {
                   "Reads .grid text; errors name `name` and the line")
       .def("to_grid", &grid_text, "The .grid text (Instance.parse gives the instance back exactly)")
       .def(
-          "write", [](const Instance& inst, const std::string& path) { check(write_file_atomic(path, grid_text(inst))); },
+          "write",
+          [](const Instance& inst, const std::string& path) { check(write_file_atomic(path, grid_text(inst))); },
           py::arg("path"), "Writes the .grid file (atomically, checked)")
       .def("to_svg", &svg, py::arg("title") = "", "An SVG picture")
       .def("_repr_svg_", [](const Instance& inst) { return svg(inst, ""); })
@@ -110,7 +111,7 @@ Instance random(uint32_t nodes, uint32_t ops, uint32_t max_coupling, uint32_t ex
   if (nodes < 1 || nodes > kMaxNodes) raise("random_instance: nodes must be 1.." + std::to_string(kMaxNodes));
   if (max_coupling < 1) raise("random_instance: max_coupling must be at least 1");
   if (extra_edge_percent > 100) raise("random_instance: extra_edge_percent must be 0..100");
-  RandomInstanceParams p{nodes, ops, max_coupling, extra_edge_percent, allow_grow, allow_contract,
+  RandomInstanceParams p{nodes,           ops,        max_coupling, extra_edge_percent, allow_grow, allow_contract,
                          horizontal_only, path_shape, spread};
   return random_instance(p, seed);
 }
@@ -134,8 +135,7 @@ void bind_lattice(py::module_& m) {
   bind_instance_class(m);
   m.def("random_instance", &random, py::arg("nodes") = 8, py::arg("ops") = 3, py::arg("max_coupling") = 1,
         py::arg("extra_edge_percent") = 0, py::arg("allow_grow") = true, py::arg("allow_contract") = true,
-        py::arg("horizontal_only") = false, py::arg("path_shape") = false, py::arg("spread") = 0,
-        py::arg("seed") = 1);
+        py::arg("horizontal_only") = false, py::arg("path_shape") = false, py::arg("spread") = 0, py::arg("seed") = 1);
   m.def("simulate", &simulate, py::arg("instance"), py::arg("order") = py::none(), py::arg("times") = py::none());
   m.def("animate", &animate, py::arg("instance"), py::arg("order") = py::none(), py::arg("times") = py::none(),
         py::arg("title") = "");

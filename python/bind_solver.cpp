@@ -33,8 +33,7 @@ SolveOptions::Engine engine_arg(const std::string& engine) {
 
 SolveOptions solve_options(const std::string& model, const std::string& engine, const py::object& timeout,
                            uint64_t max_states, const Instance& inst) {
-  if (model != "discrete" && model != "continuous")
-    raise("model must be discrete or continuous, not '" + model + "'");
+  if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
   SolveOptions opt;
   opt.engine = engine_arg(engine);
   if (model == "continuous" && opt.engine != SolveOptions::Engine::Auto)
@@ -68,8 +67,8 @@ py::dict solve(const Instance& inst, const std::string& model, const std::string
   d["engine"] = r.stats.engine;
   d["order"] = r.status == Verdict::Yes ? py::object(order_names(inst, r.order)) : py::object(py::none());
   d["stats"] = stats_dict(r.stats);
-  d["cycle_breaker"] =
-      r.cycle_breaker != kNone ? py::object(py::str(inst.couplings()[r.cycle_breaker].name)) : py::object(py::none());
+  d["cycle_breaker"] = r.cycle_breaker != kNone ? py::object(py::str(inst.couplings()[r.cycle_breaker].name))
+                                                : py::object(py::none());
   return d;
 }
 
@@ -82,8 +81,7 @@ CollideMethod method_arg(const std::string& method) {
 }
 
 py::dict collide(const Instance& inst, const std::string& model, const std::string& method) {
-  if (model != "discrete" && model != "continuous")
-    raise("model must be discrete or continuous, not '" + model + "'");
+  if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
   const TimeModel tm = model == "discrete" ? TimeModel::Discrete : TimeModel::Continuous;
   const CollideMethod cm = method_arg(method);
   const CollideResult r = run_interruptible([&] { return find_collision(inst, tm, cm); });
@@ -97,10 +95,8 @@ py::dict collide(const Instance& inst, const std::string& model, const std::stri
   d["collision"] = py::none();
   if (!r.collides) return d;
   d["collision"] = collision_dict(inst, Regions::build(inst), *r.simulated);
-  if (tm == TimeModel::Discrete)
-    d["order"] = order_names(inst, r.witness.order);
-  else
-    d["times"] = times_dict(inst, r.witness);
+  if (tm == TimeModel::Discrete) d["order"] = order_names(inst, r.witness.order);
+  else d["times"] = times_dict(inst, r.witness);
   return d;
 }
 
@@ -125,7 +121,8 @@ py::dict gaps(const Instance& inst) {
     g["final_size"] = v.final_size;
     py::list widened, narrowed;
     for (const GapChange& c : v.changes)
-      (c.delta > 0 ? widened : narrowed).append(py::dict(py::arg("op") = inst.ops()[c.op].name, py::arg("delta") = c.delta));
+      (c.delta > 0 ? widened : narrowed)
+          .append(py::dict(py::arg("op") = inst.ops()[c.op].name, py::arg("delta") = c.delta));
     g["widened_by"] = widened;
     g["narrowed_by"] = narrowed;
     d["gap"] = g;

@@ -110,6 +110,7 @@ py::dict verify(const py::list& inputs, const py::object& names, const std::stri
     cb([&] { return rows[rows.size() - 1]; });
   };
   std::vector<std::string> stems;
+  stems.reserve(labels.size());
   for (const std::string& l : labels) stems.push_back(formula_stem(l));
   const VerifyTally t = run_interruptible([&] { return run_verify_campaign(formulas, stems, c, ev); });
   cb.rethrow();
@@ -118,8 +119,8 @@ py::dict verify(const py::list& inputs, const py::object& names, const std::stri
   d["model"] = verify_model_name(c.verify.model);
   d["formulas"] = rows;
   d["summary"] = py::dict(py::arg("formulas") = t.formulas, py::arg("sat") = t.sat, py::arg("unsat") = t.unsat,
-                          py::arg("agree") = t.agree, py::arg("unknown") = t.unknown,
-                          py::arg("disagree") = t.disagree, py::arg("certificates_checked") = t.certificates);
+                          py::arg("agree") = t.agree, py::arg("unknown") = t.unknown, py::arg("disagree") = t.disagree,
+                          py::arg("certificates_checked") = t.certificates);
   return d;
 }
 
@@ -149,8 +150,8 @@ py::dict tally_dict(const FuzzTally& t) {
 }
 
 py::dict fuzz(uint64_t count, uint64_t seed, int min_vars, int max_vars, const std::vector<std::string>& kinds,
-              const std::string& model, double timeout, uint64_t max_states, bool direct, bool keep_going,
-              double time, const py::object& progress) {
+              const std::string& model, double timeout, uint64_t max_states, bool direct, bool keep_going, double time,
+              const py::object& progress) {
   if (min_vars < 1 || max_vars > 64 || min_vars > max_vars) raise("fuzz: need 1 <= min_vars <= max_vars <= 64");
   if (count < 1) raise("fuzz: count must be at least 1");
   FuzzCampaign c;

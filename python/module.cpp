@@ -18,7 +18,8 @@ void register_errors(py::module_& m) {
       "attributes file, line (0: not tied to a line) and message.",
       PyExc_Exception, nullptr);
   m.attr("Error") = py::handle(error_type);
-  py::register_exception_translator([](std::exception_ptr p) {
+  // By value: pybind11 stores translators as void (*)(std::exception_ptr).
+  py::register_exception_translator([](std::exception_ptr p) {  // NOLINT(performance-unnecessary-value-param)
     auto set = [](const Diagnostic& d) {
       py::object err = py::reinterpret_borrow<py::object>(error_type)(d.str());
       err.attr("file") = d.file;
@@ -91,7 +92,8 @@ Schedule times_arg(const Instance& inst, const py::dict& times) {
 }  // namespace
 
 Schedule schedule_arg(const Instance& inst, const py::object& order, const py::object& times) {
-  if (order.is_none() == times.is_none()) raise("give exactly one of order= (coupling names) and times= ({name: time})");
+  if (order.is_none() == times.is_none())
+    raise("give exactly one of order= (coupling names) and times= ({name: time})");
   if (!times.is_none()) return times_arg(inst, times.cast<py::dict>());
   if (py::isinstance<py::str>(order)) raise("order: give a list of coupling names, not one string");
   std::vector<CouplingId> ids;

@@ -10,7 +10,9 @@ CaDiCaL's answer on the formula labels it SAT or UNSAT and the solvers'
 answers must agree with it. Plots every solve time and the median per size,
 SAT and UNSAT apart, into a PNG.
 
-    PYTHONPATH=build/python /usr/bin/python3 examples/python/solve_time_growth.py [OUT.png]
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/solve_time_growth.py [--quick] [OUT.png]
+
+--quick: two sizes per solver and two seeds (a few seconds; the tests run it).
 
 About a minute on one core (the continuous solver stays at 3-5 variables:
 beyond that Z3 needs much longer today; docs/python.md). Seeded: the same
@@ -88,4 +90,9 @@ def main(out):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "solve-time-growth.png")
+    args = sys.argv[1:]
+    if "--quick" in args:
+        args.remove("--quick")
+        SEEDS = {"discrete": range(1, 3), "continuous": range(1, 3)}
+        SIZES = {"discrete": [5, 10], "continuous": [3]}
+    main(args[0] if args else "solve-time-growth.png")
