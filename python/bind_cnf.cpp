@@ -93,19 +93,19 @@ void bind_generators(py::module_& m) {
   m.def(
       "random_ksat",
       [](int n, int m_, int k, uint64_t seed) {
-        return random_ksat(KSatParams{n, m_, k, seed});
+        return random_ksat(KSatParams{.n = n, .m = m_, .k = k, .seed = seed});
       },
       py::arg("n"), py::arg("m"), py::arg("k") = 3, py::arg("seed") = 1);
   m.def(
       "random_lsat",
       [](int n, int m_, int min_len, int max_len, uint64_t seed) {
-        return random_lsat(LsatParams{n, m_, min_len, max_len, seed});
+        return random_lsat(LsatParams{.n = n, .m = m_, .min_len = min_len, .max_len = max_len, .seed = seed});
       },
       py::arg("n"), py::arg("m"), py::arg("min_len") = 3, py::arg("max_len") = 3, py::arg("seed") = 1);
   m.def(
       "planted_ksat",
       [](int n, int m_, int k, uint64_t seed) {
-        return planted_ksat(PlantedParams{n, m_, k, seed});
+        return planted_ksat(PlantedParams{.n = n, .m = m_, .k = k, .seed = seed});
       },
       py::arg("n"), py::arg("m"), py::arg("k") = 3, py::arg("seed") = 1);
   m.def("sat_solve", &sat_solve, py::arg("formula"), py::arg("timeout") = py::none(), py::arg("conflicts") = -1);
@@ -146,7 +146,7 @@ void bind_to_lsat(py::module_& m) {
   m.def(
       "to_lsat",
       [](const Formula& f, bool passthrough, bool keep_duplicates) {
-        return reduce_to_lsat(valid(f), ToLsatOptions{passthrough, keep_duplicates});
+        return reduce_to_lsat(valid(f), ToLsatOptions{.passthrough = passthrough, .keep_duplicates = keep_duplicates});
       },
       py::arg("formula"), py::arg("passthrough") = true, py::arg("keep_duplicates") = false);
 }

@@ -111,8 +111,17 @@ Instance random(uint32_t nodes, uint32_t ops, uint32_t max_coupling, uint32_t ex
   if (nodes < 1 || nodes > kMaxNodes) raise("random_instance: nodes must be 1.." + std::to_string(kMaxNodes));
   if (max_coupling < 1) raise("random_instance: max_coupling must be at least 1");
   if (extra_edge_percent > 100) raise("random_instance: extra_edge_percent must be 0..100");
-  RandomInstanceParams p{nodes,           ops,        max_coupling, extra_edge_percent, allow_grow, allow_contract,
-                         horizontal_only, path_shape, spread};
+  // Named fields: the parameters may grow (other work adds instance families).
+  RandomInstanceParams p;
+  p.nodes = nodes;
+  p.ops = ops;
+  p.max_coupling = max_coupling;
+  p.extra_edge_percent = extra_edge_percent;
+  p.allow_grow = allow_grow;
+  p.allow_contract = allow_contract;
+  p.horizontal_only = horizontal_only;
+  p.path_shape = path_shape;
+  p.spread = spread;
   return random_instance(p, seed);
 }
 

@@ -155,7 +155,7 @@ py::dict fuzz(uint64_t count, uint64_t seed, int min_vars, int max_vars, const s
   if (min_vars < 1 || max_vars > 64 || min_vars > max_vars) raise("fuzz: need 1 <= min_vars <= max_vars <= 64");
   if (count < 1) raise("fuzz: count must be at least 1");
   FuzzCampaign c;
-  c.formulas = FuzzParams{seed, min_vars, max_vars, kinds_arg(kinds)};
+  c.formulas = FuzzParams{.seed = seed, .min_vars = min_vars, .max_vars = max_vars, .kinds = kinds_arg(kinds)};
   c.verify = verify_options(model, timeout, max_states, direct);
   c.last = count;
   c.seconds = time;
@@ -194,7 +194,8 @@ void bind_verify(py::module_& m) {
       [](uint64_t seed, uint64_t index, int min_vars, int max_vars, const std::vector<std::string>& kinds) {
         if (min_vars < 1 || max_vars > 64 || min_vars > max_vars)
           raise("fuzz_formula: need 1 <= min_vars <= max_vars <= 64");
-        return fuzz_formula(FuzzParams{seed, min_vars, max_vars, kinds_arg(kinds)}, index);
+        return fuzz_formula(
+            FuzzParams{.seed = seed, .min_vars = min_vars, .max_vars = max_vars, .kinds = kinds_arg(kinds)}, index);
       },
       py::arg("seed"), py::arg("index"), py::arg("min_vars") = 3, py::arg("max_vars") = 6,
       py::arg("kinds") = std::vector<std::string>{"mix"});

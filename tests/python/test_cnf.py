@@ -111,3 +111,30 @@ def test_bad_formulas_are_errors(tmp_path):
         f.satisfies([1, -1])
     with pytest.raises(gridlock.Error, match="form"):
         f.is_lsat("exact4")
+
+
+def pigeonhole(holes):
+    """holes + 1 pigeons in `holes` holes: unsatisfiable, and hard for resolution (CaDiCaL)."""
+    var = lambda p, h: p * holes + h + 1  # noqa: E731
+    clauses = [[var(p, h) for h in range(holes)] for p in range(holes + 1)]
+    clauses += [[-var(p, h), -var(q, h)] for h in range(holes) for p in range(holes + 1) for q in range(p)]
+    return gridlock.Formula((holes + 1) * holes, clauses)
+
+
+def test_sat_solve_limits_and_ctrl_c():
+    import os
+    import signal
+    import threading
+    import time
+
+    assert not gridlock.sat_solve(pigeonhole(4))
+    hard = pigeonhole(12)
+    assert gridlock.sat_solve(hard, timeout=0.3).status == "UNKNOWN"
+    assert gridlock.sat_solve(hard, conflicts=100).status == "UNKNOWN"
+    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        gridlock.sat_solve(hard)
+    timer.join()
+    assert time.monotonic() - start < 10
