@@ -17,6 +17,8 @@ PACKAGES=(
   chromium                                  # headless browser for the viewer's page tests
   clang-format clang-tidy                   # scripts/lint.sh
   parallel                                  # GNU parallel: the sharded-campaign recipe test
+  pybind11-dev python3-pybind11 python3-dev # the Python module (python/, docs/python.md)
+  python3-pytest python3-matplotlib         # its tests (tests/python) and example (examples/python)
 )
 
 missing=()

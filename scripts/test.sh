@@ -71,6 +71,13 @@ for case in "tiny-sat.cnf 10" "tiny-unsat.cnf 20" "uf20-01.cnf 10"; do
   fi
   echo "examples/api $1: exit $status, $(tail -n 1 "$work/api.out" | cut -c1-60)"
 done
+# The Python module (when built) imports from the prefix, with the interpreter it was built for.
+python=$(sed -n 's/^Python_EXECUTABLE:[A-Z]*=//p' "$copy/build/CMakeCache.txt")
+if [ -n "$python" ] && [ -d "$copy/build/python/gridlock" ]; then
+  (cd "$work" && PYTHONPATH=$(echo "$work"/prefix/lib/python3*/*-packages) "$python" -c \
+    "import gridlock; assert gridlock.__file__.startswith('$work/prefix/'), gridlock.__file__; \
+print('python module from the prefix:', gridlock.solve(gridlock.Instance.read('$copy/examples/instances/tiny-sat.grid')).status)")
+fi
 unset CCACHE_BASEDIR CCACHE_NOHASHDIR
 
 if [ $quick -eq 0 ]; then

@@ -1,0 +1,146 @@
+// solve (discrete and continuous), collide and gaps (solver/, collide/).
+// Results are dicts with the fields of the command line's --json (exact
+// times as Fractions); python/gridlock/__init__.py wraps them in dataclasses.
+#include "collide/collide.hpp"
+#include "python/bindings.hpp"
+#include "solver/continuous.hpp"
+#include "solver/gaps.hpp"
+#include "solver/solve.hpp"
+
+namespace gridlock::python {
+namespace {
+
+py::dict stats_dict(const SolveStats& st) {
+  py::dict d;
+  d["states"] = st.states;
+  d["refuted"] = st.refuted;
+  d["propagations"] = st.propagations;
+  d["decisions"] = st.decisions;
+  d["safe_moves"] = st.safe_moves;
+  d["memo_hits"] = st.memo_hits;
+  d["constraints"] = st.constraints;
+  d["seconds"] = st.seconds;
+  return d;
+}
+
+SolveOptions::Engine engine_arg(const std::string& engine) {
+  if (engine == "auto") return SolveOptions::Engine::Auto;
+  if (engine == "states") return SolveOptions::Engine::States;
+  if (engine == "precedence") return SolveOptions::Engine::Precedence;
+  if (engine == "sat") return SolveOptions::Engine::Sat;
+  raise("engine must be auto, states, precedence or sat, not '" + engine + "'");
+}
+
+SolveOptions solve_options(const std::string& model, const std::string& engine, const py::object& timeout,
+                           uint64_t max_states, const Instance& inst) {
+  if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
+  SolveOptions opt;
+  opt.engine = engine_arg(engine);
+  if (model == "continuous" && opt.engine != SolveOptions::Engine::Auto)
+    raise("engine applies to model='discrete' only");
+  if ((opt.engine == SolveOptions::Engine::Precedence || opt.engine == SolveOptions::Engine::Sat) &&
+      !inst.horizontal_only())
+    raise("engine " + engine + " needs a horizontal-only instance");
+  if (!timeout.is_none()) {
+    opt.seconds = timeout.cast<double>();
+    if (!(opt.seconds > 0)) raise("timeout must be a positive number of seconds");
+  }
+  opt.max_states = max_states;
+  return opt;
+}
+
+py::dict solve(const Instance& inst, const std::string& model, const std::string& engine, const py::object& timeout,
+               uint64_t max_states) {
+  const SolveOptions opt = solve_options(model, engine, timeout, max_states, inst);
+  py::dict d;
+  d["model"] = model;
+  if (model == "continuous") {
+    const ContinuousResult r = run_interruptible([&] { return solve_continuous(inst, opt); });
+    d["status"] = verdict_name(r.status);
+    d["engine"] = r.stats.engine;
+    d["times"] = r.status == Verdict::Yes ? py::object(times_dict(inst, r.schedule)) : py::object(py::none());
+    d["stats"] = stats_dict(r.stats);
+    return d;
+  }
+  const SolveResult r = run_interruptible([&] { return solve_discrete(inst, opt); });
+  d["status"] = verdict_name(r.status);
+  d["engine"] = r.stats.engine;
+  d["order"] = r.status == Verdict::Yes ? py::object(order_names(inst, r.order)) : py::object(py::none());
+  d["stats"] = stats_dict(r.stats);
+  d["cycle_breaker"] = r.cycle_breaker != kNone ? py::object(py::str(inst.couplings()[r.cycle_breaker].name))
+                                                : py::object(py::none());
+  return d;
+}
+
+CollideMethod method_arg(const std::string& method) {
+  if (method == "auto") return CollideMethod::Auto;
+  if (method == "tree") return CollideMethod::Tree;
+  if (method == "tree-pairwise") return CollideMethod::TreePairwise;
+  if (method == "pairwise") return CollideMethod::Pairwise;
+  raise("method must be auto, tree, tree-pairwise or pairwise, not '" + method + "'");
+}
+
+py::dict collide(const Instance& inst, const std::string& model, const std::string& method) {
+  if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
+  const TimeModel tm = model == "discrete" ? TimeModel::Discrete : TimeModel::Continuous;
+  const CollideMethod cm = method_arg(method);
+  const CollideResult r = run_interruptible([&] { return find_collision(inst, tm, cm); });
+  py::dict d;
+  d["status"] = r.collides ? "YES" : "NO";
+  d["model"] = model;
+  d["algorithm"] = r.algorithm;
+  d["complexity"] = r.complexity;
+  d["order"] = py::none();
+  d["times"] = py::none();
+  d["collision"] = py::none();
+  if (!r.collides) return d;
+  d["collision"] = collision_dict(inst, Regions::build(inst), *r.simulated);
+  if (tm == TimeModel::Discrete) d["order"] = order_names(inst, r.witness.order);
+  else d["times"] = times_dict(inst, r.witness);
+  return d;
+}
+
+py::dict gaps(const Instance& inst) {
+  if (!inst.horizontal_only()) raise("gaps decides horizontal-only instances; this one has a vertical operation");
+  const GapVerdict v = check_gaps(inst);
+  py::dict d;
+  d["status"] = v.collision_free ? "YES" : "NO";
+  d["gaps_checked"] = v.gaps_checked;
+  d["negative_gaps"] = v.negative_gaps;
+  d["cycles_checked"] = v.cycles_checked;
+  d["open_cycles"] = v.open_cycles;
+  d["explanation"] = describe_gap_verdict(inst, v);
+  d["gap"] = py::none();
+  d["cycle"] = py::none();
+  if (v.reason == GapVerdict::Reason::Gap) {
+    py::dict g;
+    g["row"] = v.row;
+    g["left"] = inst.node_label(v.left);
+    g["right"] = inst.node_label(v.right);
+    g["initial_size"] = v.initial_size;
+    g["final_size"] = v.final_size;
+    py::list widened, narrowed;
+    for (const GapChange& c : v.changes)
+      (c.delta > 0 ? widened : narrowed)
+          .append(py::dict(py::arg("op") = inst.ops()[c.op].name, py::arg("delta") = c.delta));
+    g["widened_by"] = widened;
+    g["narrowed_by"] = narrowed;
+    d["gap"] = g;
+  } else if (v.reason == GapVerdict::Reason::Cycle) {
+    py::list nodes;
+    for (NodeId w : v.cycle) nodes.append(inst.node_label(w));
+    d["cycle"] = py::dict(py::arg("nodes") = nodes, py::arg("mismatch") = v.mismatch);
+  }
+  return d;
+}
+
+}  // namespace
+
+void bind_solver(py::module_& m) {
+  m.def("solve", &solve, py::arg("instance"), py::arg("model") = "discrete", py::arg("engine") = "auto",
+        py::arg("timeout") = py::none(), py::arg("max_states") = 0);
+  m.def("collide", &collide, py::arg("instance"), py::arg("model") = "discrete", py::arg("method") = "auto");
+  m.def("gaps", &gaps, py::arg("instance"));
+}
+
+}  // namespace gridlock::python

@@ -1,0 +1,170 @@
+"""solve, collide and gaps: every bundled instance and seeded random
+instances against the command line's --json, witnesses replayed by the
+simulator, engines against each other, errors and Ctrl-C."""
+import os
+import signal
+import threading
+import time
+from fractions import Fraction
+
+import pytest
+
+import gridlock
+from conftest import INSTANCES, SEED, cli_json, scaled
+
+
+def cli_times(witness):
+    """{name: Fraction} from the CLI's witness lines 'NAME TIME'."""
+    return {w.split()[0]: Fraction(w.split()[1]) for w in witness}
+
+
+def check_solve(inst, path, model="discrete", engine="auto"):
+    args = ["solve", path, "--model", model, "--timeout", "60"]
+    if engine != "auto":
+        args += ["--engine", engine]
+    want = cli_json(*args)
+    got = gridlock.solve(inst, model=model, engine=engine, timeout=60)
+    assert got.status == want["status"] and got.engine == want["engine"] and got.model == want["model"]
+    for key in ("states", "refuted", "decisions", "constraints"):
+        assert got.stats[key] == want["stats"][key], key
+    if got.status != "YES":
+        assert got.order is None and got.times is None
+        return got
+    if model == "discrete":
+        assert got.order == want["witness"]
+        assert gridlock.simulate(inst, order=got.order) is None
+    else:
+        assert got.times == cli_times(want["witness"])
+        assert all(isinstance(t, Fraction) for t in got.times.values())
+        assert gridlock.simulate(inst, times=got.times) is None
+    return got
+
+
+@pytest.mark.parametrize("model", ["discrete", "continuous"])
+def test_solve_examples_equal_cli(instance_path, model):
+    check_solve(gridlock.Instance.read(str(instance_path)), instance_path, model)
+
+
+def check_collide(inst, path, model):
+    want = cli_json("collide", path, "--model", model)
+    got = gridlock.collide(inst, model=model)
+    assert got.status == want["status"] and got.algorithm == want["algorithm"]
+    if got.status == "YES":
+        c = got.collision
+        assert c.kind == want["collision"]["kind"] and c.time == Fraction(want["collision"]["time"])
+        if model == "discrete":
+            assert got.order == want["witness"]
+            assert gridlock.simulate(inst, order=got.order) == c
+        else:
+            assert got.times == cli_times(want["witness"])
+            assert gridlock.simulate(inst, times=got.times) == c
+    return got
+
+
+@pytest.mark.parametrize("model", ["discrete", "continuous"])
+def test_collide_examples_equal_cli(instance_path, model):
+    check_collide(gridlock.Instance.read(str(instance_path)), instance_path, model)
+
+
+def test_gaps_examples_equal_cli(instance_path):
+    inst = gridlock.Instance.read(str(instance_path))
+    if not inst.horizontal_only:
+        with pytest.raises(gridlock.Error, match="horizontal-only"):
+            gridlock.gaps(inst)
+        return
+    want = cli_json("gaps", instance_path)
+    got = gridlock.gaps(inst)
+    assert got.status == want["status"]
+    assert (got.gaps_checked, got.cycles_checked) == (want["gaps_checked"], want["cycles_checked"])
+    if want.get("gap"):
+        assert got.gap["final_size"] == want["gap"]["final_size"] and got.gap["left"] == want["gap"]["left"]
+    # the continuous solver decides the same question
+    assert gridlock.solve(inst, model="continuous").status == got.status
+
+
+def test_random_instances_equal_cli(tmp_path):
+    """Seeded random instances (cycles, couplings, growths, contractions)."""
+    path = tmp_path / "r.grid"
+    for i in range(scaled(25)):
+        seed = SEED * 1000 + i
+        inst = gridlock.random_instance(nodes=10, ops=4, max_coupling=2, extra_edge_percent=15, seed=seed)
+        inst.write(str(path))
+        try:
+            check_solve(inst, path, "discrete")
+            check_collide(inst, path, "discrete")
+            check_collide(inst, path, "continuous")
+        except AssertionError as e:
+            raise AssertionError(f"random instance seed {seed}: {e}") from e
+
+
+def test_engines_agree_on_horizontal_instances(tmp_path):
+    path = tmp_path / "h.grid"
+    for i in range(scaled(25)):
+        seed = SEED * 2000 + i
+        inst = gridlock.random_instance(nodes=14, ops=7, max_coupling=3, horizontal_only=True,
+                                        allow_grow=True, seed=seed)
+        inst.write(str(path))
+        answers = {e: check_solve(inst, path, "discrete", e).status for e in ("states", "precedence", "sat")}
+        assert len(set(answers.values())) == 1, f"seed {seed}: {answers}"
+        assert gridlock.gaps(inst).status == check_solve(inst, path, "continuous").status, f"seed {seed}"
+
+
+def test_limits_give_unknown():
+    f = gridlock.random_ksat(n=60, m=256, seed=3)
+    inst = gridlock.compile(f).instance
+    r = gridlock.solve(inst, engine="states", max_states=50)
+    assert r.status == "UNKNOWN" and r.order is None
+
+
+def test_bad_arguments_are_errors():
+    inst = gridlock.Instance.read(str(INSTANCES[0]))
+    with pytest.raises(gridlock.Error, match="model"):
+        gridlock.solve(inst, model="quantum")
+    with pytest.raises(gridlock.Error, match="engine"):
+        gridlock.solve(inst, engine="magic")
+    with pytest.raises(gridlock.Error, match="timeout"):
+        gridlock.solve(inst, timeout=-1)
+    with pytest.raises(gridlock.Error, match="method"):
+        gridlock.collide(inst, method="guess")
+
+
+def interrupt_after(seconds):
+    """Sends this process SIGINT (Ctrl-C) after `seconds`, from a timer thread."""
+    t = threading.Timer(seconds, os.kill, (os.getpid(), signal.SIGINT))
+    t.start()
+    return t
+
+
+def test_ctrl_c_interrupts_a_long_solve():
+    # The chronological state search on a compiled 60-variable formula runs
+    # for minutes; Ctrl-C must end it within a second or two.
+    f = gridlock.random_ksat(n=60, m=256, seed=3)
+    inst = gridlock.compile(f).instance
+    timer = interrupt_after(0.5)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        gridlock.solve(inst, engine="states", timeout=120)
+    timer.join()
+    assert time.monotonic() - start < 10
+    # the stop request is cleared: the next call runs normally
+    small = gridlock.Instance.read(str(INSTANCES[0]))
+    assert gridlock.solve(small).status in ("YES", "NO")
+
+
+def test_solve_releases_the_gil():
+    f = gridlock.random_ksat(n=60, m=256, seed=3)
+    inst = gridlock.compile(f).instance
+    ticks = []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.01)
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    gridlock.solve(inst, engine="states", timeout=1)
+    stop.set()
+    t.join()
+    assert len(ticks) > 20  # the other thread ran while the solver did
