@@ -777,6 +777,13 @@ TEST(HardeningCli, PicturesEscapeNamesAndRefuseWhatTheyCannotDraw) {
   auto k = run_gridlock({"gadget", "order", "-k", "5"});
   EXPECT_EQ(k.exit_code, 1);
   EXPECT_EQ(k.err, "gridlock: error: --literals applies to the clause gadget only\n");
+  auto at = run_gridlock({"animate", g, "--order", "q_1_2 a~b", "--timeout", "5", "-o", dir + "/v.html"});
+  EXPECT_EQ(at.exit_code, 1);
+  EXPECT_EQ(at.err, "gridlock: error: --timeout applies to --solve only\n");
+  EXPECT_FALSE(fs::exists(dir + "/v.html"));
+  auto pn = run_gridlock({"verify", kExamples + "tiny-sat.cnf", "--picture-nodes", "10"});
+  EXPECT_EQ(pn.exit_code, 1);
+  EXPECT_EQ(pn.err, "gridlock: error: --picture-nodes applies with --pictures only\n");
 }
 
 // 21. --break-gadget draws a broken gadget or is refused: every kind, every
@@ -801,7 +808,7 @@ TEST(HardeningCli, BreakGadgetNeverLabelsTheSoundGadgetBroken) {
       ASSERT_FALSE(sound.empty());
       for (const std::string m : {"variable-loose-y", "clause-loose", "clause-tight", "order-loose",
                                   "order-drop-release", "separation-loose"}) {
-        SCOPED_TRACE(kind + " -k " + k + " " + m);
+        SCOPED_TRACE(std::string(kind).append(" -k ").append(k).append(" ").append(m));
         auto args = base;
         args.insert(args.end(), {"--break-gadget", m});
         auto r = run_gridlock(args);

@@ -52,9 +52,11 @@ void refuse_name_clashes(const std::vector<std::string>& paths, const std::strin
   for (const auto& p : paths) {
     const std::string stem = p == "-" ? "stdin" : std::filesystem::path(p).stem().string();
     auto [it, fresh] = seen.emplace(stem, p);
-    if (!fresh)
-      throw UserError(p + ": two inputs named '" + stem + "' (" + it->second + " and " + p + ") would share " + what +
-                      ": rename one");
+    if (fresh) continue;
+    std::string msg = p;
+    msg.append(": two inputs named '").append(stem).append("' (").append(it->second).append(" and ").append(p);
+    msg.append(") would share ").append(what).append(": rename one");
+    throw UserError(msg);
   }
 }
 

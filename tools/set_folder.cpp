@@ -85,7 +85,7 @@ std::set<std::string> own_files(const fs::path& dir, int64_t k) {
 
 // Removes names from dir: manifests first (a folder is never described by a
 // stale manifest), after checking that none is an input.
-void remove_own(const fs::path& dir, std::set<std::string> names) {
+void remove_own(const fs::path& dir, const std::set<std::string>& names) {
   std::vector<std::string> order(names.begin(), names.end());
   std::stable_partition(order.begin(), order.end(), [](const std::string& n) { return manifest_shard(n) >= 0; });
   for (const auto& n : order)

@@ -301,6 +301,7 @@ int run_verify(const std::vector<std::string>& args) {
   v.json = vm.count("json") > 0;
   v.rows = v.json || vm.count("json-out");
   if (vm.count("pictures")) v.pictures = vm["pictures"].as<std::string>();
+  if (!v.pictures && !vm["picture-nodes"].defaulted()) throw UserError("--picture-nodes applies with --pictures only");
   c.reproducers = vm["reproducers"].as<std::string>();
   // Findings survive: the folders are checked before any work.
   cli::check_folder_can_be_made(c.reproducers);
