@@ -737,6 +737,13 @@ TEST(HardeningCli, ReadersAgreeOnCommentsSignsAndControlBytes) {
   auto pc = run_gridlock({"cnf", "solve", plus_cnf});
   EXPECT_EQ(pc.exit_code, 1);
   EXPECT_EQ(pc.err.rfind("gridlock: error: " + plus_cnf + ":2: ", 0), 0u) << pc.err;
+  // Unknown names are errors in every reader (times, order files), never skipped.
+  const std::string unknown_times = test::write_file(dir + "/x.times", "s YES\nv a 0\nv zz 1\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--times", unknown_times}).err,
+            "gridlock: error: " + unknown_times + ":3: unknown coupling 'zz'\n");
+  const std::string unknown_order = test::write_file(dir + "/x.order", "v a\nv zz\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--order-file", unknown_order}).err,
+            "gridlock: error: " + unknown_order + ":2: unknown coupling 'zz'\n");
   // Control bytes in what the user typed are shown escaped.
   auto c = run_gridlock({"solve", dir + "/no\x1b[2Jsuch.grid"});
   EXPECT_EQ(c.exit_code, 1);
