@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/limits.hpp"
+
 namespace gridlock {
 
 namespace {
@@ -40,18 +42,24 @@ bool all_true(const std::vector<Masks>& masks, uint32_t a) {
 
 }  // namespace
 
-SatResult exhaustive_sat(const Formula& f) {
+SatResult exhaustive_sat(const Formula& f, const SatLimits& lim) {
   const auto masks = clause_masks(f, "exhaustive_sat");
+  const Deadline clock(lim.seconds);
   SatResult res;
   res.status = Verdict::No;
   const uint64_t end = uint64_t{1} << f.num_vars;
   for (uint64_t a = 0; a < end; ++a) {
+    if ((a & 0xffff) == 0 && clock.expired()) {
+      res.status = Verdict::Unknown;
+      break;
+    }
     if (!all_true(masks, static_cast<uint32_t>(a))) continue;
     res.status = Verdict::Yes;
     res.model.assign(static_cast<size_t>(f.num_vars) + 1, false);
     for (int v = 1; v <= f.num_vars; ++v) res.model[static_cast<size_t>(v)] = (a >> (v - 1)) & 1;
     break;
   }
+  res.seconds = clock.elapsed();
   return res;
 }
 
@@ -72,7 +80,8 @@ class Dpll {
       for (int lit : f.clauses[c]) occ_[index(lit)].push_back(c);
   }
 
-  SatResult run(uint64_t max_decisions) {
+  SatResult run(uint64_t max_decisions, const SatLimits& lim) {
+    const Deadline clock(lim.seconds);
     SatResult res;
     // Empty and unit clauses are the starting facts.
     for (const auto& c : f_.clauses) {
@@ -92,8 +101,11 @@ class Dpll {
     };
     std::vector<Decision> stack;
     uint64_t decisions = 0;
+    int64_t conflicts = 0;
     while (true) {
+      if (clock.expired()) break;  // Unknown
       if (!propagate()) {
+        if (lim.conflicts >= 0 && ++conflicts > lim.conflicts) break;  // Unknown
         while (!stack.empty() && stack.back().flipped) {
           undo(stack.back().trail_size);
           stack.pop_back();
@@ -108,12 +120,16 @@ class Dpll {
         continue;
       }
       int lit = choose();
-      if (lit == 0) break;                          // every clause satisfied
-      if (++decisions > max_decisions) return res;  // Unknown
+      if (lit == 0) {  // every clause satisfied
+        res.status = Verdict::Yes;
+        break;
+      }
+      if (++decisions > max_decisions) break;  // Unknown
       stack.push_back({trail_.size(), lit, false});
       assign(lit);
     }
-    res.status = Verdict::Yes;
+    res.seconds = clock.elapsed();
+    if (res.status != Verdict::Yes) return res;
     res.model.assign(val_.size(), false);
     for (size_t v = 1; v < val_.size(); ++v) res.model[v] = val_[v] > 0;
     // An oracle that is wrong is worse than none: check before answering.
@@ -201,9 +217,9 @@ class Dpll {
 
 }  // namespace
 
-SatResult dpll_sat(const Formula& f, uint64_t max_decisions) {
+SatResult dpll_sat(const Formula& f, uint64_t max_decisions, const SatLimits& lim) {
   require_valid(f, "dpll_sat");
-  return Dpll(f).run(max_decisions);
+  return Dpll(f).run(max_decisions, lim);
 }
 
 }  // namespace gridlock

@@ -19,7 +19,10 @@ constexpr int kExhaustiveMaxVars = 24;
 // the first that satisfies f (status Sat, model indexed 1..num_vars), or
 // Unsat. Requires validate(f) empty and num_vars <= kExhaustiveMaxVars
 // (throws std::invalid_argument otherwise). Time O(2^n * L) worst case.
-SatResult exhaustive_sat(const Formula& f);
+// lim.seconds (> 0) bounds the wall clock (checked every 65536
+// assignments; a stop request, common/limits.hpp, ends it too): then
+// Unknown. lim.conflicts does not apply (the command line refuses it).
+SatResult exhaustive_sat(const Formula& f, const SatLimits& lim = {});
 
 // Number of satisfying assignments over all num_vars variables (variables in
 // no clause double the count). Same requirements. Time O(2^n * L).
@@ -29,8 +32,11 @@ uint64_t count_models(const Formula& f);
 // through occurrence lists, branching on a literal of a shortest open clause
 // (that literal true first, then false). No learning, no restarts: the point
 // is being obviously right, not fast. Gives Unknown after max_decisions
-// decisions. Requires validate(f) empty (throws std::invalid_argument).
-// Time O(decisions * L) plus propagation; memory O(L + n).
-SatResult dpll_sat(const Formula& f, uint64_t max_decisions = 1000000);
+// decisions, or after lim.conflicts (>= 0) conflicts, or when lim.seconds
+// (> 0) of wall clock have passed or a stop is requested (checked at every
+// decision and conflict). Requires validate(f) empty (throws
+// std::invalid_argument). Time O(decisions * L) plus propagation; memory
+// O(L + n).
+SatResult dpll_sat(const Formula& f, uint64_t max_decisions = 1000000, const SatLimits& lim = {});
 
 }  // namespace gridlock

@@ -41,12 +41,13 @@ CollideResult finish_with(CollideResult& res, Simulator& sim, Schedule s) {
 
 // Step 3, no couplings: the centroid algorithm (or, for TreePairwise, its
 // all-pairs twin naming the pair and the centroid run giving the witness).
-CollideResult tree_step(const Instance& inst, Simulator& sim, CollideMethod method, CollideResult& res) {
+CollideResult tree_step(const Instance& inst, Simulator& sim, CollideMethod method, CollideResult& res,
+                        const Deadline* deadline) {
   std::optional<TreeCollision> tc;
   if (method == CollideMethod::TreePairwise) {
     res.algorithm = "tree-pairwise";
     res.complexity = "O(n^2)";
-    tc = tree_collision_pairwise(inst, sim.tree(), sim.regions());
+    tc = tree_collision_pairwise(inst, sim.tree(), sim.regions(), deadline);
   } else {
     res.algorithm = "tree-centroid";
     res.complexity = "O(n log^2 n)";
@@ -82,9 +83,10 @@ Schedule schedule_reaching(size_t nq, const std::vector<std::pair<CouplingId, Ra
 }
 
 // Steps 4/5, couplings: all pairs, exact per-pair tests in the model's sense.
-CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res) {
+CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res,
+                            const Deadline* deadline) {
   PairwiseStats ps;
-  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps);
+  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps, deadline);
   res.stats.pairs = ps.pairs;
   res.stats.full_tests = ps.full_tests;
   if (model == TimeModel::Continuous) {
@@ -106,15 +108,17 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
 
 }  // namespace
 
-CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method) {
+CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method, const Deadline* deadline) {
   const PreparedInstance prep(inst);
-  return find_collision(prep, model, method);
+  return find_collision(prep, model, method, deadline);
 }
 
-CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method) {
+CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method,
+                             const Deadline* deadline) {
   const Instance& inst = prep.inst;
   CollideResult res;
   Simulator sim(prep);
+  sim.set_deadline(deadline);
   const size_t nq = inst.couplings().size();
 
   if (nq == 0) {
@@ -150,10 +154,10 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     throw std::invalid_argument("collide: the tree algorithm needs an instance without couplings");
   if (method == CollideMethod::Tree || method == CollideMethod::TreePairwise ||
       (method == CollideMethod::Auto && tree_ok))
-    return tree_step(inst, sim, method, res);
+    return tree_step(inst, sim, method, res, deadline);
 
   // 4./5. Couplings: all pairs, exact per-pair tests.
-  return pairwise_step(inst, sim, model, res);
+  return pairwise_step(inst, sim, model, res, deadline);
 }
 
 }  // namespace gridlock

@@ -60,8 +60,13 @@ struct CollideResult {
   CollideStats stats;
 };
 
-CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method = CollideMethod::Auto);
+// deadline (optional): checked by the quadratic methods and the simulator's
+// check of the witness; when it passes, LimitReached (common/limits.hpp) is
+// thrown (the command line answers UNKNOWN).
+CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method = CollideMethod::Auto,
+                             const Deadline* deadline = nullptr);
 // The same on prepared tables (lattice/prepared.hpp): nothing is rebuilt.
-CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method = CollideMethod::Auto);
+CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method = CollideMethod::Auto,
+                             const Deadline* deadline = nullptr);
 
 }  // namespace gridlock

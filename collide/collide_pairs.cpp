@@ -663,7 +663,7 @@ std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uin
 }  // namespace
 
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
-                                                TimeModel model, PairwiseStats* stats) {
+                                                TimeModel model, PairwiseStats* stats, const Deadline* deadline) {
   const size_t n = inst.num_nodes(), nq = inst.couplings().size();
   std::vector<RegionForm> forms = region_forms(inst, regions);
   std::vector<std::vector<uint32_t>> regs_of(n);
@@ -683,7 +683,9 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
     CouplingId q;
     Vec2 vec;
   };
+  uint64_t steps = 0;
   for (NodeId s = 0; s < n && !found; ++s) {
+    if (deadline) deadline->check();
     if (regs_of[s].empty()) continue;
     const auto& mine = regs_of[s];
     for (size_t i = 0; i < mine.size() && !found; ++i)
@@ -691,6 +693,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
         if (test(mine[i], mine[j])) break;
     std::vector<Frame> stack{{s, kNone, 0, kNone, {0, 0}}};
     while (!stack.empty() && !found) {
+      if (deadline && (++steps & 4095) == 0) deadline->check();
       Frame& f = stack.back();
       if (f.next < adj[f.w].size()) {
         const TreeArc& a = adj[f.w][f.next++];

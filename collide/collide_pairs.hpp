@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/rational.hpp"
@@ -93,7 +94,10 @@ struct PairCollision {
 // vector of every coupling on the path (the paper's T(v, w), here a plain
 // array with a list of non-zero entries), and every pair of regions is tested
 // as above. Returns the first colliding pair found (with its witness).
+// deadline (optional) is checked once per source node and every 4096
+// steps of the traversal: LimitReached when it has passed.
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
-                                                TimeModel model, PairwiseStats* stats = nullptr);
+                                                TimeModel model, PairwiseStats* stats = nullptr,
+                                                const Deadline* deadline = nullptr);
 
 }  // namespace gridlock

@@ -396,7 +396,7 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
 }
 
 std::optional<TreeCollision> tree_collision_pairwise(const Instance& inst, const SpanningTree& tree,
-                                                     const Regions& regions) {
+                                                     const Regions& regions, const Deadline* deadline) {
   GRIDLOCK_ASSERT(tree_algorithm_applies(inst),
                   "tree_collision_pairwise needs singleton couplings and no cycle broken");
   const size_t n = inst.num_nodes();
@@ -405,6 +405,7 @@ std::optional<TreeCollision> tree_collision_pairwise(const Instance& inst, const
   std::vector<uint32_t> first(n, kNone), last(n, kNone);  // first / last edge of the path from the source
   std::vector<NodeId> par(n, kNone), order;
   for (uint32_t xi = 0; xi < M.copies.size(); ++xi) {
+    if (deadline) deadline->check();
     const Copy& X = M.copies[xi];
     NodeId s = X.at;
     order.assign(1, s);

@@ -23,6 +23,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
 
@@ -44,8 +45,9 @@ std::optional<TreeCollision> tree_collision(const Instance& inst, const Spanning
 
 // The same model by brute force over all pairs of copies: O(n^2). For
 // benchmarks (the crossover) and as a twin in tests. `done` is left empty.
+// deadline (optional) is checked once per copy: LimitReached when passed.
 std::optional<TreeCollision> tree_collision_pairwise(const Instance& inst, const SpanningTree& tree,
-                                                     const Regions& regions);
+                                                     const Regions& regions, const Deadline* deadline = nullptr);
 
 // True iff the instance meets the requirements above.
 bool tree_algorithm_applies(const Instance& inst);

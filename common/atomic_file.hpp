@@ -19,6 +19,7 @@
 #pragma once
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -26,8 +27,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "common/diagnostic.hpp"
 
@@ -51,7 +55,81 @@ inline bool write_all(int fd, std::string_view text, int& err) {
   return true;
 }
 
+// The files this process reads, by device and inode (a name can differ: links,
+// "./", "../"), with the name the user gave.
+struct ProtectedFile {
+  dev_t dev;
+  ino_t ino;
+  std::string name;
+};
+inline std::mutex& protected_mutex() {
+  static std::mutex m;
+  return m;
+}
+inline std::vector<ProtectedFile>& protected_files() {
+  static std::vector<ProtectedFile> files;
+  return files;
+}
+
 }  // namespace detail
+
+// Inputs are sacred: protect_input(path) records the regular file path
+// names (by device and inode; "-", devices and missing paths are ignored),
+// and from then on stage_file, commit_file and remove_own_file refuse to
+// write over, rename onto or remove it ("PATH: output would overwrite the
+// input NAME"). Thread-safe; commands call it for every file they read,
+// before any output is written (tools/cli_common.hpp, guard_paths).
+inline void protect_input(const std::string& path) {
+  struct stat st {};
+  if (path == "-" || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
+  std::lock_guard<std::mutex> lock(detail::protected_mutex());
+  for (const auto& f : detail::protected_files())
+    if (f.dev == st.st_dev && f.ino == st.st_ino) return;
+  detail::protected_files().push_back({st.st_dev, st.st_ino, path});
+}
+
+// The protected input that path names now (same device and inode), or "".
+inline std::string protected_input_at(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return "";
+  std::lock_guard<std::mutex> lock(detail::protected_mutex());
+  for (const auto& f : detail::protected_files())
+    if (f.dev == st.st_dev && f.ino == st.st_ino) return f.name;
+  return "";
+}
+
+// Removes path, a file gridlock wrote, unless it is a protected input
+// (then "PATH: will not remove the input NAME"); a missing file is fine.
+inline MaybeError remove_own_file(const std::string& path) {
+  if (std::string in = protected_input_at(path); !in.empty())
+    return Diagnostic{path, 0, "will not remove the input " + in};
+  if (::unlink(path.c_str()) != 0 && errno != ENOENT)
+    return Diagnostic{path, 0, std::string("cannot remove: ") + std::strerror(errno)};
+  return std::nullopt;
+}
+
+// While alive, SIGINT, SIGTERM and SIGHUP are held back (blocked for this
+// thread) and delivered when it ends: a temporary file is never left behind
+// by a Ctrl-C or a kill, because the signal takes effect only after the
+// rename or the removal. (SIGKILL cannot be held back: it can leave a
+// PATH.tmp.XXXXXX file, never a half-written PATH.)
+class DeferSignals {
+ public:
+  DeferSignals() {
+    sigset_t s;
+    sigemptyset(&s);
+    sigaddset(&s, SIGINT);
+    sigaddset(&s, SIGTERM);
+    sigaddset(&s, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &s, &old_);
+  }
+  ~DeferSignals() { pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
+  DeferSignals(const DeferSignals&) = delete;
+  DeferSignals& operator=(const DeferSignals&) = delete;
+
+ private:
+  sigset_t old_;
+};
 
 // A file written but not yet in place: stage_file writes text to a
 // temporary file next to path (or, for a device, straight to it);
@@ -64,6 +142,8 @@ struct StagedFile {
 
 inline MaybeError stage_file(const std::string& path, std::string_view text, StagedFile& out) {
   out = StagedFile{path, ""};
+  if (std::string in = protected_input_at(path); !in.empty())
+    return Diagnostic{path, 0, "output would overwrite the input " + in};
   struct stat st {};
   bool exists = ::stat(path.c_str(), &st) == 0;
   if (exists && S_ISDIR(st.st_mode)) return Diagnostic{path, 0, "is a directory, not a file"};
@@ -94,6 +174,11 @@ inline MaybeError stage_file(const std::string& path, std::string_view text, Sta
 
 inline MaybeError commit_file(StagedFile& f) {
   if (f.tmp.empty()) return std::nullopt;
+  if (std::string in = protected_input_at(f.path); !in.empty()) {
+    ::unlink(f.tmp.c_str());
+    f.tmp.clear();
+    return Diagnostic{f.path, 0, "output would overwrite the input " + in};
+  }
   if (::rename(f.tmp.c_str(), f.path.c_str()) != 0) {
     int err = errno;
     ::unlink(f.tmp.c_str());
@@ -112,6 +197,7 @@ inline void discard_file(StagedFile& f) {
 // Writes text to path atomically (see above). Mode of a new file: 0644;
 // an existing regular file keeps its mode.
 inline MaybeError write_file_atomic(const std::string& path, std::string_view text) {
+  DeferSignals hold;  // no temporary file outlives a signal
   StagedFile f;
   if (auto e = stage_file(path, text, f)) return e;
   return commit_file(f);

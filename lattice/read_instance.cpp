@@ -71,9 +71,15 @@ bool Reader::next_line() {
   if (!any) return false;
   ++line_no_;
   if (!line_.empty() && line_.back() == '\r') line_.pop_back();
+  // As in DIMACS (cnf/dimacs.hpp): UTF-8 (bytes >= 0x80) in comments only.
+  const size_t first = line_.find_first_not_of(" \t");
+  const bool comment = first != std::string::npos &&
+                       (line_[first] == '#' ||
+                        (line_[first] == 'c' &&
+                         (first + 1 == line_.size() || line_[first + 1] == ' ' || line_[first + 1] == '\t')));
   for (size_t i = 0; i < line_.size(); ++i) {
     auto b = static_cast<unsigned char>(line_[i]);
-    if ((b < 0x20 && b != '\t') || b >= 0x7f) {
+    if ((b < 0x20 && b != '\t') || b == 0x7f || (b >= 0x80 && !comment)) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02x", b);
       err_ = error(std::string("binary input: byte ") + hex + " at column " + std::to_string(i + 1));
@@ -86,7 +92,7 @@ bool Reader::next_line() {
 bool Reader::integer(std::string_view tok, int64_t lo, int64_t hi, const char* what, int64_t& v) {
   const char* b = tok.data();
   const char* e = tok.data() + tok.size();
-  if (b != e && *b == '+') ++b;
+  // No '+' sign: DIMACS and the times files refuse it too (one reading).
   auto [p, ec] = std::from_chars(b, e, v);
   if (ec == std::errc::result_out_of_range || (ec == std::errc() && p == e && (v < lo || v > hi))) {
     err_ = error(std::string(what) + " out of range: '" + std::string(tok) + "' (allowed " + std::to_string(lo) +

@@ -37,6 +37,32 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
+// A name as LaTeX text: every character that LaTeX treats specially (the
+// .grid names allow _ ~ and '; a title may hold anything) written so that it
+// prints as itself. Used outside math mode.
+std::string tex_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '\\': out += "\\textbackslash{}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '_':
+      case '{':
+      case '}':
+      case '#':
+      case '$':
+      case '%':
+      case '&':
+        out += '\\';
+        out += c;
+        break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 std::string op_label(const Instance& inst, OpId k) {
   const Operation& op = inst.ops()[k];
   const Coupling& q = inst.couplings()[op.coupling];
@@ -261,12 +287,37 @@ std::string render_tikz(const Instance& inst) {
     if (op.kind == OpKind::Grow)
       o << "\\draw[" << col << ",dashed] (" << fmt(tx - 0.42) << "," << fmt(ty - 0.42) << ") rectangle +(0.84,0.84);\n";
     o << "\\draw[" << col << ",very thick," << arrow << "] (" << fmt(ux + 0.2 * static_cast<double>(d.x)) << ","
-      << fmt(uy + 0.2 * static_cast<double>(d.y)) << ") -- node[above,font=\\scriptsize]{$" << op.name << "$} ("
-      << fmt(tx - 0.2 * static_cast<double>(d.x)) << "," << fmt(ty - 0.2 * static_cast<double>(d.y)) << ");\n";
+      << fmt(uy + 0.2 * static_cast<double>(d.y)) << ") -- node[above,font=\\scriptsize]{" << tex_escape(op.name)
+      << "} (" << fmt(tx - 0.2 * static_cast<double>(d.x)) << "," << fmt(ty - 0.2 * static_cast<double>(d.y)) << ");\n";
   }
   o << "\\fill (" << c[inst.anchor()].x << ".25," << c[inst.anchor()].y << ".75) circle (2pt);\n";
   o << "\\end{tikzpicture}\n";
   return o.str();
+}
+
+namespace {
+struct CellBox {
+  int64_t minx, maxx, miny, maxy;
+};
+CellBox ascii_box(const Instance& inst) {
+  const auto& c = inst.cells();
+  CellBox b{c[0].x, c[0].x, c[0].y, c[0].y};
+  auto grow_box = [&](Vec2 p) {
+    b.minx = std::min(b.minx, p.x), b.maxx = std::max(b.maxx, p.x);
+    b.miny = std::min(b.miny, p.y), b.maxy = std::max(b.maxy, p.y);
+  };
+  for (const auto& p : c) grow_box(p);
+  for (const auto& op : inst.ops())
+    if (op.kind == OpKind::Grow) grow_box(c[op.u] + unit(op.dir));
+  return b;
+}
+}  // namespace
+
+std::string ascii_too_large(const Instance& inst) {
+  const CellBox b = ascii_box(inst);
+  if (b.maxx - b.minx <= 400 && b.maxy - b.miny <= 400) return "";
+  return "too large for ASCII: " + std::to_string(b.maxx - b.minx + 1) + " x " + std::to_string(b.maxy - b.miny + 1) +
+         " cells (at most 401 x 401; draw it as SVG)";
 }
 
 std::string render_ascii(const Instance& inst) {

@@ -34,6 +34,10 @@ std::string render_tikz(const Instance& inst);
 // '-' and '|' plain edges, 'E' expansion edge, 'C' contraction edge,
 // '>' '<' '^' 'v' growth from the neighbour, '!' growth into an occupied
 // cell; a legend of the operations follows.
+// An instance wider or taller than 401 cells is not drawn: the text is one
+// line "(too large for ASCII: W x H cells)"; ascii_too_large says so first
+// (the command line makes it an error), "" when it fits.
 std::string render_ascii(const Instance& inst);
+std::string ascii_too_large(const Instance& inst);
 
 }  // namespace gridlock

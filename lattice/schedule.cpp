@@ -1,5 +1,6 @@
 #include "lattice/schedule.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -67,13 +68,20 @@ MaybeError for_each_line(const std::string& path, Fn fn) {
   long no = 0;
   while (std::getline(*in, text)) {
     ++no;
-    for (char ch : text)
-      if ((static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\r') || static_cast<unsigned char>(ch) >= 0x7f)
-        return Diagnostic{name, no, "binary input"};
     std::istringstream ss(text);
     std::vector<std::string> tok;
     for (std::string w; ss >> w;) tok.push_back(w);
-    if (tok.empty() || tok[0] == "c" || tok[0][0] == '#') continue;
+    // As in .grid and DIMACS: UTF-8 (bytes >= 0x80) in comments only.
+    const bool comment = !tok.empty() && (tok[0] == "c" || tok[0][0] == '#');
+    for (size_t k = 0; k < text.size(); ++k) {
+      const auto b = static_cast<unsigned char>(text[k]);
+      if ((b < 0x20 && b != '\t' && b != '\r') || b == 0x7f || (b >= 0x80 && !comment)) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", b);
+        return Diagnostic{name, no, std::string("binary input: byte ") + hex + " at column " + std::to_string(k + 1)};
+      }
+    }
+    if (tok.empty() || comment) continue;
     if (auto e = fn(name, no, tok)) return e;
   }
   return std::nullopt;
@@ -129,7 +137,7 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
     if (line_of[q])
       return Diagnostic{
           name, no, "coupling '" + tok[0] + "' given a time twice (first on line " + std::to_string(line_of[q]) + ")"};
-    auto t = Rational::parse(tok[1]);
+    auto t = tok[1][0] == '+' ? std::nullopt : Rational::parse(tok[1]);  // no '+': one reading of numbers
     if (!t) return Diagnostic{name, no, "bad time '" + tok[1] + "' (an integer or a fraction a/b)"};
     if (t->num() / t->den() > kMaxStartTime || t->num() / t->den() < -kMaxStartTime)
       return Diagnostic{name, no, "time out of range: '" + tok[1] + "' (|t| <= 2^30)"};

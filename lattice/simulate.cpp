@@ -211,7 +211,8 @@ struct Simulator::Scratch {
     bool start;
   };
   const PreparedInstance* prep = nullptr;
-  CellLists initial_grid;  // every region at its base cell (independent of D)
+  const Deadline* deadline = nullptr;  // checked between intervals (Simulator::set_deadline)
+  CellLists initial_grid;              // every region at its base cell (independent of D)
   std::vector<uint64_t> initial_key;
   // The state of the sweep. Between runs every region is back at its base
   // cell in grid and region_key except those in `touched` (moved by the last
@@ -333,6 +334,7 @@ void Simulator::Scratch::find_cycle_collision() {
   cycle_face = 0;
   const auto& faces = prep->faces.faces;
   for (size_t f = 0; f < faces.size(); ++f) {
+    if (deadline && (f & 4095) == 0) deadline->check();
     const auto& nets = faces[f].nets;
     ev.clear();
     for (auto& [q, v] : nets) ev.push_back(T[q]), ev.push_back(T[q] + D);
@@ -669,6 +671,7 @@ SimResult Simulator::Scratch::run(const Schedule& s) {
     }
     if (cycle_found && cycle_time <= now) return cycle_result();
     if (run_list.empty() || ei == events.size()) continue;
+    if (deadline) deadline->check();
     const int64_t span = events[ei].time - now;
     ++stats.intervals;
     next_stamp();
@@ -702,6 +705,7 @@ void Simulator::rebind(const PreparedInstance& prep) {
 SimResult Simulator::run(const Schedule& s) {
   if (auto problem = check_schedule_bounds(prep_->inst, s)) throw std::invalid_argument(*problem);
   if (!scratch_) scratch_ = std::make_unique<Scratch>(*prep_);
+  scratch_->deadline = deadline_;
   return scratch_->run(s);
 }
 

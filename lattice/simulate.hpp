@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/prepared.hpp"
@@ -79,6 +80,12 @@ class Simulator {
   SimResult run(const Schedule& s);
   SimResult run_order(const std::vector<CouplingId>& order) { return run(schedule_from_order(order)); }
 
+  // From now on, run() calls deadline->check() between intervals and every
+  // few thousand faces of the cycle check: a run past the deadline (or after
+  // a stop request) throws LimitReached (common/limits.hpp) instead of
+  // finishing. nullptr (the default): no limit. d must outlive the runs.
+  void set_deadline(const Deadline* d) { deadline_ = d; }
+
   // Simulates prep from now on (its tables must outlive the simulator),
   // keeping the work arrays' memory: one simulator serves many instances
   // (verify's Verifier, one formula after another). O(n + r).
@@ -95,6 +102,7 @@ class Simulator {
   std::unique_ptr<PreparedInstance> owned_;  // when built from an Instance
   const PreparedInstance* prep_;
   std::unique_ptr<Scratch> scratch_;
+  const Deadline* deadline_ = nullptr;
 };
 
 // An exact rectangle, for drawing the configuration at a moment.

@@ -14,6 +14,7 @@ PACKAGES=(
   ccache                                    # shared objects between the builds
   jq                                        # tests/chaos.sh reads the JSON it checks
   libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
+  libssl-dev                                # SHA-256 of inputs (run identity of shards and sets)
   chromium                                  # headless browser for the viewer's page tests
   clang-format clang-tidy                   # scripts/lint.sh
   parallel                                  # GNU parallel: the sharded-campaign recipe test

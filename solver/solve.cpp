@@ -70,7 +70,18 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
     std::optional<Simulator> own;
     if (!replay || &replay->prepared() != &prep) replay = &own.emplace(prep);
     Simulator& sim = *replay;
-    SimResult check = sim.run_order(res.order);
+    sim.set_deadline(&budget.deadline());  // --timeout covers the final check too
+    SimResult check;
+    try {
+      check = sim.run_order(res.order);
+    } catch (const LimitReached&) {
+      sim.set_deadline(nullptr);
+      res.status = Verdict::Unknown;
+      res.order.clear();
+      res.stats.seconds = budget.elapsed();
+      return res;
+    }
+    sim.set_deadline(nullptr);
     if (check.collision)
       throw std::logic_error("solver returned an order that collides in the simulator: " +
                              describe(inst, sim.regions(), *check.collision));

@@ -6,10 +6,13 @@
 #     already finished;
 #   - --json output is one valid JSON object whose "interrupted" matches;
 #   - no temporary file (*.tmp.*) is left anywhere;
-#   - every .grid parses (gridlock render), every .cnf parses (gridlock cnf
+#   - every .grid parses (gridlock render --tikz), every .cnf parses (gridlock cnf
 #     check), every .svg is complete, every YES instance's schedule is
 #     collision-free (gridlock check);
-#   - gen-instances: manifest.json lists exactly the .grid files in the folder.
+#   - gen-instances: manifest.json lists exactly the .grid files in the folder;
+#   - compile / render (default dispositions, as on a terminal: `env
+#     --default-signal`, since a background job of a script ignores SIGINT):
+#     no temporary file, the output absent or whole.
 #
 # usage: tests/chaos.sh GRIDLOCK [ROUNDS]   (ctest runs it: see tests/CMakeLists.txt)
 # CHAOS_SEED fixes the random choices (printed first, so a failure replays).
@@ -24,6 +27,10 @@ RANDOM=$SEED
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/gridlock-chaos.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT
 failures=0
+# A formula whose compiled instance is tens of MB: its write takes long
+# enough to be hit.
+BIG="$WORK/big.cnf"
+{ echo "p cnf 40000 40000"; for v in $(seq 1 40000); do echo "$v -$(( v % 40000 + 1 )) 0"; done; } >"$BIG"
 
 fail() {
   echo "chaos: FAIL (seed $SEED, round $round, $what): $*" >&2
@@ -36,7 +43,7 @@ check_files() {
   [ -d "$dir" ] || return 0
   while IFS= read -r f; do fail "temporary file left behind: $f"; done < <(find "$dir" -name '*.tmp.*')
   while IFS= read -r f; do
-    "$GRIDLOCK" render --ascii "$f" -o /dev/null 2>/dev/null || fail "does not parse: $f"
+    "$GRIDLOCK" render --tikz "$f" -o /dev/null 2>/dev/null || fail "does not parse: $f"
     local sched="${f%.grid}.schedule"
     if [ -f "$sched" ]; then
       "$GRIDLOCK" check "$f" --order-file "$sched" >/dev/null 2>&1
@@ -56,7 +63,7 @@ check_files() {
 for round in $(seq 1 "$ROUNDS"); do
   dir="$WORK/r$round"
   mkdir -p "$dir"
-  kind=$((RANDOM % 3))
+  kind=$((RANDOM % 4))
   sig=$([ $((RANDOM % 2)) -eq 0 ] && echo INT || echo TERM)
   delay_ms=$((50 + RANDOM % 2450))
   json=$([ $((RANDOM % 2)) -eq 0 ] && echo --json || echo "")
@@ -69,6 +76,10 @@ for round in $(seq 1 "$ROUNDS"); do
     2) what="gen-instances"
        json=""
        cmd=("$GRIDLOCK" gen-instances -o "$dir/out" --vars $((8 + RANDOM % 40)) --threshold 30 --lsat 30 --seed "$RANDOM") ;;
+    3) what="compile (terminal dispositions)"
+       json=""
+       mkdir -p "$dir/out"
+       cmd=(env --default-signal=INT,TERM,HUP "$GRIDLOCK" compile "$BIG" -o "$dir/out/big.grid") ;;
   esac
   what="$what, SIG$sig after $delay_ms ms"
   "${cmd[@]}" >"$dir/stdout" 2>"$dir/stderr" &
@@ -85,7 +96,7 @@ for round in $(seq 1 "$ROUNDS"); do
   rc=$?
   want=$([ "$sig" = INT ] && echo 130 || echo 143)
   interrupted=false
-  if [ $rc -eq "$want" ]; then
+  if [ $rc -eq "$want" ]; then  # compile: killed by the signal itself (128 + N), as on a terminal
     interrupted=true
   elif [ $rc -ne 0 ] && [ $rc -ne 1 ]; then
     fail "exit code $rc (want $want, or 0/1 if it had finished); stderr: $(head -c 300 "$dir/stderr")"

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -275,9 +276,11 @@ TEST(HardeningCli, HeaderCountsAreCheckedBeforeAllocating) {
   std::string wide = test::write_file(dir + "/wide.cnf", "p cnf 781000 1\n1 0\n");
   auto c = run_gridlock({"compile", wide, "-o", dir + "/w.grid"});
   EXPECT_EQ(c.exit_code, 1);
-  EXPECT_EQ(c.err, "gridlock: error: " + wide +
-                       ":1: the compiled instance would have 33583009 nodes (43n + 5L + 15m - 11), more than the "
-                       ".grid format's limit of 33554432\n");
+  EXPECT_EQ(c.err,
+            "gridlock: error: " + wide +
+                ":1: the compiled instance would have 33583009 nodes (43n + 5L + 15m - 11; 33583011 in the continuous "
+                "model), more than the "
+                ".grid format's limit of 33554432\n");
   EXPECT_FALSE(fs::exists(dir + "/w.grid"));
   // Just inside both limits: accepted (to-lsat passes it through).
   std::string ok = test::write_file(dir + "/ok.cnf", "p cnf 1048577 1\n1 0\n");
@@ -445,6 +448,428 @@ TEST(HardeningCli, EmptyFilesGiveALineNumber) {
   EXPECT_EQ(run_gridlock({"cnf", "solve", e}).err, "gridlock: error: " + e + ":1: empty input: no 'p cnf' header\n");
   auto m = run_gridlock({"lift", kExamples + "tiny-sat.cnf", "--model", e});
   EXPECT_EQ(m.err, "gridlock: error: " + e + ":1: empty model: want 's SATISFIABLE' and 'v' lines ending in 0\n");
+}
+
+// ---------------------------------------------------------------- round 2
+// (docs/errors.md, "Round 2"): one test per class the second adversarial
+// campaign found; each failed before its fix.
+
+// A hard link to path (the same file under another name), or "" when the
+// file system refuses links.
+std::string hard_link(const std::string& path, const std::string& link) {
+  std::error_code ec;
+  fs::create_hard_link(path, link, ec);
+  return ec ? "" : link;
+}
+
+// 13. Inputs are sacred: no output over a file the command reads (compared
+// by device and inode: a hard link is the same file), whatever option
+// names it. Before: verify/gen-instances --json-out, animate/check over the
+// schedule, merge -o over a shard all overwrote their input.
+TEST(HardeningCli, NoCommandWritesOverAFileItReads) {
+  std::string dir = test::temp_dir();
+  const std::string f = dir + "/f.cnf";
+  fs::copy_file(kExamples + "tiny-sat.cnf", f);
+  const std::string before = test::read_file(f);
+  auto refused = [&](const std::vector<std::string>& args, const std::string& victim) {
+    auto r = run_gridlock(args);
+    EXPECT_EQ(r.exit_code, 1) << args[0] << ": " << r.err;
+    EXPECT_NE(r.err.find("output would overwrite the input"), std::string::npos) << args[0] << ": " << r.err;
+    EXPECT_EQ(test::read_file(victim), victim == f ? before : test::read_file(victim));
+  };
+  refused({"verify", f, "--json-out", f}, f);
+  refused({"gen-instances", "-o", dir + "/set", "--formula", f, "--threshold", "0", "--lsat", "0", "--json-out", f}, f);
+  EXPECT_EQ(test::read_file(f), before);
+  const std::string link = hard_link(f, dir + "/link.cnf");
+  if (!link.empty()) {
+    refused({"verify", f, "--json-out", link}, f);
+    refused({"cnf", "to-lsat", f, "-o", link}, f);
+    EXPECT_EQ(test::read_file(f), before);
+  }
+  // The schedule a command reads is an input too.
+  ASSERT_EQ(run_gridlock({"compile", f, "-o", dir + "/t.grid"}).exit_code, 0);
+  auto s = run_gridlock({"solve", dir + "/t.grid"});
+  ASSERT_EQ(s.exit_code, 10) << s.err;
+  const std::string sched = test::write_file(dir + "/t.schedule", s.out);
+  refused({"animate", dir + "/t.grid", "--order-file", sched, "-o", sched}, sched);
+  refused({"check", dir + "/t.grid", "--order-file", sched, "--svg", sched}, sched);
+  EXPECT_EQ(test::read_file(sched), s.out);
+  // merge -o over one of its shards.
+  ASSERT_EQ(run_gridlock({"verify", f, "--shard", "0/2", "--json-out", dir + "/s0.json"}).exit_code, 0);
+  ASSERT_EQ(run_gridlock({"verify", f, "--shard", "1/2", "--json-out", dir + "/s1.json"}).exit_code, 0);
+  const std::string shard0 = test::read_file(dir + "/s0.json");
+  refused({"merge", dir + "/s0.json", dir + "/s1.json", "-o", dir + "/s0.json"}, dir + "/s0.json");
+  EXPECT_EQ(test::read_file(dir + "/s0.json"), shard0);
+  EXPECT_TRUE(temp_files(dir).empty());
+}
+
+// 14. --force removes only what gridlock wrote there (its ledger and
+// manifests), never an input, never a file of the user's. Before:
+// `gen-instances -o . --force` deleted every .cnf and .grid in the folder,
+// the input formula included.
+TEST(HardeningCli, ForceRemovesOnlyWhatGridlockWrote) {
+  std::string dir = test::temp_dir() + "/work";
+  fs::create_directories(dir);
+  const std::string f = dir + "/mine.cnf";
+  fs::copy_file(kExamples + "tiny-sat.cnf", f);
+  const std::string user_grid = test::write_file(dir + "/notes.grid", "c the user's own file\n");
+  auto r = run_gridlock(
+      {"gen-instances", "-o", dir, "--force", "--formula", f, "--threshold", "1", "--lsat", "0", "--vars", "5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(f));
+  EXPECT_TRUE(fs::exists(user_grid));
+  EXPECT_TRUE(fs::exists(dir + "/given-mine.grid"));
+  // Again with --force: the previous set goes, the user's files stay.
+  r = run_gridlock(
+      {"gen-instances", "-o", dir, "--force", "--formula", f, "--threshold", "0", "--lsat", "1", "--vars", "5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(f));
+  EXPECT_EQ(test::read_file(user_grid), "c the user's own file\n");
+  EXPECT_FALSE(fs::exists(dir + "/threshold-1.grid"));
+  EXPECT_TRUE(fs::exists(dir + "/lsat-1.grid"));
+  // A --model continuous set leaves .times files: a later --force set of
+  // another model removes them too (before: they stayed behind).
+  std::string set = test::temp_dir() + "/set";
+  ASSERT_EQ(run_gridlock({"gen-instances", "-o", set, "--model", "continuous", "--vars", "4", "--threshold", "0",
+                          "--lsat", "3", "--seed", "2"})
+                .exit_code,
+            0);
+  ASSERT_EQ(
+      run_gridlock({"gen-instances", "-o", set, "--force", "--vars", "4", "--threshold", "1", "--lsat", "0"}).exit_code,
+      0);
+  auto m = nlohmann::json::parse(test::read_file(set + "/manifest.json"));
+  std::set<std::string> listed = {"manifest.json", "run.json", ".gridlock-files"}, present;
+  for (const auto& e : m["instances"]) {
+    listed.insert(e["instance"].get<std::string>());
+    listed.insert(e["formula"].get<std::string>());
+    if (e["certificate"].contains("file")) listed.insert(e["certificate"]["file"].get<std::string>());
+  }
+  for (const auto& e : fs::directory_iterator(set)) present.insert(e.path().filename().string());
+  EXPECT_EQ(present, listed);
+}
+
+// 15. Empty and root-level output paths are refused before any work.
+// Before: `fuzz --out ''` wrote its reproducer under the file-system root.
+TEST(HardeningCli, EmptyAndRootOutputPathsAreRefused) {
+  const std::string tiny = kExamples + "tiny-sat.cnf";
+  auto r = run_gridlock({"fuzz", "--out", "", "--count", "1"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gridlock: error: --out: empty path: give a folder\n");
+  r = run_gridlock({"fuzz", "--out", "/", "--count", "1"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("is the file-system root"), std::string::npos) << r.err;
+  r = run_gridlock({"verify", tiny, "--reproducers", "/.."});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("is the file-system root"), std::string::npos) << r.err;
+  const std::string at_root = "/gridlock-hardening-test-do-not-create.grid";
+  r = run_gridlock({"compile", tiny, "-o", at_root});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("is at the file-system root"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(at_root));
+  r = run_gridlock({"compile", tiny, "-o", ""});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "gridlock: error: --output: empty path: give a file\n");
+}
+
+// 16. Sets carry their identity: shards of different runs never share a
+// gen-instances folder, `merge` refuses shards of different runs (verify:
+// different input lists of the same length), and two inputs that would
+// write the same files are refused up front. Before: the manifest labelled
+// a NO instance YES, and merge listed one formula twice and dropped another.
+TEST(HardeningCli, SetsOfDifferentRunsNeverMix) {
+  std::string dir = test::temp_dir();
+  const std::string set = dir + "/set";
+  auto shard = [&](const std::string& k, const std::string& seed) {
+    return run_gridlock({"gen-instances", "-o", set, "--shard", k + "/2", "--seed", seed, "--vars", "5", "--threshold",
+                         "2", "--lsat", "0", "--json-out", dir + "/g" + k + "-" + seed + ".json"});
+  };
+  ASSERT_EQ(shard("0", "1").exit_code, 0);
+  auto other = shard("1", "2");
+  EXPECT_EQ(other.exit_code, 1);
+  EXPECT_NE(other.err.find(set + ": holds a set of another run"), std::string::npos) << other.err;
+  EXPECT_FALSE(fs::exists(set + "/manifest-shard-1-of-2.json"));
+  ASSERT_EQ(shard("1", "1").exit_code, 0);
+  auto m = run_gridlock({"merge", dir + "/g0-1.json", dir + "/g1-1.json"});
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  auto merged = nlohmann::json::parse(m.out);
+  EXPECT_EQ(merged["instances"].size(), 2u);
+  EXPECT_EQ(merged["run_id"].get<std::string>().size(), 16u);
+  EXPECT_EQ(merged["run"]["options"]["seed"], "1");
+
+  // verify shards of two input lists of the same length.
+  const std::string a = kSatlib + "uf20-91/uf20-01.cnf", b = kSatlib + "uf20-91/uf20-02.cnf";
+  const std::string c = kSatlib + "uf20-91/uf20-03.cnf";
+  ASSERT_EQ(run_gridlock({"verify", a, b, c, "--shard", "0/2", "--json-out", dir + "/v0.json"}).exit_code, 0);
+  ASSERT_EQ(run_gridlock({"verify", a, c, b, "--shard", "1/2", "--json-out", dir + "/v1.json"}).exit_code, 0);
+  auto v = run_gridlock({"merge", dir + "/v0.json", dir + "/v1.json"});
+  EXPECT_EQ(v.exit_code, 1);
+  EXPECT_NE(v.err.find("\"run_id\" differs"), std::string::npos) << v.err;
+  auto v0 = nlohmann::json::parse(test::read_file(dir + "/v0.json"));
+  ASSERT_EQ(v0["run"]["inputs"].size(), 3u);
+  EXPECT_EQ(v0["run"]["inputs"][0]["sha256"].get<std::string>().size(), 64u);
+
+  // Two given formulas named alike would write the same given-x.* files.
+  fs::create_directories(dir + "/p");
+  fs::create_directories(dir + "/q");
+  fs::copy_file(kExamples + "tiny-sat.cnf", dir + "/p/x.cnf");
+  fs::copy_file(kExamples + "tiny-unsat.cnf", dir + "/q/x.cnf");
+  auto clash = run_gridlock({"gen-instances", "-o", dir + "/clash", "--formula", dir + "/p/x.cnf", "--formula",
+                             dir + "/q/x.cnf", "--threshold", "0", "--lsat", "0"});
+  EXPECT_EQ(clash.exit_code, 1);
+  EXPECT_NE(clash.err.find("two inputs named 'x'"), std::string::npos) << clash.err;
+  EXPECT_FALSE(fs::exists(dir + "/clash"));
+}
+
+// 17. Findings survive: an output folder that cannot be made is an error
+// before any work, naming the folder (never "internal:"). Before: the
+// fuzzer found a counterexample, then failed with "internal:" and lost it.
+// (A path below a regular file fails for every user, root included.)
+TEST(HardeningCli, UnwritableOutputFoldersAreRefusedBeforeAnyWork) {
+  std::string dir = test::temp_dir();
+  const std::string file = test::write_file(dir + "/plain", "x\n");
+  const std::string bad = file + "/sub";
+  const std::vector<std::vector<std::string>> cases = {
+      {"fuzz", "--break-gadget", "clause-loose", "--count", "50", "--out", bad},
+      {"verify", kExamples + "tiny-sat.cnf", "--break-gadget", "clause-loose", "--reproducers", bad},
+      {"verify", kExamples + "tiny-sat.cnf", "--pictures", bad},
+      {"gen-instances", "-o", bad, "--threshold", "1", "--lsat", "0", "--vars", "5"},
+  };
+  for (const auto& args : cases) {
+    SCOPED_TRACE(args[0] + " " + args.back());
+    auto t0 = std::chrono::steady_clock::now();
+    auto r = run_gridlock(args);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(r.err.rfind("gridlock: error: " + bad + ": ", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find("internal"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("disagree"), std::string::npos) << r.out;  // refused before any formula was checked
+    EXPECT_LT(seconds_since(t0), 5.0);
+  }
+}
+
+// A row of 2k nodes with an expansion on every other edge (k expansions,
+// each its own coupling): collision-free, horizontal-only; the solver finds
+// an order at once, and the simulator's check of it is quadratic.
+std::string expansion_row(const std::string& path, int k) {
+  const int n = 2 * k;
+  std::string g = "p grid " + std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(k) + " 0\n";
+  for (int i = 0; i < n; ++i) g += "n " + std::to_string(i) + " 0\n";
+  for (int i = 0; i + 1 < n; ++i) g += "e " + std::to_string(i) + " 0 " + std::to_string(i + 1) + " 0\n";
+  for (int i = 0; i < k; ++i) g += "o x" + std::to_string(i) + " expand " + std::to_string(2 * i) + " 0 +x\n";
+  return test::write_file(path, g);
+}
+
+// 18. One limit for everything: --timeout covers the final simulator check
+// of a solution (before: `solve --timeout 5` on a 25 000-expansion row took
+// 53 s), collide has a --timeout (before: none; 37 s at 40 000 nodes), and
+// `cnf solve --time/--conflicts` bind every solver (before: dpll ignored
+// both). Bounds are loose (shared machines): they catch an ignored limit.
+TEST(HardeningCli, EveryDecisionCommandHonoursItsLimit) {
+  std::string dir = test::temp_dir();
+  const std::string row = expansion_row(dir + "/row.grid", 25000);
+  auto t0 = std::chrono::steady_clock::now();
+  auto r = run_gridlock({"solve", row, "--timeout", "2", "--json"});
+  double wall = seconds_since(t0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "UNKNOWN");
+  EXPECT_LT(wall, 12.0);
+
+  t0 = std::chrono::steady_clock::now();
+  r = run_gridlock({"collide", row, "--model", "discrete", "--method", "pairwise", "--timeout", "1"});
+  wall = seconds_since(t0);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("s UNKNOWN"), std::string::npos) << r.out;
+  EXPECT_LT(wall, 10.0);
+  auto bad = run_gridlock({"collide", row, "--timeout", "0"});
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--timeout"), std::string::npos) << bad.err;
+
+  // dpll: a hard random formula (no learning: far beyond a second).
+  ASSERT_EQ(run_gridlock({"cnf", "gen", "ksat", "--n", "250", "--ratio", "4.26", "--seed", "9", "-o", dir + "/h.cnf"})
+                .exit_code,
+            0);
+  t0 = std::chrono::steady_clock::now();
+  r = run_gridlock({"cnf", "solve", dir + "/h.cnf", "--solver", "dpll", "--time", "1"});
+  wall = seconds_since(t0);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("s UNKNOWN"), std::string::npos) << r.out;
+  EXPECT_LT(wall, 8.0);
+  r = run_gridlock({"cnf", "solve", dir + "/h.cnf", "--solver", "dpll", "--conflicts", "5"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("s UNKNOWN"), std::string::npos) << r.out;
+  auto ex = run_gridlock({"cnf", "solve", kExamples + "tiny-sat.cnf", "--solver", "exhaustive", "--conflicts", "5"});
+  EXPECT_EQ(ex.exit_code, 1);
+  EXPECT_EQ(ex.err, "gridlock: error: --conflicts applies to --solver cadical and dpll, not exhaustive\n");
+}
+
+// 19. One reading of the formats: UTF-8 in comments is fine in every
+// reader (before: refused in .grid only), a '+' sign nowhere (before:
+// accepted in .grid and times files only), messages name FILE:LINE and
+// show control bytes escaped (before: raw escape sequences reached the
+// terminal).
+TEST(HardeningCli, ReadersAgreeOnCommentsSignsAndControlBytes) {
+  std::string dir = test::temp_dir();
+  const std::string grid = test::write_file(dir + "/u.grid",
+                                            "c Gitter für Roboter: ✓\n# naïve\np grid 2 1 1 0\nn 0 0\nn 1 0\n"
+                                            "e 0 0 1 0\no a expand 0 0 +x\n");
+  auto r = run_gridlock({"solve", grid});
+  EXPECT_EQ(r.exit_code, 10) << r.err;
+  const std::string cnf = test::write_file(dir + "/u.cnf", "c Formel für alle ✓\np cnf 1 1\n1 0\n");
+  EXPECT_EQ(run_gridlock({"cnf", "solve", cnf}).exit_code, 10);
+  const std::string times = test::write_file(dir + "/u.times", "c Startzeit ✓\n# naïve\na 0\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--times", times}).exit_code, 10);
+  const std::string order = test::write_file(dir + "/u.order", "c Reihenfolge ✓\na\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--order-file", order}).exit_code, 10);
+  // UTF-8 outside a comment: refused alike, with FILE:LINE and the column.
+  const std::string bad_grid = test::write_file(dir + "/b.grid", "p grid 1 0 0 0\nn 0 0 ✓\n");
+  EXPECT_EQ(run_gridlock({"solve", bad_grid}).err,
+            "gridlock: error: " + bad_grid + ":2: binary input: byte 0xe2 at column 7\n");
+  const std::string bad_times = test::write_file(dir + "/b.times", "a 0 ✓\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--times", bad_times}).err,
+            "gridlock: error: " + bad_times + ":1: binary input: byte 0xe2 at column 5\n");
+  // '+3' is no number anywhere.
+  const std::string plus_grid = test::write_file(dir + "/p.grid", "p grid 1 0 0 0\nn +3 0\n");
+  EXPECT_EQ(run_gridlock({"solve", plus_grid}).err,
+            "gridlock: error: " + plus_grid + ":2: expected an integer coordinate, got '+3'\n");
+  const std::string plus_times = test::write_file(dir + "/p.times", "a +3\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--times", plus_times}).err,
+            "gridlock: error: " + plus_times + ":1: bad time '+3' (an integer or a fraction a/b)\n");
+  const std::string plus_cnf = test::write_file(dir + "/p.cnf", "p cnf 3 1\n+3 0\n");
+  auto pc = run_gridlock({"cnf", "solve", plus_cnf});
+  EXPECT_EQ(pc.exit_code, 1);
+  EXPECT_EQ(pc.err.rfind("gridlock: error: " + plus_cnf + ":2: ", 0), 0u) << pc.err;
+  // Unknown names are errors in every reader (times, order files), never skipped.
+  const std::string unknown_times = test::write_file(dir + "/x.times", "s YES\nv a 0\nv zz 1\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--times", unknown_times}).err,
+            "gridlock: error: " + unknown_times + ":3: unknown coupling 'zz'\n");
+  const std::string unknown_order = test::write_file(dir + "/x.order", "v a\nv zz\n");
+  EXPECT_EQ(run_gridlock({"check", grid, "--order-file", unknown_order}).err,
+            "gridlock: error: " + unknown_order + ":2: unknown coupling 'zz'\n");
+  // Control bytes in what the user typed are shown escaped.
+  auto c = run_gridlock({"solve", dir + "/no\x1b[2Jsuch.grid"});
+  EXPECT_EQ(c.exit_code, 1);
+  EXPECT_EQ(c.err.find('\x1b'), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("no\\x1b[2Jsuch.grid"), std::string::npos) << c.err;
+  auto o = run_gridlock({"fuzz", "--count", "7\x07"});
+  EXPECT_EQ(o.exit_code, 1);
+  EXPECT_EQ(o.err.find('\x07'), std::string::npos) << o.err;
+}
+
+// 20. Pictures escape what they show: TikZ labels are LaTeX text (before:
+// `q_1_2` inside $...$, a LaTeX error), the SVG title is XML-escaped.
+// `render --ascii` of an instance too large to draw is an error (before:
+// "too large" and exit 0); options that do not apply are refused.
+TEST(HardeningCli, PicturesEscapeNamesAndRefuseWhatTheyCannotDraw) {
+  std::string dir = test::temp_dir();
+  const std::string g = test::write_file(dir + "/t.grid",
+                                         "p grid 4 3 2 0\nn 0 0\nn 1 0\nn 2 0\nn 3 0\ne 0 0 1 0\ne 1 0 2 0\n"
+                                         "e 2 0 3 0\no q_1_2 expand 0 0 +x\no a~b expand 2 0 +x\n");
+  auto t = run_gridlock({"render", g, "--tikz"});
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find("{q\\_1\\_2}"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("{a\\textasciitilde{}b}"), std::string::npos) << t.out;
+  EXPECT_EQ(t.out.find("$q_1_2$"), std::string::npos);
+  auto svg = run_gridlock({"render", g, "--title", "</text><script>alert(1)</script>"});
+  ASSERT_EQ(svg.exit_code, 0) << svg.err;
+  EXPECT_EQ(svg.out.find("<script>"), std::string::npos);
+  EXPECT_NE(svg.out.find("&lt;/text&gt;&lt;script&gt;"), std::string::npos);
+  auto ti = run_gridlock({"render", g, "--ascii", "--title", "x"});
+  EXPECT_EQ(ti.exit_code, 1);
+  EXPECT_EQ(ti.err, "gridlock: error: --title applies to SVG pictures only, not --ascii or --tikz\n");
+  const std::string wide = expansion_row(dir + "/wide.grid", 300);
+  auto a = run_gridlock({"render", wide, "--ascii"});
+  EXPECT_EQ(a.exit_code, 1);
+  EXPECT_EQ(a.out, "");
+  EXPECT_EQ(a.err,
+            "gridlock: error: " + wide + ": too large for ASCII: 600 x 1 cells (at most 401 x 401; draw it as SVG)\n");
+  auto k = run_gridlock({"gadget", "order", "-k", "5"});
+  EXPECT_EQ(k.exit_code, 1);
+  EXPECT_EQ(k.err, "gridlock: error: --literals applies to the clause gadget only\n");
+  auto at = run_gridlock({"animate", g, "--order", "q_1_2 a~b", "--timeout", "5", "-o", dir + "/v.html"});
+  EXPECT_EQ(at.exit_code, 1);
+  EXPECT_EQ(at.err, "gridlock: error: --timeout applies to --solve only\n");
+  EXPECT_FALSE(fs::exists(dir + "/v.html"));
+  auto pn = run_gridlock({"verify", kExamples + "tiny-sat.cnf", "--picture-nodes", "10"});
+  EXPECT_EQ(pn.exit_code, 1);
+  EXPECT_EQ(pn.err, "gridlock: error: --picture-nodes applies with --pictures only\n");
+}
+
+// 21. --break-gadget draws a broken gadget or is refused: every kind, every
+// mutation, clause sizes 1 to 4. Before: 7 combinations printed "BROKEN
+// GADGET" over the unchanged gadget (the separation gadget with the other
+// mutations, separation-loose with the order gadget, ...).
+TEST(HardeningCli, BreakGadgetNeverLabelsTheSoundGadgetBroken) {
+  auto strip = [](const std::string& text) {  // the instance without its comments
+    std::string out, line;
+    std::istringstream in(text);
+    while (std::getline(in, line))
+      if (line.rfind("c ", 0) != 0) out += line + "\n";
+    return out;
+  };
+  int drawn = 0;
+  for (const std::string kind : {"variable", "clause", "order", "separation"})
+    for (const std::string k : {"1", "2", "3", "4"}) {
+      if (kind != "clause" && k != "3") continue;
+      std::vector<std::string> base = {"gadget", kind};
+      if (kind == "clause") base.insert(base.end(), {"-k", k});
+      const std::string sound = strip(run_gridlock(base).out);
+      ASSERT_FALSE(sound.empty());
+      for (const std::string m : {"variable-loose-y", "clause-loose", "clause-tight", "order-loose",
+                                  "order-drop-release", "separation-loose"}) {
+        SCOPED_TRACE(std::string(kind).append(" -k ").append(k).append(" ").append(m));
+        auto args = base;
+        args.insert(args.end(), {"--break-gadget", m});
+        auto r = run_gridlock(args);
+        if (r.exit_code == 0) {
+          EXPECT_NE(r.out.find("BROKEN GADGET (" + m + ")"), std::string::npos);
+          EXPECT_NE(strip(r.out), sound) << "labelled broken, drawn sound";
+          ++drawn;
+        } else {
+          EXPECT_EQ(r.exit_code, 1);
+          EXPECT_EQ(r.out, "");
+          EXPECT_EQ(r.err.rfind("gridlock: error: --break-gadget " + m + " ", 0), 0u) << r.err;
+        }
+      }
+    }
+  EXPECT_GE(drawn, 6);  // each mutation breaks its own gadget at least once
+}
+
+// 22. A Ctrl-C or kill during an atomic write leaves no temporary file (the
+// signal is held back until the rename), with the signal disposition a
+// terminal gives (default: the process ends). Before: a killed compile
+// left PATH.tmp.XXXXXX files of up to 108 MB.
+TEST(HardeningCli, SignalsDuringAWriteLeaveNoTemporaryFile) {
+  std::string dir = test::temp_dir();
+  std::string big = dir + "/big.cnf";
+  {
+    std::string text = "p cnf 60000 60000\n";
+    for (int v = 1; v <= 60000; ++v) text += std::to_string(v) + " -" + std::to_string(v % 60000 + 1) + " 0\n";
+    test::write_file(big, text);
+  }
+  for (int sig : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(sig);
+    const std::string out = dir + "/out" + std::to_string(sig);
+    fs::create_directories(out);
+    auto p = test::start_gridlock({"compile", big, "-o", out + "/big.grid"});
+    auto t0 = std::chrono::steady_clock::now();
+    bool seen = false;
+    while (!seen && seconds_since(t0) < 120) {
+      seen = !temp_files(out).empty();
+      if (!seen) std::this_thread::sleep_for(std::chrono::microseconds(500));
+      int status = 0;
+      if (!seen && waitpid(p.pid, &status, WNOHANG) == p.pid) {  // finished before we saw the write
+        p.pid = -1;
+        break;
+      }
+    }
+    if (p.pid < 0) {
+      ADD_FAILURE() << "compile ended before its temporary file was seen";
+      continue;
+    }
+    kill(p.pid, sig);
+    auto r = test::finish_gridlock(p);
+    EXPECT_TRUE(r.exit_code == 128 + sig || r.exit_code == 0) << r.exit_code << " " << r.err;
+    EXPECT_TRUE(temp_files(out).empty());
+  }
 }
 
 }  // namespace

@@ -260,5 +260,38 @@ TEST(AnimateBrowser, BeforeTheCollisionNoOverlap) {
   EXPECT_EQ(late["running"], nlohmann::json::array({"g1", "g2"}));
 }
 
+// Hostile names (issue 20): a title and a file name holding "</script>",
+// "<!--<script>", quotes and ampersands leave the page working (before: the
+// page stopped: the HTML parser read the embedded JSON as script data) and
+// are shown as the text they are.
+TEST(AnimateBrowser, HostileNamesKeepThePageWorking) {
+  const std::string chromium = chromium_path();
+  if (chromium.empty())
+    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
+  std::string dir = test::temp_dir();
+  const std::string grid = dir + "/x<!--<script>'\"&.grid";
+  std::filesystem::copy_file(kExamples + "model-case1-two-growths.grid", grid);
+  test::write_file(dir + "/t1", "g1 0\ng2 1/2\n");
+  const std::string title = "</script><!--<script>alert(1)</script> & \"q\" 'r' -->";
+  for (bool given : {true, false}) {
+    SCOPED_TRACE(given ? "--title" : "file name in the default title");
+    std::vector<std::string> args = {"animate", grid, "--times", dir + "/t1", "-o", dir + "/view.html"};
+    if (given) args.insert(args.end(), {"--title", title});
+    auto r = run_gridlock(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string html = test::read_file(dir + "/view.html");
+    EXPECT_EQ(html.find("<!--<script>"), std::string::npos);
+    const std::string dom = run_chromium(chromium, "--dump-dom", "file://" + dir + "/view.html#t=5/8");
+    nlohmann::json st = page_state(dom);
+    ASSERT_TRUE(st.is_object()) << "the page wrote no state: it stopped working";
+    EXPECT_TRUE(st["errors"].empty()) << st["errors"].dump();
+    EXPECT_EQ(st["running"], nlohmann::json::array({"g1", "g2"}));
+    const std::string shown = given ? "&lt;/script&gt;&lt;!--&lt;script&gt;alert(1)&lt;/script&gt; &amp;"
+                                    : "x&lt;!--&lt;script&gt;'\"&amp;.grid";
+    EXPECT_NE(dom.find("<h1 id=\"title\">"), std::string::npos);
+    EXPECT_NE(dom.find(shown), std::string::npos) << dom.substr(0, 2000);
+  }
+}
+
 }  // namespace
 }  // namespace gridlock

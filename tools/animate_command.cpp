@@ -41,6 +41,7 @@ int run_animate(const std::vector<std::string>& args) {
     return 0;
   int given = static_cast<int>(vm.count("order") + vm.count("order-file") + vm.count("times") + vm.count("solve"));
   if (given != 1) throw UserError("give exactly one of --order, --order-file, --times, --solve");
+  if (!vm.count("solve") && !vm["timeout"].defaulted()) throw UserError("--timeout applies to --solve only");
   const std::string path = vm["instance"].as<std::string>();
   const std::string out = vm["out"].as<std::string>();
   cli::refuse_overwriting_input(out, {path});

@@ -463,6 +463,8 @@ std::string escape_html(const std::string& s) {
     if (c == '<') out += "&lt;";
     else if (c == '>') out += "&gt;";
     else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else if (c == '\'') out += "&#39;";
     else out += c;
   }
   return out;
@@ -499,13 +501,18 @@ nlohmann::json resizing_json(const Regions& regions) {
   return resizing;
 }
 
-// Inside <script>, "</" could end the element: escape it (JSON allows "\/").
+// Inside <script>, "</script", and "<!--" followed by "<script", change how
+// the element ends (the HTML parser's script data states): the page would
+// stop working. In JSON, '<', '>' and '&' occur only inside strings, where
+// \u003c, \u003e and \u0026 mean the same: none of them is left in the page.
 std::string script_safe(const std::string& data) {
   std::string safe;
   safe.reserve(data.size());
-  for (size_t i = 0; i < data.size(); ++i) {
-    if (data[i] == '<' && i + 1 < data.size() && data[i + 1] == '/') safe += "<\\";
-    else safe += data[i];
+  for (char c : data) {
+    if (c == '<') safe += "\\u003c";
+    else if (c == '>') safe += "\\u003e";
+    else if (c == '&') safe += "\\u0026";
+    else safe += c;
   }
   return safe;
 }

@@ -32,6 +32,7 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
   opt.strict_count = strict_count;
   long header_line = 0;
   opt.header_line = &header_line;
+  protect_input(path);
   {
     Activity act(path == "-" ? "<stdin>" : path, "reading the formula");
     if (auto err = read_dimacs_file(path, f, opt)) throw UserError(*err);
@@ -48,10 +49,14 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
                                    ": at most " + std::to_string(kMaxUnusedVariables) +
                                    " unused variables beyond the last one used are accepted"});
   if (use == FormulaUse::Compile) {
-    if (uint64_t nodes = compiled_node_count(f); nodes > static_cast<uint64_t>(kMaxNodes))
+    // Both models: the continuous reduction draws 2 nodes more, and verify,
+    // fuzz and gen-instances may compile either (never "internal:" midway).
+    const uint64_t discrete = compiled_node_count(f), continuous = compiled_node_count(f, ReductionModel::Continuous);
+    if (std::max(discrete, continuous) > static_cast<uint64_t>(kMaxNodes))
       throw UserError(Diagnostic{name, header_line,
-                                 "the compiled instance would have " + std::to_string(nodes) +
-                                     " nodes (43n + 5L + 15m - 11), more than the .grid format's limit of " +
+                                 "the compiled instance would have " + std::to_string(discrete) +
+                                     " nodes (43n + 5L + 15m - 11; " + std::to_string(continuous) +
+                                     " in the continuous model), more than the .grid format's limit of " +
                                      std::to_string(kMaxNodes)});
   }
   return f;
@@ -59,6 +64,7 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
 
 Instance load_instance(const std::string& path) {
   Instance inst;
+  protect_input(path);
   Activity act(path == "-" ? "<stdin>" : path, "reading the instance");
   if (auto err = read_instance_file(path, inst)) throw UserError(*err);
   return inst;
@@ -80,6 +86,54 @@ std::string command_of(const std::string& usage) {
 }
 }  // namespace
 
+namespace {
+// The options that name files a command reads, and those that name outputs.
+const char* const kInputOptions[] = {"instance", "formula",    "file",     "inputs",
+                                     "times",    "order-file", "schedule", "model"};
+const char* const kOutputOptions[] = {"output", "out", "svg", "json-out", "reproducers", "pictures"};
+
+std::vector<std::string> option_paths(const po::variables_map& vm, const char* name) {
+  if (!vm.count(name)) return {};
+  const boost::any& v = vm[name].value();
+  if (const auto* one = boost::any_cast<std::string>(&v)) return {*one};
+  if (const auto* many = boost::any_cast<std::vector<std::string>>(&v)) return *many;
+  return {};
+}
+
+// Is output option `name` of `command` a folder (its files go below it)?
+bool is_folder_option(const std::string& name, const std::string& command) {
+  return name == "reproducers" || name == "pictures" ||
+         (name == "out" && (command == "fuzz" || command == "gen-instances"));
+}
+}  // namespace
+
+void check_output_path(const std::string& option, const std::string& path, bool folder) {
+  if (path.empty()) throw UserError("--" + option + ": empty path: give a " + (folder ? "folder" : "file"));
+  if (path == "-") return;
+  std::error_code ec;
+  const fs::path abs = fs::absolute(path, ec).lexically_normal();
+  if (ec) return;  // the write itself reports what is wrong
+  const fs::path root = abs.root_path();
+  const bool is_root = abs == root || abs.relative_path().empty() || abs.relative_path() == ".";
+  if (is_root) throw UserError("--" + option + ": '" + path + "' is the file-system root: give a folder below it");
+  if (!folder && abs.parent_path() == root)
+    throw UserError("--" + option + ": '" + path + "' is at the file-system root: give a file in a folder below it");
+}
+
+void guard_paths(const po::variables_map& vm, const std::string& command) {
+  std::vector<std::string> inputs;
+  for (const char* name : kInputOptions)
+    for (const auto& p : option_paths(vm, name)) {
+      protect_input(p);
+      inputs.push_back(p);
+    }
+  for (const char* name : kOutputOptions)
+    for (const auto& p : option_paths(vm, name)) {
+      check_output_path(name, p, is_folder_option(name, command));
+      refuse_overwriting_input(p, inputs);
+    }
+}
+
 bool parse_args(const std::vector<std::string>& args, const po::options_description& visible,
                 const po::positional_options_description& positional, po::variables_map& vm, const std::string& usage,
                 const std::string& description, const po::options_description* hidden) {
@@ -93,6 +147,7 @@ bool parse_args(const std::vector<std::string>& args, const po::options_descript
       return false;
     }
     po::notify(vm);
+    guard_paths(vm, command_of(usage));
   } catch (const po::required_option& e) {
     // Required options are our positional arguments: name them as such.
     std::string name = e.get_option_name();
@@ -155,6 +210,7 @@ void write_text_file(const std::string& path, const std::string& text) {
 }
 
 void write_text_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  DeferSignals hold;  // the staged files are renamed or removed before a signal acts
   std::vector<StagedFile> staged;
   auto discard_all = [&] {
     for (auto& f : staged) discard_file(f);
@@ -185,6 +241,27 @@ void refuse_overwriting_input(const std::string& out, const std::vector<std::str
     bool same = fs::path(out).lexically_normal() == fs::path(in).lexically_normal() || fs::equivalent(out, in, ec);
     if (same) throw UserError(Diagnostic{out, 0, "output would overwrite the input " + in});
   }
+  protect_input_check(out);
+}
+
+void protect_input_check(const std::string& out) {
+  if (std::string in = protected_input_at(out); !in.empty())
+    throw UserError(Diagnostic{out, 0, "output would overwrite the input " + in});
+}
+
+std::string printable(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    const auto b = static_cast<unsigned char>(c);
+    if (b >= 0x20 && b != 0x7f) {
+      out += c;
+      continue;
+    }
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02x", b);
+    out += hex;
+  }
+  return out;
 }
 
 std::string stdout_error() {

@@ -23,8 +23,9 @@ namespace po = boost::program_options;
 //   Solve    (cnf solve, to-lsat, lift, verify) at most kMaxUnusedVariables
 //            declared variables beyond the largest one a clause uses: the
 //            header count must not drive allocation beyond what the file holds
-//   Compile  Solve's check, and the compiled instance's node count
-//            (43n + 5L + 15m - 11) within the .grid format's kMaxNodes
+//   Compile  Solve's check, and the compiled instance's node count in both
+//            models (43n + 5L + 15m - 11, and 2 more in the continuous one)
+//            within the .grid format's kMaxNodes
 // A failed check is "FILE:LINE: ..." with the header's line.
 enum class FormulaUse { Read, Solve, Compile };
 inline constexpr int64_t kMaxUnusedVariables = int64_t{1} << 20;
@@ -68,6 +69,24 @@ void write_text_files(const std::vector<std::pair<std::string, std::string>>& fi
 // through links). "-" never conflicts. Call it before reading the inputs.
 void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs);
 
+// Inputs are sacred (docs/errors.md). parse_args calls guard_paths on every
+// command line: each file named by an input option (instance, formula, file,
+// inputs, times, order-file, schedule, model) is protected
+// (common/atomic_file.hpp's protect_input: no write, rename or removal of
+// that file by device and inode, wherever the write comes from), and each
+// output option (output, out, svg, json-out, reproducers, pictures) goes
+// through check_output_path and refuse_overwriting_input. load_formula and
+// load_instance protect what they read as well (files found in folders).
+void guard_paths(const po::variables_map& vm, const std::string& command);
+
+// Throws UserError("--OPTION: ...") for an empty output path, the file-system
+// root, or (unless folder) a file directly in the root. "-" is fine.
+void check_output_path(const std::string& option, const std::string& path, bool folder);
+
+// Throws UserError("OUT: output would overwrite the input IN") if out names
+// a file protected as an input (see guard_paths).
+void protect_input_check(const std::string& out);
+
 // The schedule given by exactly one of --order "Q..." (names in order),
 // --order-file F or --times F (start times) in vm, for inst; nullopt if none
 // of the three is given. Errors name the file and line (UserError).
@@ -77,6 +96,11 @@ std::optional<Schedule> schedule_from_options(const boost::program_options::vari
 // flush makes the command fail with "<stdout>: write failed: REASON", exit 1.
 // Returns the error message, or "" if stdout is fine.
 std::string stdout_error();
+
+// text with every control byte (below 0x20, and 0x7f) written as \xNN, so
+// that an error message never moves the cursor, recolours or clears the
+// user's terminal (a file or option value may hold anything). UTF-8 stays.
+std::string printable(const std::string& text);
 
 // --- Interruption (SIGINT, SIGTERM) ---------------------------------------
 // install_stop_handlers() makes SIGINT and SIGTERM set the stop request of

@@ -290,9 +290,9 @@ int run_to_lsat(const std::vector<std::string>& args) {
 // ---------------------------------------------------------------- solve
 int run_solve(const std::vector<std::string>& args) {
   po::options_description opts("options");
-  opts.add_options()("help,h", "show this help")("conflicts", po::value<std::string>(),
-                                                 "give up (s UNKNOWN, exit 0) after this many conflicts (CaDiCaL)")(
-      "time", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many seconds (CaDiCaL)")(
+  opts.add_options()("help,h", "show this help")(
+      "conflicts", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many conflicts (cadical, dpll)")(
+      "time", po::value<std::string>(), "give up (s UNKNOWN, exit 0) after this many seconds (every solver)")(
       "solver", po::value<std::string>()->default_value("cadical"),
       "cadical, or an independent oracle: dpll (small formulas), exhaustive (at most 24 variables)")(
       "json", "print one JSON object instead of c/s/v lines");
@@ -318,21 +318,22 @@ int run_solve(const std::vector<std::string>& args) {
     r = solve_sat(f, lim);
     name = sat_solver_name();
   } else if (solver == "dpll") {
-    r = dpll_sat(f);
+    r = dpll_sat(f, 1000000, lim);
     name = "gridlock DPLL (unit propagation, no learning; gives up after 10^6 decisions)";
   } else if (solver == "exhaustive") {
     if (f.num_vars > kExhaustiveMaxVars)
       throw UserError(Diagnostic{path, 0,
                                  "--solver exhaustive takes at most " + std::to_string(kExhaustiveMaxVars) +
                                      " variables, the formula has " + std::to_string(f.num_vars)});
-    r = exhaustive_sat(f);
+    if (vm.count("conflicts")) throw UserError("--conflicts applies to --solver cadical and dpll, not exhaustive");
+    r = exhaustive_sat(f, lim);
     name = "gridlock exhaustive search";
   } else {
     throw UserError("cnf solve: unknown solver '" + solver + "' (cadical, dpll or exhaustive)");
   }
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.3f", r.seconds);
-  ans.comment("solver: " + name + (solver == "cadical" ? std::string(", ") + secs + " s" : ""));
+  ans.comment("solver: " + name + ", " + secs + " s");
   ans.data()["solver"] = name;
   if (r.status == Verdict::Yes) {
     if (!satisfies(f, r.model)) throw std::logic_error(name + " returned a model that falsifies the formula");

@@ -1,8 +1,12 @@
 // gridlock collide: Colliding Schedule (is there a schedule that collides?).
+#include <algorithm>
+
 #include "collide/collide.hpp"
+#include "common/limits.hpp"
 #include "lattice/simulate.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
+#include "tools/options.hpp"
 #include "tools/output.hpp"
 #include "tools/user_error.hpp"
 
@@ -19,6 +23,7 @@ po::options_description collide_options() {
       "auto, tree (no couplings: centroid decomposition), tree-pairwise (no couplings: all pairs), "
       "pairwise (any instance: exact per-pair tests)")(
       "svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")(
+      "timeout", po::value<std::string>(), "give up after S seconds, reading included (s UNKNOWN, exit 0)")(
       "json", "print one JSON object instead of c/s/v lines");
   return opts;
 }
@@ -73,6 +78,7 @@ int report_collision(Answer& ans, const Instance& inst, const CollideResult& res
 }
 
 int run_collide(const std::vector<std::string>& args) {
+  const Deadline since_start;  // --timeout counts from here: reading the instance is part of it
   po::options_description opts = collide_options();
   po::variables_map vm;
   if (!cli::parse_args_one_input(
@@ -81,7 +87,7 @@ int run_collide(const std::vector<std::string>& args) {
           "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
           "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
           "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
-          "s NO (exit 20): no schedule collides."))
+          "s NO (exit 20): no schedule collides. s UNKNOWN (exit 0): --timeout reached first."))
     return 0;
   const std::string model_name = vm["model"].as<std::string>();
   const TimeModel model = time_model_arg(model_name);
@@ -89,16 +95,22 @@ int run_collide(const std::vector<std::string>& args) {
 
   const std::string path = vm["instance"].as<std::string>();
   if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
+  const double seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
   Instance inst = cli::load_instance(path);
+  const Deadline deadline(seconds > 0 ? std::max(seconds - since_start.elapsed(), 1e-6) : 0);
   Answer ans("collide", vm.count("json") > 0);
   ans.comment("gridlock collide " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
               " couplings; " + model_name + " model");
   CollideResult res;
   try {
-    res = find_collision(inst, model, method);
+    res = find_collision(inst, model, method, seconds > 0 ? &deadline : nullptr);
   } catch (const std::invalid_argument& e) {
     throw UserError(e.what());
+  } catch (const LimitReached&) {
+    ans.comment("limit reached before an answer (--timeout " + vm["timeout"].as<std::string>() + ")");
+    ans.data()["model"] = model_name;
+    return ans.finish(Verdict::Unknown);
   }
   ans.comment("algorithm: " + res.algorithm + " (" + res.complexity + ")");
   if (res.stats.pairs)

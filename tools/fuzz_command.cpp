@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
@@ -18,6 +19,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/set_folder.hpp"
 #include "tools/user_error.hpp"
 #include "verify/campaign.hpp"
 
@@ -156,11 +158,26 @@ std::string status_line(const FuzzTally& t) {
 }
 
 // Saves a finding as a replayable folder, then reports it (c lines).
+// A finding that cannot be saved is printed in full on stderr first (never
+// lost), then the command fails naming the file it could not write.
 void save_finding(const FuzzRun& run, const FuzzFinding& f, const VerifyResult& shrunk) {
   const std::string dir = finding_folder(run, f.index);
-  write_reproducer(shrunk, dir, run.c.verify);
-  cli::write_text_file(dir + "/original.cnf", to_dimacs(f.original));
-  write_result_animations(shrunk, dir);  // watch the disagreeing schedules run
+  std::optional<UserError> failed;
+  try {
+    if (auto err = write_reproducer(shrunk, dir, run.c.verify)) throw UserError(*err);
+    cli::write_text_file(dir + "/original.cnf", to_dimacs(f.original));
+    write_result_animations(shrunk, dir);  // watch the disagreeing schedules run
+  } catch (const UserError& e) {
+    failed = e;
+  }
+  if (failed) {
+    std::cerr << "c finding NOT saved (" << failed->what() << "): formula " << f.index << ": " << f.problem
+              << "\nc replay: " << replay_command(run, f.index) << "\nc shrunk formula:\n";
+    std::istringstream lines(to_dimacs(f.shrunk));
+    for (std::string l; std::getline(lines, l);) std::cerr << "c   " << l << "\n";
+    std::cerr << std::flush;
+    throw *failed;
+  }
   if (run.json) return;
   std::cout << "c shrunk in " << f.shrink.tries << " tries to " << f.shrunk.num_vars << " variables, "
             << f.shrunk.clauses.size() << " clauses: " << f.problem << "\n";
@@ -223,6 +240,7 @@ int run_fuzz(const std::vector<std::string>& args) {
                        &hidden))
     return 0;
   const FuzzRun run = read_fuzz_options(vm);
+  cli::check_folder_can_be_made(run.out);  // findings survive: checked before any work
   if (!run.json) std::cout << "c " << fuzz_header(run) << std::endl;
 
   // Each formula allocates and frees the same few large tables (instance,

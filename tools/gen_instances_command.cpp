@@ -17,6 +17,8 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/run_identity.hpp"
+#include "tools/set_folder.hpp"
 #include "tools/user_error.hpp"
 #include "verify/instance_set.hpp"
 
@@ -26,64 +28,15 @@ namespace {
 namespace fs = std::filesystem;
 namespace po = boost::program_options;
 
-// Creates out, or checks that it is empty. With force, a non-empty folder is
-// accepted after removing what a previous set left there (manifest.json and
-// top-level *.grid, *.cnf, *.schedule files, and temporary *.tmp.* files);
-// anything else in it stays.
-void prepare_output_folder(const std::string& out, bool force) {
-  std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-    throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
-  fs::create_directories(out, ec);
-  if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder: " + ec.message()});
-  std::vector<fs::path> old;
-  bool non_empty = false;
-  for (const auto& e : fs::directory_iterator(out, ec)) {
-    non_empty = true;
-    const std::string name = e.path().filename().string();
-    const std::string ext = e.path().extension().string();
-    if (e.is_regular_file() && (name == "manifest.json" || ext == ".grid" || ext == ".cnf" || ext == ".schedule" ||
-                                name.find(".tmp.") != std::string::npos))
-      old.push_back(e.path());
-  }
-  if (ec) throw UserError(Diagnostic{out, 0, "cannot list folder: " + ec.message()});
-  if (!non_empty) return;
-  if (!force) throw UserError(Diagnostic{out, 0, "folder is not empty (give --force to replace the set in it)"});
-  // The manifest first: a folder is never described by a stale manifest.
-  std::sort(old.begin(), old.end(), [](const fs::path& a, const fs::path& b) {
-    return (a.filename() == "manifest.json") > (b.filename() == "manifest.json");
-  });
-  for (const auto& p : old)
-    if (!fs::remove(p, ec) || ec) throw UserError(Diagnostic{p.string(), 0, "cannot remove: " + ec.message()});
-}
-
-// A sharded run shares its folder with the other shards of the set: the
-// folder may hold their files, but not this shard's manifest (a shard
-// written twice), unless force, which removes that manifest first.
-void prepare_shard_folder(const std::string& out, const std::string& manifest_name, bool force) {
-  std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-    throw UserError(Diagnostic{out, 0, "exists and is not a folder"});
-  fs::create_directories(out, ec);
-  if (ec) throw UserError(Diagnostic{out, 0, "cannot create folder: " + ec.message()});
-  const fs::path manifest = fs::path(out) / manifest_name;
-  if (!fs::exists(manifest, ec)) return;
-  if (!force)
-    throw UserError(
-        Diagnostic{manifest.string(), 0, "this shard was already written here (give --force to write it again)"});
-  if (!fs::remove(manifest, ec) || ec)
-    throw UserError(Diagnostic{manifest.string(), 0, "cannot remove: " + ec.message()});
-}
-
 po::options_description gen_instances_options() {
   po::options_description opts("options");
   opts.add_options()("help,h", "show this help")("out,o", po::value<std::string>()->required(),
                                                  "folder to write (created; must be empty unless --force): "
                                                  "instances, formulas, witnesses, manifest.json")(
       "force",
-      "write into a non-empty folder: the files of a previous set there (manifest.json, *.grid, *.cnf, "
-      "*.schedule) are removed first")("seed", po::value<std::string>()->default_value("1"),
-                                       "seed of the random formulas")(
+      "write into a non-empty folder: the files a previous gridlock run wrote there (listed in its "
+      "manifests and ledger) are removed first; nothing else")("seed", po::value<std::string>()->default_value("1"),
+                                                               "seed of the random formulas")(
       "threshold", po::value<std::string>()->default_value("10"), "random 3-SAT formulas at the threshold ratio 4.26")(
       "lsat", po::value<std::string>()->default_value("10"), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")(
       "vars", po::value<std::string>()->default_value("12"), "variables of each random formula (3 to 1000)")(
@@ -136,10 +89,12 @@ InstanceSetPlan read_plan(const po::variables_map& vm, std::string& model_name) 
   plan.models.clear();
   if (model_name != "continuous") plan.models.push_back(ReductionModel::Discrete);
   if (model_name != "discrete") plan.models.push_back(ReductionModel::Continuous);
-  if (vm.count("formula"))
+  if (vm.count("formula")) {
+    cli::refuse_name_clashes(vm["formula"].as<std::vector<std::string>>(), "the files given-NAME.*");
     for (const auto& path : vm["formula"].as<std::vector<std::string>>())
       plan.given.push_back({"given-" + fs::path(path).stem().string(), "given " + path,
                             cli::load_formula(path, true, cli::FormulaUse::Compile), 0});
+  }
   return plan;
 }
 
@@ -173,7 +128,25 @@ nlohmann::json entry_json(const SetInstance& e) {
   return j;
 }
 
-nlohmann::json manifest_json(const InstanceSetPlan& plan, const std::string& model_name, const InstanceSetTally& t) {
+// The run's identity: every option that changes the set, and the given
+// formulas with their content hashes. Not the split (--shard K/N): instance
+// i is the same in every split, so all shards and the unsharded run share
+// the identity (and may share a folder: names never clash, files agree).
+nlohmann::json set_run(const po::variables_map& vm, const InstanceSetPlan& plan, const std::string& model_name) {
+  nlohmann::json options = {{"seed", std::to_string(plan.seed)},
+                            {"vars", plan.vars},
+                            {"threshold", plan.threshold},
+                            {"lsat", plan.lsat},
+                            {"yes", plan.want_yes},
+                            {"no", plan.want_no},
+                            {"timeout", plan.sat_seconds},
+                            {"model", model_name}};
+  const auto given = vm.count("formula") ? vm["formula"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  return cli::run_json("gen-instances", options, cli::input_list(given));
+}
+
+nlohmann::json manifest_json(const InstanceSetPlan& plan, const std::string& model_name, const InstanceSetTally& t,
+                             const nlohmann::json& run) {
   nlohmann::json entries = nlohmann::json::array();
   for (const SetInstance& e : t.instances) entries.push_back(entry_json(e));
   nlohmann::json manifest;
@@ -193,6 +166,8 @@ nlohmann::json manifest_json(const InstanceSetPlan& plan, const std::string& mod
   manifest["interrupted"] = t.interrupted;
   manifest["shard"] = plan.shard.str();
   if (!plan.mix()) manifest["planned"] = plan.planned();
+  manifest["run"] = run;
+  manifest["run_id"] = cli::run_id(run);
   manifest["instances"] = entries;
   return manifest;
 }
@@ -213,8 +188,8 @@ int run_gen_instances(const std::vector<std::string>& args) {
   const std::string manifest_name = shard.n == 1 ? "manifest.json"
                                                  : "manifest-shard-" + std::to_string(shard.k) + "-of-" +
                                                        std::to_string(shard.n) + ".json";
-  if (shard.n == 1) prepare_output_folder(out, vm.count("force") > 0);
-  else prepare_shard_folder(out, manifest_name, vm.count("force") > 0);
+  const cli::SetFolder folder{out, shard.k, shard.n, set_run(vm, plan, model_name)};
+  cli::prepare_set_folder(folder, manifest_name, vm.count("force") > 0);
 
   const Deadline clock;  // only its clock: the progress line's seconds
   cli::ProgressLine progress(true);
@@ -230,16 +205,14 @@ int run_gen_instances(const std::vector<std::string>& args) {
     std::cout << "c " << name << ": skipped, CaDiCaL did not decide it within --timeout " << plan.sat_seconds << " s"
               << std::endl;
   };
-  events.write = [&](const std::string& file, const std::string& text) {
-    cli::write_text_file(out + "/" + file, text);
-  };
+  events.write = [&](const std::string& file, const std::string& text) { cli::write_set_file(folder, file, text); };
   events.instance = [&](const SetInstance& e) {
     std::cout << "c " << e.name << ": " << (e.yes ? "YES" : "NO") << ", " << e.nodes << " nodes, " << e.couplings
               << " couplings" << std::endl;
   };
   const InstanceSetTally t = make_instance_set(plan, events);
 
-  const nlohmann::json manifest = manifest_json(plan, model_name, t);
+  const nlohmann::json manifest = manifest_json(plan, model_name, t, folder.run);
   events.write(manifest_name, manifest.dump(2) + "\n");  // last: it lists only files already in place
   cli::write_json_out(vm, manifest);
   std::cout << "c wrote " << t.instances.size() << " instances (" << t.yes << " YES, " << t.no << " NO) and " << out

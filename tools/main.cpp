@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
   auto& registry = gridlock::command_registry();
   auto it = registry.find(name);
   if (it == registry.end()) {
-    std::cerr << "gridlock: error: unknown subcommand '" << name << "' (see 'gridlock --help')\n";
+    std::cerr << "gridlock: error: unknown subcommand '" << gridlock::cli::printable(name)
+              << "' (see 'gridlock --help')\n";
     return 1;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
     code = it->second.run(args);
   } catch (const gridlock::UserError& e) {
     std::cout.flush();
-    std::cerr << "gridlock: error: " << e.what() << '\n';
+    std::cerr << "gridlock: error: " << gridlock::cli::printable(e.what()) << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     std::cout.flush();
@@ -73,7 +74,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     // Not a user error: a bug or a limit of ours. Still no crash, still exit 1.
     std::cout.flush();
-    std::cerr << "gridlock: error: internal: " << e.what() << '\n';
+    std::cerr << "gridlock: error: internal: " << gridlock::cli::printable(e.what()) << '\n';
     return 1;
   }
   // Output lost is never a success: a failed write to standard output (a

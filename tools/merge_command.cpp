@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/atomic_file.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/user_error.hpp"
@@ -26,6 +27,7 @@ struct ShardFile {
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw UserError(Diagnostic{path, 0, what}); }
 
 ShardFile load(const std::string& path) {
+  protect_input(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot read file");
   std::stringstream ss;
@@ -99,7 +101,7 @@ json merge_fuzz(const std::vector<ShardFile>& files) {
 }
 
 json merge_verify(const std::vector<ShardFile>& files) {
-  check_complete(files, {"inputs", "model"});
+  check_complete(files, {"inputs", "model", "run_id"});
   json out = files[0].j;
   out["shard"] = "0/1";
   json rows = json::array();
@@ -111,6 +113,11 @@ json merge_verify(const std::vector<ShardFile>& files) {
   if (rows.size() != inputs)
     throw UserError("merge: the shards hold " + std::to_string(rows.size()) + " formulas, the run has " +
                     std::to_string(inputs));
+  // Each input exactly once (shards of one run split the list; a row of
+  // another list would show one formula twice and drop another).
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (!rows[i].contains("index") || rows[i]["index"] != i)
+      throw UserError("merge: formula " + std::to_string(i) + " is missing or given twice in the shards");
   out["formulas"] = rows;
   json summary = json::object();
   for (const auto& [key, v] : files[0].j["summary"].items()) {
@@ -124,7 +131,7 @@ json merge_verify(const std::vector<ShardFile>& files) {
 }
 
 json merge_instances(const std::vector<ShardFile>& files) {
-  check_complete(files, {"generator", "problem", "seed", "vars", "planned"});
+  check_complete(files, {"generator", "problem", "seed", "vars", "planned", "run_id"});
   json out = files[0].j;
   out["shard"] = "0/1";
   json entries = json::array();

@@ -23,11 +23,15 @@ int run_render(const std::vector<std::string>& args) {
           "Draws an instance: nodes, edges, operations as arrows coloured by coupling, the anchor."))
     return 0;
   if (vm.count("ascii") && vm.count("tikz")) throw UserError("give at most one of --ascii and --tikz");
+  if ((vm.count("ascii") || vm.count("tikz")) && !vm["title"].defaulted())
+    throw UserError("--title applies to SVG pictures only, not --ascii or --tikz");
   cli::refuse_overwriting_input(vm["output"].as<std::string>(), {vm["instance"].as<std::string>()});
   Instance inst = cli::load_instance(vm["instance"].as<std::string>());
   cli::Activity act(vm["instance"].as<std::string>(), "drawing the instance");
   std::string text;
   if (vm.count("ascii")) {
+    if (std::string why = ascii_too_large(inst); !why.empty())
+      throw UserError(Diagnostic{vm["instance"].as<std::string>(), 0, why});
     text = render_ascii(inst);
   } else if (vm.count("tikz")) {
     text = render_tikz(inst);

@@ -23,6 +23,8 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/run_identity.hpp"
+#include "tools/set_folder.hpp"
 #include "tools/user_error.hpp"
 #include "verify/campaign.hpp"
 #include "verify/verify.hpp"
@@ -226,12 +228,32 @@ std::string summary_line(const VerifyTally& t) {
   return summary;
 }
 
-nlohmann::json verify_json(const VerifyCampaign& c, size_t inputs, nlohmann::json rows, const VerifyTally& t) {
+// The run's identity (tools/run_identity.hpp): what changes the answers,
+// and the input list with content hashes ("-": the formula as read); not
+// the split, which merge checks itself.
+nlohmann::json verify_run(const VerifyCampaign& c, const std::vector<std::string>& files,
+                          const std::vector<Formula>& formulas) {
+  nlohmann::json inputs = nlohmann::json::array();
+  for (size_t i = 0; i < files.size(); ++i)
+    inputs.push_back(files[i] == "-" ? cli::input_list({"-"}, to_dimacs(formulas[i]))[0]
+                                     : cli::input_list({files[i]})[0]);
+  const nlohmann::json options = {{"model", verify_model_name(c.verify.model)},
+                                  {"direct", c.verify.direct},
+                                  {"break_gadget", mutation_name(c.verify.mutation)},
+                                  {"timeout", c.verify.solve_seconds},
+                                  {"max_states", c.verify.max_states}};
+  return cli::run_json("verify", options, inputs);
+}
+
+nlohmann::json verify_json(const VerifyCampaign& c, size_t inputs, nlohmann::json rows, const VerifyTally& t,
+                           const nlohmann::json& run) {
   nlohmann::json j;
   j["command"] = "verify";
   j["model"] = verify_model_name(c.verify.model);
   j["shard"] = c.shard.str();
   j["inputs"] = inputs;
+  j["run"] = run;
+  j["run_id"] = cli::run_id(run);
   j["formulas"] = std::move(rows);
   j["summary"] = {{"formulas", t.formulas},
                   {"sat", t.sat},
@@ -243,6 +265,19 @@ nlohmann::json verify_json(const VerifyCampaign& c, size_t inputs, nlohmann::jso
   j["interrupted"] = t.interrupted;
   j["exit_code"] = t.interrupted ? cli::interrupted_exit_code() : t.disagree ? 1 : 0;
   return j;
+}
+
+// A disagreement whose reproducer could not be written is printed in full
+// on stderr (never lost), then the command fails naming the file.
+void report_unsaved(const VerifyTally& t, const std::vector<std::string>& files, const std::vector<Formula>& formulas) {
+  if (t.unsaved.empty()) return;
+  for (const auto& [i, err] : t.unsaved) {
+    std::cerr << "c disagreement on " << files[i] << " NOT saved (" << err.str() << "); the formula:\n";
+    std::istringstream lines(to_dimacs(formulas[i]));
+    for (std::string l; std::getline(lines, l);) std::cerr << "c   " << l << "\n";
+  }
+  std::cerr << std::flush;
+  throw UserError(t.unsaved.front().second);
 }
 
 int run_verify(const std::vector<std::string>& args) {
@@ -266,7 +301,11 @@ int run_verify(const std::vector<std::string>& args) {
   v.json = vm.count("json") > 0;
   v.rows = v.json || vm.count("json-out");
   if (vm.count("pictures")) v.pictures = vm["pictures"].as<std::string>();
+  if (!v.pictures && !vm["picture-nodes"].defaulted()) throw UserError("--picture-nodes applies with --pictures only");
   c.reproducers = vm["reproducers"].as<std::string>();
+  // Findings survive: the folders are checked before any work.
+  cli::check_folder_can_be_made(c.reproducers);
+  if (v.pictures) cli::check_writable_folder(*v.pictures);
   const std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
   c.shard = cli::shard_arg(vm);
   // Read everything first: a bad file is reported before any work is done.
@@ -286,10 +325,11 @@ int run_verify(const std::vector<std::string>& args) {
   };
   const VerifyTally t = run_verify_campaign(formulas, files, c, events);
   act.reset();
-  const nlohmann::json j = verify_json(c, files.size(), std::move(rows), t);
+  const nlohmann::json j = verify_json(c, files.size(), std::move(rows), t, verify_run(c, files, formulas));
   cli::write_json_out(vm, j);
   if (v.json) std::cout << j.dump() << std::endl;
   else std::cout << "summary: " << summary_line(t) << std::endl;
+  report_unsaved(t, files, formulas);
   if (t.interrupted) return cli::interrupted_exit_code();
   if (t.disagree)
     throw UserError("verify: " + std::to_string(t.disagree) + " disagreement" + (t.disagree > 1 ? "s" : "") +

@@ -105,8 +105,12 @@ VerifyTally run_verify_campaign(const std::vector<Formula>& formulas, const std:
     const FormulaStatus s = count(r, t);
     if (s == FormulaStatus::Disagree && !c.reproducers.empty()) {
       const std::string dir = c.reproducers + "/" + formula_stem(names[i]);
-      write_reproducer(r, dir, c.verify);
-      r.problem += " (reproducer: " + dir + ")";
+      if (auto err = write_reproducer(r, dir, c.verify)) {
+        r.problem += " (reproducer NOT written: " + err->str() + ")";
+        t.unsaved.emplace_back(i, *err);
+      } else {
+        r.problem += " (reproducer: " + dir + ")";
+      }
     }
     if (events.result) events.result(i, r, s);
   }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cnf/formula.hpp"
@@ -97,6 +98,10 @@ struct VerifyTally {
   size_t certificates = 0;  // certificates checked and valid
   double ms = 0;            // the formulas' own times (sat, compile, solvers)
   bool interrupted = false;
+  // Disagreements whose reproducer could not be written: (formula index,
+  // the write's Diagnostic). The command reports them (the finding in full
+  // on stderr) and fails with the first Diagnostic.
+  std::vector<std::pair<size_t, Diagnostic>> unsaved;
 };
 
 struct VerifyEvents {
@@ -104,7 +109,8 @@ struct VerifyEvents {
   // activity in progress, for an out-of-memory report).
   std::function<void(size_t i)> start;
   // Formula i checked and counted. For a disagreement with a reproducer
-  // folder, r.problem ends with " (reproducer: DIR)".
+  // folder, r.problem ends with " (reproducer: DIR)", or with
+  // " (reproducer NOT written: DIAGNOSTIC)" when writing it failed.
   std::function<void(size_t i, const VerifyResult& r, FormulaStatus s)> result;
 };
 

@@ -245,10 +245,13 @@ VerifyResult verify_formula(const Formula& f, const std::string& name, const Ver
   return Verifier().verify(f, name, opt);
 }
 
-std::string write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt) {
-  std::filesystem::create_directories(dir);
+MaybeError write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return Diagnostic{dir, 0, "cannot create folder: " + ec.message()};
+  MaybeError first;  // the first failure; later writes are skipped
   auto write = [&](const std::string& file, const std::string& text) {
-    if (auto err = write_file_atomic(dir + "/" + file, text)) throw std::runtime_error(err->str());
+    if (!first) first = write_file_atomic(dir + "/" + file, text);
   };
   write("formula.cnf", to_dimacs(r.source));
   write("lsat.cnf", to_dimacs(r.lsat));
@@ -301,8 +304,10 @@ std::string write_reproducer(const VerifyResult& r, const std::string& dir, cons
         "#!/bin/sh\n# Replays the disagreement (run from this folder, gridlock on PATH or GRIDLOCK set).\n"
         "exec \"${GRIDLOCK:-gridlock}\" verify formula.cnf" +
             flags + "\n");
-  std::filesystem::permissions(dir + "/run.sh", std::filesystem::perms::owner_exec, std::filesystem::perm_options::add);
-  return dir;
+  if (first) return first;
+  std::filesystem::permissions(dir + "/run.sh", std::filesystem::perms::owner_exec, std::filesystem::perm_options::add,
+                               ec);
+  return std::nullopt;
 }
 
 }  // namespace gridlock

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "common/diagnostic.hpp"
 #include "common/verdict.hpp"
 #include "gadgets/mutation.hpp"
 #include "lattice/instance.hpp"
@@ -122,7 +123,9 @@ class Verifier {
 // Writes a reproducer for r into dir (created, with parents): formula.cnf,
 // lsat.cnf, instance.grid, sat-schedule.txt, solver-schedule.txt, README.txt
 // saying what disagreed, and run.sh replaying it with `gridlock verify`.
-// Throws std::runtime_error if a file cannot be written. Returns dir.
-std::string write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt);
+// A file that cannot be written (or a folder that cannot be created) is the
+// returned Diagnostic naming it ("DIR/FILE: write failed: REASON"); files
+// written before it stay (each one whole: common/atomic_file.hpp).
+MaybeError write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt);
 
 }  // namespace gridlock

@@ -1,6 +1,7 @@
 #include "support/cli.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -103,9 +104,23 @@ CliProcess start_gridlock(const std::vector<std::string>& args, const std::strin
   argv.reserve(argv_s.size() + 1);
   for (auto& a : argv_s) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // The signal disposition a real terminal gives its foreground job:
+  // SIGINT, SIGTERM, SIGHUP and SIGQUIT at their defaults and nothing
+  // blocked, even when this test runs with some ignored (a background job
+  // of a non-interactive shell ignores SIGINT and SIGQUIT).
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaddset(&defaults, sig);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
   pid_t pid = 0;
-  int rc = posix_spawn(&pid, GRIDLOCK_BINARY, &actions, nullptr, argv.data(), environ);
+  int rc = posix_spawn(&pid, GRIDLOCK_BINARY, &actions, &attr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
   if (rc != 0) throw std::runtime_error("cannot start " GRIDLOCK_BINARY);
   p.pid = pid;
   return p;

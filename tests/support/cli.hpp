@@ -24,7 +24,9 @@ struct CliProcess {
   std::string out_path, err_path;
 };
 
-// Starts GRIDLOCK_BINARY with args; standard output goes to stdout_path if
+// Starts GRIDLOCK_BINARY with args (SIGINT, SIGTERM, SIGHUP, SIGQUIT at their
+// default dispositions and unblocked, as a terminal gives them); standard
+// output goes to stdout_path if
 // given (e.g. "/dev/full"), else it is captured. stdin is /dev/null.
 CliProcess start_gridlock(const std::vector<std::string>& args, const std::string& stdout_path = "");
 CliResult finish_gridlock(CliProcess& p);
