@@ -47,13 +47,13 @@ void append_lemma(std::string& out, char kind, const Instance& inst,
 }
 
 // Runs the precedence engine with a log of its cycles and nogoods.
-SolveResult logged_precedence(const PreparedInstance& prep, SolveOptions opt, std::string& log) {
+SolveResult logged_precedence(const PreparedInstance& prep, SolveOptions opt, std::string& log, Simulator* replay) {
   PrecedenceHooks hooks;
   hooks.on_learned = [&](const auto& lits) { append_lemma(log, 'l', prep.inst, lits); };
   hooks.on_cycle = [&](const auto& lits) { append_lemma(log, 'o', prep.inst, lits); };
   opt.engine = SolveOptions::Engine::Precedence;
   opt.precedence_hooks = &hooks;
-  return solve_discrete(prep, opt);
+  return solve_discrete(prep, opt, replay);
 }
 
 }  // namespace
@@ -68,14 +68,14 @@ uint64_t coupling_digest(const Instance& inst) {
   return h;
 }
 
-CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt) {
+CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay) {
   using Engine = SolveOptions::Engine;
   const Instance& inst = prep.inst;
   const bool horizontal = inst.horizontal_only();
   CertifiedSolve out;
   std::string log;
   const bool logged = horizontal && (opt.engine == Engine::Auto || opt.engine == Engine::Precedence);
-  out.result = logged ? logged_precedence(prep, opt, log) : solve_discrete(prep, opt);
+  out.result = logged ? logged_precedence(prep, opt, log, replay) : solve_discrete(prep, opt, replay);
   if (out.result.status != Verdict::No) return out;
   if (out.result.cycle_breaker != kNone) {
     out.certificate = header(inst, "discrete") + breaker_text(prep, out.result.cycle_breaker);
@@ -86,7 +86,7 @@ CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const Solv
     return out;
   }
   if (!logged) {
-    const SolveResult again = logged_precedence(prep, opt, log);
+    const SolveResult again = logged_precedence(prep, opt, log, replay);
     if (again.status == Verdict::Unknown) {
       out.why_none = "limit reached while the precedence engine wrote the certificate";
       return out;

@@ -28,14 +28,14 @@ struct CertifiedSolve {
   std::string why_none;
 };
 
-// solve_discrete(prep, opt), and with every NO a certificate when one can be
+// solve_discrete(prep, opt, replay), and with every NO a certificate when one can be
 // written: always for a cycle breaker; for a horizontal-only instance from
 // the precedence engine (engine Auto runs it instead of the SAT engine, so
 // the search runs once; after a NO of another engine it runs again, with
 // the same limits, to write the log). A NO of a non-horizontal instance
 // without a cycle breaker has none yet (why_none). Same exceptions as
 // solve_discrete; std::logic_error if the second run disagrees.
-CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt);
+CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay = nullptr);
 
 // Continuous model, horizontal-only instances: if running everything at
 // once collides (check_gaps), the certificate naming why the final
