@@ -42,7 +42,7 @@ void prepare_output_folder(const std::string& out, bool force) {
     non_empty = true;
     const std::string name = e.path().filename().string();
     const std::string ext = e.path().extension().string();
-    if (e.is_regular_file() && (name == "manifest.json" || ext == ".grid" || ext == ".cnf" || ext == ".schedule" ||
+    if (e.is_regular_file() && (name == "manifest.json" || ext == ".grid" || ext == ".cnf" || ext == ".schedule" || ext == ".nocert" ||
                                 name.find(".tmp.") != std::string::npos))
       old.push_back(e.path());
   }
@@ -82,7 +82,7 @@ po::options_description gen_instances_options() {
                                                  "instances, formulas, witnesses, manifest.json")(
       "force",
       "write into a non-empty folder: the files of a previous set there (manifest.json, *.grid, *.cnf, "
-      "*.schedule) are removed first")("seed", po::value<std::string>()->default_value("1"),
+      "*.schedule, *.nocert) are removed first")("seed", po::value<std::string>()->default_value("1"),
                                        "seed of the random formulas")(
       "threshold", po::value<std::string>()->default_value("10"), "random 3-SAT formulas at the threshold ratio 4.26")(
       "lsat", po::value<std::string>()->default_value("10"), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")(
@@ -110,7 +110,8 @@ const char* const kGenInstancesDescription =
     "Writes a labelled set of lattice instances: each formula (random 3-SAT at the threshold,\n"
     "random LSAT<=3, or given) goes through to-lsat and the gadget compiler. Labels are certified:\n"
     "YES with a witness schedule (CaDiCaL's model lifted, accepted by the exact simulator, saved\n"
-    "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source.\n"
+    "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source\n"
+    "and, in the discrete model, by a NO certificate (NAME.nocert, for 'gridlock certify').\n"
     "manifest.json lists every instance with its answer, certificate, sizes and seed; it is\n"
     "written last. Every file is written atomically. On a terminal a progress line shows the\n"
     "count and the formula in progress. SIGINT/SIGTERM stop between formulas: the finished\n"
@@ -169,6 +170,10 @@ nlohmann::json entry_json(const SetInstance& e) {
   } else {
     j["answer"] = "NO";
     j["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
+    if (!e.no_certificate_file.empty())
+      j["no_certificate"] = {{"kind", "NO certificate (docs/certificates.md)"},
+                             {"file", e.no_certificate_file},
+                             {"checked_by", "gridlock certify"}};
   }
   return j;
 }
