@@ -26,8 +26,8 @@ struct CertificateText {
   std::string model;  // discrete | continuous
   std::string kind;   // breaker | gaps | final-gap | final-cycle
   size_t kind_line = 0;
-  CouplingId breaker = kNone;          // breaker
-  std::vector<NodeId> nodes;           // breaker, final-cycle: a closed walk; final-gap: the two ends
+  CouplingId breaker = kNone;            // breaker
+  std::vector<NodeId> nodes;             // breaker, final-cycle: a closed walk; final-gap: the two ends
   std::vector<CertificateLemma> lemmas;  // gaps
 };
 

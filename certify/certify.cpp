@@ -43,8 +43,7 @@ void check_final_cycle(const Instance& inst, const CertificateText& c, CertifyRe
 void check_final_gap(const Instance& inst, const CertificateText& c, CertifyResult& r) {
   const CertifyGeometry geo(inst);
   const NodeId a = c.nodes[0], b = c.nodes[1];
-  if (!inst.horizontal_only())
-    return void(r.reason = at(c.kind_line, "final-gap needs a horizontal-only instance"));
+  if (!inst.horizontal_only()) return void(r.reason = at(c.kind_line, "final-gap needs a horizontal-only instance"));
   if (!geo.row_neighbours(a, b))
     return void(r.reason = at(c.kind_line, inst.node_label(a) + " and " + inst.node_label(b) +
                                                " are not neighbours in a row (left one first)"));
@@ -52,7 +51,8 @@ void check_final_gap(const Instance& inst, const CertificateText& c, CertifyResu
   int64_t end = f.base;
   for (auto [q, coef] : f.terms) end += coef;
   if (end <= 0)
-    return void(r.reason = at(c.kind_line, "the gap is " + std::to_string(-end) + " with every coupling done, not negative"));
+    return void(
+        r.reason = at(c.kind_line, "the gap is " + std::to_string(-end) + " with every coupling done, not negative"));
   r.proved = true;
 }
 

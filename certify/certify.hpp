@@ -21,9 +21,9 @@
 namespace gridlock {
 
 struct CertifyResult {
-  bool proved = false;  // true: the certificate proves that inst has no schedule
-  std::string reason;   // not proved: what failed, "line N: ..." where a line is to blame
-  std::string kind;     // breaker, gaps, final-gap or final-cycle (once read)
+  bool proved = false;        // true: the certificate proves that inst has no schedule
+  std::string reason;         // not proved: what failed, "line N: ..." where a line is to blame
+  std::string kind;           // breaker, gaps, final-gap or final-cycle (once read)
   uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance
   uint64_t lemmas = 0;        // gaps: lemma lines checked
   uint64_t axioms = 0;        // gaps: order-closure clauses derived

@@ -53,7 +53,7 @@ std::optional<std::string> CertifyGeometry::walk_net(const std::vector<NodeId>& 
     const Operation& op = inst_.ops()[k];
     // b relative to a: an expansion u->v moves v away from u, a contraction toward it.
     const Vec2 d = unit(op.dir);
-    const int64_t s = (op.kind == OpKind::Expand ? 1 : -1) * (a == op.u ? 1 : -1);
+    const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
     net = net + Vec2{s * d.x, s * d.y};
   }
   return std::nullopt;

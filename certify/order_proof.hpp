@@ -69,10 +69,10 @@ class OrderProof {
 
   static constexpr Lit kNoLit = UINT32_MAX;
   size_t k_;
-  std::unordered_map<uint64_t, uint32_t> index_;                      // (lo << 32 | hi) -> variable
-  std::vector<CouplingId> lo_, hi_;                                   // per variable
+  std::unordered_map<uint64_t, uint32_t> index_;                        // (lo << 32 | hi) -> variable
+  std::vector<CouplingId> lo_, hi_;                                     // per variable
   std::vector<std::vector<std::pair<CouplingId, uint32_t>>> partners_;  // per coupling: (other, variable)
-  std::vector<int8_t> value_;                                         // per variable: -1 free, 0, 1
+  std::vector<int8_t> value_;                                           // per variable: -1 free, 0, 1
   std::vector<Lit> trail_;
   size_t qhead_ = 0;
   // Inequalities: literals by weight, heaviest first; running sums of the true ones.

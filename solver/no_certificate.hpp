@@ -35,7 +35,8 @@ struct CertifiedSolve {
 // the same limits, to write the log). A NO of a non-horizontal instance
 // without a cycle breaker has none yet (why_none). Same exceptions as
 // solve_discrete; std::logic_error if the second run disagrees.
-CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay = nullptr);
+CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt,
+                                        Simulator* replay = nullptr);
 
 // Continuous model, horizontal-only instances: if running everything at
 // once collides (check_gaps), the certificate naming why the final

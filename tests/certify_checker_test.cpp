@@ -14,10 +14,10 @@
 #include "cnf/brute_force.hpp"
 #include "cnf/generate.hpp"
 #include "lattice/random_instance.hpp"
-#include "solver/continuous.hpp"
-#include "solver/no_certificate.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
+#include "solver/continuous.hpp"
+#include "solver/no_certificate.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
 
@@ -103,7 +103,11 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
     const size_t sp = m[i].find(' ', 2), start = 2, lt = m[i].find('<');
     const std::string a = m[i].substr(start, lt - start), b = m[i].substr(lt + 1, sp - lt - 1);
     if (m[i].find(' ', sp + 1) == std::string::npos) break;  // a 2-cycle stays a cycle
-    m[i] = "o " + b + "<" + a + m[i].substr(sp);
+    std::string flipped = "o " + b;
+    flipped += "<";
+    flipped += a;
+    flipped += m[i].substr(sp);
+    m[i] = flipped;
     expect_rejected(join(m), "flipped cycle edge", "contain no cycle");
     break;
   }
@@ -234,9 +238,10 @@ TEST(CertifyChecker, CompiledFormulas) {
       ++forged;
       EXPECT_FALSE(certify(y, rehead(y, c), "discrete").proved);
     }
-  std::printf("compiled: %d NO certified, %zu YES; %d of %d mutations rejected; %d of %d single-lemma drops rejected; "
-              "%d forged certificates for YES instances all refused\n",
-              n.no, yes.size(), n.rejected, n.mutations, drops_rejected, drops, forged);
+  std::printf(
+      "compiled: %d NO certified, %zu YES; %d of %d mutations rejected; %d of %d single-lemma drops rejected; "
+      "%d forged certificates for YES instances all refused\n",
+      n.no, yes.size(), n.rejected, n.mutations, drops_rejected, drops, forged);
   EXPECT_GT(n.no, 5);
   EXPECT_GT(yes.size(), 3u);
   EXPECT_GT(drops_rejected, 0);

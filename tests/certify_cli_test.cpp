@@ -36,7 +36,8 @@ void expect_certified(const std::string& grid, const std::string& cert, const st
 
 TEST(CertifyCli, EveryKindWrittenAndChecked) {
   const std::string d = test::temp_dir();
-  const std::string push = test::write_file(d + "/push.grid", kPush), square = test::write_file(d + "/sq.grid", kSquare);
+  const std::string push = test::write_file(d + "/push.grid", kPush),
+                    square = test::write_file(d + "/sq.grid", kSquare);
   expect_certified(push, d + "/push.cert", "discrete", "gaps");
   expect_certified(push, d + "/push.ccert", "continuous", "final-gap 1,0 2,0");
   expect_certified(square, d + "/sq.cert", "discrete", "breaker a");
@@ -63,7 +64,8 @@ TEST(CertifyCli, CompiledUnsatFormula) {
 
 TEST(CertifyCli, BrokenCertificatesRefusedWithTheReason) {
   const std::string d = test::temp_dir();
-  const std::string push = test::write_file(d + "/push.grid", kPush), square = test::write_file(d + "/sq.grid", kSquare);
+  const std::string push = test::write_file(d + "/push.grid", kPush),
+                    square = test::write_file(d + "/sq.grid", kSquare);
   ASSERT_EQ(run_gridlock({"solve", push, "--certificate", d + "/p.cert"}).exit_code, 20);
   const std::string good = test::read_file(d + "/p.cert");
   struct Case {
@@ -99,8 +101,8 @@ TEST(CertifyCli, VerifyAndGenInstancesUseIt) {
   const auto v = run_gridlock({"verify", d + "/f.cnf"});
   EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
   EXPECT_NE(v.out.find("1 NO certificates checked, 0 missing or rejected"), std::string::npos) << v.out;
-  const auto g = run_gridlock({"gen-instances", "-o", d + "/set", "--threshold", "0", "--lsat", "0", "--formula",
-                               d + "/f.cnf"});
+  const auto g = run_gridlock(
+      {"gen-instances", "-o", d + "/set", "--threshold", "0", "--lsat", "0", "--formula", d + "/f.cnf"});
   ASSERT_EQ(g.exit_code, 0) << g.out << g.err;
   const std::string manifest = test::read_file(d + "/set/manifest.json");
   EXPECT_NE(manifest.find("\"file\": \"given-f.nocert\""), std::string::npos) << manifest;

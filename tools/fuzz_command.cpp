@@ -152,7 +152,8 @@ std::string status_line(const FuzzTally& t) {
   std::ostringstream s;
   s << t.formulas << " formulas (" << t.sat << " SAT, " << t.unsat << " UNSAT, " << t.unknown << " unknown), "
     << static_cast<uint64_t>(static_cast<double>(t.formulas) / std::max(t.seconds, 1e-9)) << "/s, " << t.certificates
-    << " certificates (" << t.no_certified << " NO certificates), " << t.disagreements << " disagreements, " << static_cast<uint64_t>(t.seconds) << " s";
+    << " certificates (" << t.no_certified << " NO certificates), " << t.disagreements << " disagreements, "
+    << static_cast<uint64_t>(t.seconds) << " s";
   return s.str();
 }
 

@@ -42,8 +42,8 @@ void prepare_output_folder(const std::string& out, bool force) {
     non_empty = true;
     const std::string name = e.path().filename().string();
     const std::string ext = e.path().extension().string();
-    if (e.is_regular_file() && (name == "manifest.json" || ext == ".grid" || ext == ".cnf" || ext == ".schedule" || ext == ".nocert" ||
-                                name.find(".tmp.") != std::string::npos))
+    if (e.is_regular_file() && (name == "manifest.json" || ext == ".grid" || ext == ".cnf" || ext == ".schedule" ||
+                                ext == ".nocert" || name.find(".tmp.") != std::string::npos))
       old.push_back(e.path());
   }
   if (ec) throw UserError(Diagnostic{out, 0, "cannot list folder: " + ec.message()});
@@ -83,7 +83,7 @@ po::options_description gen_instances_options() {
       "force",
       "write into a non-empty folder: the files of a previous set there (manifest.json, *.grid, *.cnf, "
       "*.schedule, *.nocert) are removed first")("seed", po::value<std::string>()->default_value("1"),
-                                       "seed of the random formulas")(
+                                                 "seed of the random formulas")(
       "threshold", po::value<std::string>()->default_value("10"), "random 3-SAT formulas at the threshold ratio 4.26")(
       "lsat", po::value<std::string>()->default_value("10"), "random LSAT<=3 formulas (clauses of 1 to 3 literals)")(
       "vars", po::value<std::string>()->default_value("12"), "variables of each random formula (3 to 1000)")(

@@ -180,10 +180,9 @@ void print_table_row(std::ostream& out, const VerifyView& v, const std::string& 
                        c * ((r.sat == Verdict::Yes) + (r.continuous_solver == Verdict::Yes));
   const char* cert = r.no_certificate == Check::Valid ? "ok" : r.no_certificate == Check::Invalid ? "BAD" : "-";
   out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(6)
-      << cert << std::setw(10)
-      << (d ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/" << fmt_ms(r.ms_compile) << "/"
-      << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps) << (c ? "/" + fmt_ms(r.ms_csolve) : "")
-      << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
+      << cert << std::setw(10) << (d ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/"
+      << fmt_ms(r.ms_compile) << "/" << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps)
+      << (c ? "/" + fmt_ms(r.ms_csolve) : "") << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
 }
 
 nlohmann::json result_row(const VerifyView& v, size_t i, const std::string& file, const VerifyResult& r,
@@ -230,9 +229,8 @@ std::string summary_line(const VerifyTally& t) {
                         std::to_string(t.unsat) + " UNSAT): " + std::to_string(t.agree) + " agree, " +
                         std::to_string(t.unknown) + " unknown (solver limit), " + std::to_string(t.disagree) +
                         " disagree; " + std::to_string(t.certificates) + " certificates checked (" +
-                        std::to_string(t.no_certified) + " NO certificates checked, " +
-                        std::to_string(t.no_rejected) + " missing or rejected); " +
-                        fmt_ms(t.ms / 1000) + " s";
+                        std::to_string(t.no_certified) + " NO certificates checked, " + std::to_string(t.no_rejected) +
+                        " missing or rejected); " + fmt_ms(t.ms / 1000) + " s";
   if (t.interrupted) summary += "; " + cli::interrupted_note() + " after " + std::to_string(t.formulas) + " formulas";
   return summary;
 }

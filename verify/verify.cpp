@@ -37,8 +37,7 @@ std::optional<VerifyModel> parse_verify_model(const std::string& s) {
 
 int VerifyResult::witnesses_checked() const {
   return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid) +
-         (no_certificate == Check::Valid) +
-         (csat_witness == Check::Valid) + (csolver_witness == Check::Valid);
+         (no_certificate == Check::Valid) + (csat_witness == Check::Valid) + (csolver_witness == Check::Valid);
 }
 
 namespace {
