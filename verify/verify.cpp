@@ -201,7 +201,11 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
   }
   t0 = std::chrono::steady_clock::now();
   CertifiedSolve cs;
-  if (opt.certify) cs = solve_discrete_certified(prep, solve_options(opt), &sim);
+  SolveOptions so = solve_options(opt);
+  // The default engine decides, as without certificates (the precedence
+  // engine then runs again on a NO to write the log: a second engine's NO).
+  if (inst.horizontal_only()) so.engine = SolveOptions::Engine::Sat;
+  if (opt.certify) cs = solve_discrete_certified(prep, so, &sim);
   else cs.result = solve_discrete(prep, solve_options(opt), &sim);
   const SolveResult& sr = cs.result;
   r.ms_solve = ms_since(t0);
