@@ -107,10 +107,12 @@ bool OrderProof::propagate() {
 // p is a -> b: with b -> x it gives a -> x, with x -> a it gives x -> b.
 bool OrderProof::propagate_triangles(Lit p) {
   const CouplingId a = from(p), b = to(p);
+  // The literal "from before to" of variable v of that pair (lo < hi).
+  auto pair_lit = [](CouplingId from, CouplingId to, uint32_t v) { return 2 * v + (from < to ? 0 : 1); };
   for (auto [x, v] : partners_[b])
-    if (x != a && is_true(find_lit(b, x)) && !imply(find_lit(a, x))) return false;
+    if (x != a && is_true(pair_lit(b, x, v)) && !imply(find_lit(a, x))) return false;
   for (auto [x, v] : partners_[a])
-    if (x != b && is_true(find_lit(x, a)) && !imply(find_lit(x, b))) return false;
+    if (x != b && is_true(pair_lit(x, a, v)) && !imply(find_lit(x, b))) return false;
   return true;
 }
 
