@@ -15,8 +15,8 @@ for f in "$@"; do
   "$bin" compile "$work/l.cnf" -o "$work/i.grid" >/dev/null
   s=$(cpu "$bin" solve "$work/i.grid")
   sc=$(cpu "$bin" solve "$work/i.grid" --certificate "$work/c")
-  set +e; "$bin" certify "$work/i.grid" "$work/c" >/dev/null 2>&1; rc=$?; set -e
   ch=$(cpu "$bin" certify "$work/i.grid" "$work/c")
+  rc=$(grep -o 'status [0-9]*' "$work/t" | cut -d' ' -f2); rc=${rc:-0}
   echo "$(basename "$f"),$s,$sc,$ch,$rc,$(stat -c %s "$work/i.grid"),$(stat -c %s "$work/c"),$(grep -c '^[lo]' "$work/c")" >> "$out"
   tail -1 "$out" >&2
 done
