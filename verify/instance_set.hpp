@@ -51,9 +51,10 @@ struct InstanceSetPlan {
   Shard shard;                      // instances i (given, threshold, lsat) with shard.has(i); not with want_*
   std::vector<ReductionModel> models = {ReductionModel::Discrete};  // 1 or 2, compiled in this order
   // Discrete NO instances: the exact solver's NO certificate (docs/certificates.md),
-  // checked by certify/ and written as NAME.nocert; 0 = no time limit.
+  // checked by certify/ and written as NAME.nocert. A NO the solver does not
+  // settle within solve_seconds (0: no limit) gets none (the manifest names none).
   bool no_certificates = true;
-  double solve_seconds = 0;
+  double solve_seconds = 60;
   bool mix() const { return want_yes >= 0 || want_no >= 0; }
   // Formulas the plan asks for (without want_*).
   size_t planned() const { return given.size() + static_cast<size_t>(threshold) + static_cast<size_t>(lsat); }
