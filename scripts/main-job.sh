@@ -2,7 +2,9 @@
 # The main job: sets up, builds, and verifies the reduction end to end on the
 # bundled formulas (examples/formulas: small SAT and UNSAT ones and SATLIB
 # uf20-91 samples). Prints the table (CaDiCaL vs exact discrete solver vs
-# gap checker, certificates checked), the continuous reduction on the small
+# gap checker, certificates checked: witnesses of every YES, a NO
+# certificate of every discrete NO), one NO certificate through
+# `gridlock certify`, the continuous reduction on the small
 # ones (CaDiCaL vs the exact continuous solver), then writes pictures of the small
 # compiled instances and their witness schedules (or a collision) to out/,
 # each with an animation beside it (NAME.html: open it in a browser).
@@ -17,6 +19,11 @@ build/gridlock verify examples/formulas --timeout "${MAIN_JOB_TIMEOUT:-60}" \
 echo "== the continuous reduction (separation gadget) on the small formulas, exact continuous solver"
 build/gridlock verify examples/formulas/{tiny-sat,tiny-unsat,lsat-sat,unsat-3cnf}.cnf --model continuous \
   --timeout "${MAIN_JOB_TIMEOUT:-60}" --reproducers out/verify-failures-continuous
+echo "== a NO certificate of an UNSAT formula's instance, checked without the solvers (docs/certificates.md)"
+build/gridlock cnf to-lsat examples/formulas/unsat-3cnf.cnf -o out/unsat-3cnf.lsat.cnf >/dev/null
+build/gridlock compile out/unsat-3cnf.lsat.cnf -o out/unsat-3cnf.grid >/dev/null
+build/gridlock solve out/unsat-3cnf.grid --certificate out/unsat-3cnf.nocert | grep -E '^(s|c cert)' || [ $? -eq 20 ]
+build/gridlock certify out/unsat-3cnf.grid out/unsat-3cnf.nocert || [ $? -eq 20 ]
 echo "== a gadget of each kind, and a labelled instance set"
 for kind in variable clause order separation; do
   build/gridlock gadget "$kind" -o "out/gadget-$kind.grid" --svg "out/pictures/gadget-$kind.svg"

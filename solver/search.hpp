@@ -98,6 +98,11 @@ struct PrecedenceHooks {
   // Called with every nogood learned, as the clause it adds: at least one
   // of these (a, b), "a before b", holds in every collision-free order.
   std::function<void(const std::vector<std::pair<CouplingId, CouplingId>>&)> on_learned;
+  // Called with every cycle of set literals the search meets (at level 0
+  // or once everything is set), as its edges (a, b) in path order: no
+  // total order has all of them. A NO certificate needs these before the
+  // nogoods learned from them (docs/certificates.md).
+  std::function<void(const std::vector<std::pair<CouplingId, CouplingId>>&)> on_cycle;
 };
 
 // Precedence search with learning, gap systems only (docs/solver.md,

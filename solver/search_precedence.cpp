@@ -168,7 +168,10 @@ class LearningSearch {
   // False on a conflict. Skipped above kClosureLimit couplings (k^2 bits).
   bool closure_nogoods() {
     const size_t k = sys_.num_couplings, words = (k + 63) / 64;
-    if (!graph_.sort(topo_, conflict_)) return false;  // the level-0 relations form a cycle
+    if (!graph_.sort(topo_, conflict_)) {  // the level-0 relations form a cycle
+      report_cycle();
+      return false;
+    }
     first_pos_.assign(k, 0);
     for (size_t h = 0; h < k; ++h) first_pos_[topo_[h]] = static_cast<uint32_t>(h);
     if (k > kClosureLimit) return true;
@@ -429,6 +432,15 @@ class LearningSearch {
     return static_cast<uint32_t>(std::unique(lv.begin(), lv.end()) - lv.begin());
   }
 
+  // Tells hooks_ (if any) of the cycle in conflict_.
+  void report_cycle() const {
+    if (!hooks_ || !hooks_->on_cycle) return;
+    std::vector<std::pair<CouplingId, CouplingId>> edges;
+    edges.reserve(conflict_.size());
+    for (Lit l : conflict_) edges.push_back({from(l), to(l)});
+    hooks_->on_cycle(edges);
+  }
+
   // Learns the nogood, jumps back to where it asserts, asserts it.
   void learn(std::vector<Lit>& learned) {
     if (hooks_ && hooks_->on_learned) {
@@ -522,6 +534,7 @@ class LearningSearch {
       if (d == kNoLit) {
         if (graph_.sort(topo_, conflict_)) return true;
         // A cycle of set literals: a conflict at the highest level among them.
+        report_cycle();
         uint32_t top = 0;
         for (Lit l : conflict_) top = std::max(top, level_[var(l)]);
         if (top == 0) return false;

@@ -45,7 +45,7 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
     sys = horizontal ? build_gap_constraints(prep, &budget.deadline())
                      : build_pair_constraints(prep, &budget.deadline());
     res.stats.constraints = sys.constraints.size();
-    SearchOutcome out = engine == Engine::Precedence ? search_precedence(sys, budget, res.stats)
+    SearchOutcome out = engine == Engine::Precedence ? search_precedence(sys, budget, res.stats, opt.precedence_hooks)
                         : engine == Engine::Sat      ? search_sat(sys, budget, res.stats)
                                                      : search_states(sys, budget, res.stats);
     res.status = out.status;

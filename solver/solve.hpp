@@ -47,6 +47,8 @@
 
 namespace gridlock {
 
+struct PrecedenceHooks;  // solver/search.hpp
+
 struct SolveOptions {
   double seconds = 0;       // wall-clock limit; 0 = no limit
   uint64_t max_states = 0;  // limit on search nodes; 0 = none
@@ -58,6 +60,9 @@ struct SolveOptions {
   // non-horizontal instance throws std::invalid_argument. (Tests run every
   // engine on the same instances.)
   enum class Engine { Auto, States, Precedence, Sat } engine = Engine::Auto;
+  // Passed to the precedence engine when it runs (NO certificates,
+  // solver/no_certificate.hpp; tests). Not owned.
+  const PrecedenceHooks* precedence_hooks = nullptr;
 };
 
 struct SolveStats {

@@ -33,8 +33,10 @@ TEST(VerifyCli, BundledExamplesAgreeWithEveryCertificateChecked) {
     EXPECT_EQ(row["discrete"], row["sat"]);
     EXPECT_EQ(row["continuous"], "YES");  // continuous time is easy
     EXPECT_LE(row["max_coupling"], 3);
-    // SAT: model schedule, solver schedule, all-at-once; UNSAT: all-at-once.
-    EXPECT_EQ(row["witnesses_checked"], row["sat"] == "YES" ? 3 : 1);
+    // SAT: model schedule, solver schedule, all-at-once; UNSAT: all-at-once
+    // and the solver's NO certificate (certify/).
+    EXPECT_EQ(row["witnesses_checked"], row["sat"] == "YES" ? 3 : 2);
+    EXPECT_EQ(row["no_certificate"], row["sat"] == "YES" ? "none" : "checked");
   }
   EXPECT_TRUE(fs::exists(dir + "/pics/tiny-sat-witness.svg"));
   EXPECT_TRUE(fs::exists(dir + "/pics/tiny-unsat-collision.svg"));
@@ -45,7 +47,7 @@ TEST(VerifyCli, TableAndSummary) {
   auto r = run_gridlock({"verify", kExamples + "/tiny-sat.cnf", kExamples + "/tiny-unsat.cnf"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("summary: 2 formulas (1 SAT, 1 UNSAT): 2 agree, 0 unknown (solver limit), 0 disagree; "
-                       "4 certificates checked"),
+                       "5 certificates checked (1 NO certificates checked, 0 missing or rejected)"),
             std::string::npos)
       << r.out;
 }

@@ -28,6 +28,7 @@ void verify_model_args(const boost::program_options::variables_map& vm, VerifyOp
   if (!model) throw UserError("--model must be discrete, continuous or both, not '" + model_name + "'");
   opt.model = *model;
   opt.direct = vm.count("direct") > 0;
+  opt.certify = vm.count("no-certificates") == 0;
 }
 
 namespace {

@@ -56,6 +56,7 @@ po::options_description fuzz_options() {
       "model", po::value<std::string>()->default_value("discrete"),
       "which reduction to check, as in 'gridlock verify': discrete, continuous or both")(
       "direct", "compile each formula as it is, not its LSAT<=3 form (as in 'gridlock verify')")(
+      "no-certificates", "do not write and check a NO certificate for each discrete NO (docs/certificates.md)")(
       "timeout", po::value<std::string>()->default_value("10"), "seconds the exact solver may spend on one formula")(
       "max-states", po::value<std::string>()->default_value("2000000"),
       "search nodes the exact solver may visit per formula")(
@@ -141,7 +142,7 @@ std::string replay_command(const FuzzRun& run, uint64_t index) {
   return "gridlock fuzz --seed " + std::to_string(p.seed) + " --index " + std::to_string(index) + " --min-vars " +
          std::to_string(p.min_vars) + " --max-vars " + std::to_string(p.max_vars) + " --kinds " + run.kinds +
          (vo.model != VerifyModel::Discrete ? std::string(" --model ") + verify_model_name(vo.model) : "") +
-         (vo.direct ? " --direct" : "") +
+         (vo.direct ? " --direct" : "") + (vo.certify ? "" : " --no-certificates") +
          (vo.mutation != Mutation::None ? std::string(" --break-gadget ") + mutation_name(vo.mutation) : "");
 }
 
@@ -153,7 +154,8 @@ std::string status_line(const FuzzTally& t) {
   std::ostringstream s;
   s << t.formulas << " formulas (" << t.sat << " SAT, " << t.unsat << " UNSAT, " << t.unknown << " unknown), "
     << static_cast<uint64_t>(static_cast<double>(t.formulas) / std::max(t.seconds, 1e-9)) << "/s, " << t.certificates
-    << " certificates, " << t.disagreements << " disagreements, " << static_cast<uint64_t>(t.seconds) << " s";
+    << " certificates (" << t.no_certified << " NO certificates), " << t.disagreements << " disagreements, "
+    << static_cast<uint64_t>(t.seconds) << " s";
   return s.str();
 }
 
@@ -208,6 +210,7 @@ nlohmann::json fuzz_json(const FuzzRun& run, const FuzzTally& t) {
   j["unsat"] = t.unsat;
   j["unknown"] = t.unknown;
   j["certificates_checked"] = t.certificates;
+  j["no_certificates_checked"] = t.no_certified;
   j["disagreements"] = t.disagreements;
   j["seconds"] = t.seconds;
   j["findings"] = findings;

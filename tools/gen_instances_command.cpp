@@ -63,7 +63,8 @@ const char* const kGenInstancesDescription =
     "Writes a labelled set of lattice instances: each formula (random 3-SAT at the threshold,\n"
     "random LSAT<=3, or given) goes through to-lsat and the gadget compiler. Labels are certified:\n"
     "YES with a witness schedule (CaDiCaL's model lifted, accepted by the exact simulator, saved\n"
-    "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source.\n"
+    "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source\n"
+    "and, in the discrete model, by a NO certificate (NAME.nocert, for 'gridlock certify').\n"
     "manifest.json lists every instance with its answer, certificate, sizes and seed; it is\n"
     "written last. Every file is written atomically. On a terminal a progress line shows the\n"
     "count and the formula in progress. SIGINT/SIGTERM stop between formulas: the finished\n"
@@ -124,6 +125,10 @@ nlohmann::json entry_json(const SetInstance& e) {
   } else {
     j["answer"] = "NO";
     j["certificate"] = {{"kind", "source formula unsatisfiable"}, {"solver", sat_solver_name()}};
+    if (!e.no_certificate_file.empty())
+      j["no_certificate"] = {{"kind", "NO certificate (docs/certificates.md)"},
+                             {"file", e.no_certificate_file},
+                             {"checked_by", "gridlock certify"}};
   }
   return j;
 }

@@ -92,7 +92,8 @@ json merge_fuzz(const std::vector<ShardFile>& files) {
   }
   std::sort(findings.begin(), findings.end(),
             [](const json& a, const json& b) { return a["index"].get<uint64_t>() < b["index"].get<uint64_t>(); });
-  for (const char* key : {"formulas", "sat", "unsat", "unknown", "certificates_checked", "disagreements"})
+  for (const char* key :
+       {"formulas", "sat", "unsat", "unknown", "certificates_checked", "no_certificates_checked", "disagreements"})
     out[key] = sum(files, key);
   out["seconds"] = seconds;  // wall clock of shards run side by side
   out["findings"] = findings;

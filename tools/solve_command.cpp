@@ -7,6 +7,7 @@
 
 #include "common/limits.hpp"
 #include "solver/continuous.hpp"
+#include "solver/no_certificate.hpp"
 #include "solver/solve.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
@@ -29,7 +30,20 @@ nlohmann::json stats_json(const SolveStats& st) {
           {"constraints", st.constraints}, {"seconds", st.seconds}};
 }
 
-int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, bool json) {
+// --certificate C: writes the certificate of a NO (atomically), or says why there is none.
+void write_certificate(Answer& ans, const std::string& cert_path, const std::string& text, const std::string& why) {
+  if (cert_path.empty()) return;
+  if (text.empty()) {
+    ans.comment("no certificate written: " + why);
+    return;
+  }
+  cli::write_text_file(cert_path, text);
+  ans.comment("certificate written to " + cert_path + " ('gridlock certify' checks it)");
+  ans.data()["certificate"] = cert_path;
+}
+
+int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, bool json,
+                   const std::string& cert_path) {
   Answer ans("solve", json);
   ans.witness_one_per_line();
   ans.comment("gridlock solve --model continuous " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
@@ -48,6 +62,9 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   ans.comment("time " + fixed(st.seconds, 3) + " s");
   if (r.status == Verdict::Yes) ans.comment("start times checked by the simulator: collision-free");
   if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
+  if (r.status == Verdict::No)
+    write_certificate(ans, cert_path, inst.horizontal_only() ? continuous_no_certificate(inst) : "",
+                      "continuous certificates for instances with vertical operations are not written yet");
   if (r.status == Verdict::Yes)
     for (CouplingId q = 0; q < inst.couplings().size(); ++q)
       ans.witness(inst.couplings()[q].name + " " + r.schedule.start[q].str());
@@ -60,7 +77,7 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
 
 // The discrete solver on inst (--engine engine_name, already in opt).
 int run_discrete(const std::string& path, const Instance& inst, const SolveOptions& opt, const std::string& engine_name,
-                 bool json) {
+                 bool json, const std::string& cert_path) {
   if ((opt.engine == SolveOptions::Engine::Precedence || opt.engine == SolveOptions::Engine::Sat) &&
       !inst.horizontal_only())
     throw UserError(path + ": --engine " + engine_name + " needs a horizontal-only instance");
@@ -68,7 +85,14 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
   ans.comment("gridlock solve " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
               " couplings" + (inst.horizontal_only() ? ", horizontal-only" : ""));
-  SolveResult r = solve_discrete(inst, opt);
+  CertifiedSolve cs;
+  if (cert_path.empty()) {
+    cs.result = solve_discrete(inst, opt);
+  } else {
+    const PreparedInstance prep(inst);
+    cs = solve_discrete_certified(prep, opt);
+  }
+  const SolveResult& r = cs.result;
   const SolveStats& st = r.stats;
   if (r.cycle_breaker != kNone) {
     ans.comment("coupling " + inst.couplings()[r.cycle_breaker].name +
@@ -82,6 +106,7 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
   ans.comment("time " + fixed(st.seconds, 3) + " s");
   if (r.status == Verdict::Yes) ans.comment("order checked by the simulator: collision-free");
   if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
+  if (r.status == Verdict::No) write_certificate(ans, cert_path, cs.certificate, cs.why_none);
   for (CouplingId q : r.order) ans.witness(inst.couplings()[q].name);
   nlohmann::json& d = ans.data();
   d["engine"] = st.engine;
@@ -102,7 +127,9 @@ po::options_description solve_options() {
       "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
       "engine", po::value<std::string>()->default_value("auto"),
       "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")(
-      "json", "print one JSON object instead of c/s/v lines");
+      "json", "print one JSON object instead of c/s/v lines")(
+      "certificate", po::value<std::string>(),
+      "with a NO, write a certificate to FILE that 'gridlock certify' checks (docs/certificates.md)");
   return opts;
 }
 
@@ -155,8 +182,10 @@ int run_solve(const std::vector<std::string>& args) {
   const Instance& inst = *kept;
   cli::Activity act(path, "solving the instance");
   if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
-  if (model == "continuous") return run_continuous(path, inst, opt, vm.count("json") > 0);
-  return run_discrete(path, inst, opt, engine, vm.count("json") > 0);
+  const std::string cert_path = vm.count("certificate") ? vm["certificate"].as<std::string>() : "";
+  if (!cert_path.empty()) cli::refuse_overwriting_input(cert_path, {path});
+  if (model == "continuous") return run_continuous(path, inst, opt, vm.count("json") > 0, cert_path);
+  return run_discrete(path, inst, opt, engine, vm.count("json") > 0, cert_path);
 }
 
 Command reg{"solve", "decide Collision-free Schedule exactly, discrete or continuous (any instance)", run_solve};

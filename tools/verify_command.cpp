@@ -112,6 +112,7 @@ po::options_description verify_options() {
       "direct",
       "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small "
       "formulas small, e.g. for the continuous solver)")(
+      "no-certificates", "do not write and check a NO certificate for each discrete NO (docs/certificates.md)")(
       "timeout", po::value<std::string>()->default_value("60"),
       "seconds the exact solver may spend on one formula (then UNKNOWN)")(
       "max-states", po::value<std::string>()->default_value("0"),
@@ -161,7 +162,7 @@ void print_table_header(std::ostream& out, const VerifyView& v) {
       << std::setw(8) << "nodes" << std::setw(7) << "coupl" << std::setw(7) << "SAT" << std::setw(9) << "discrete"
       << std::setw(7) << "contin";
   if (v.with_continuous) out << std::setw(9) << "c-exact";
-  out << std::setw(6) << "wit" << std::setw(10) << "states"
+  out << std::setw(6) << "wit" << std::setw(6) << "cert" << std::setw(10) << "states"
       << "  ms sat/compile/solve/gaps" << (v.with_continuous ? "/c-solve" : "") << '\n';
 }
 
@@ -175,12 +176,15 @@ void print_table_row(std::ostream& out, const VerifyView& v, const std::string& 
       << std::setw(7) << sat_word(r.sat) << std::setw(9) << (d ? verdict_name(r.discrete) : "-") << std::setw(7)
       << (d ? verdict_name(r.continuous) : "-");
   if (c) out << std::setw(9) << verdict_name(r.continuous_solver);
-  const int expected = d * ((r.sat == Verdict::Yes) + (r.discrete == Verdict::Yes) + (r.continuous == Verdict::Yes)) +
+  const bool certified = r.no_certificate != Check::None;
+  const int expected = d * ((r.sat == Verdict::Yes) + (r.discrete == Verdict::Yes) + (r.continuous == Verdict::Yes) +
+                            certified) +
                        c * ((r.sat == Verdict::Yes) + (r.continuous_solver == Verdict::Yes));
-  out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(10)
-      << (d ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/" << fmt_ms(r.ms_compile) << "/"
-      << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps) << (c ? "/" + fmt_ms(r.ms_csolve) : "")
-      << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
+  const char* cert = r.no_certificate == Check::Valid ? "ok" : r.no_certificate == Check::Invalid ? "BAD" : "-";
+  out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(6)
+      << cert << std::setw(10) << (d ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/"
+      << fmt_ms(r.ms_compile) << "/" << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps)
+      << (c ? "/" + fmt_ms(r.ms_csolve) : "") << (r.agree ? "" : "  DISAGREE: " + r.problem) << std::endl;
 }
 
 nlohmann::json result_row(const VerifyView& v, size_t i, const std::string& file, const VerifyResult& r,
@@ -198,6 +202,10 @@ nlohmann::json result_row(const VerifyView& v, size_t i, const std::string& file
                         {"discrete", verdict_name(r.discrete)},
                         {"continuous", verdict_name(r.continuous)},
                         {"witnesses_checked", r.witnesses_checked()},
+                        {"no_certificate", r.no_certificate == Check::None    ? "none"
+                                           : r.no_certificate == Check::Valid ? "checked"
+                                                                              : "rejected"},
+                        {"ms_certify", r.ms_certify},
                         {"solver_states", r.solver_states},
                         {"ms_sat", r.ms_sat},
                         {"ms_compile", r.ms_compile},
@@ -222,8 +230,9 @@ std::string summary_line(const VerifyTally& t) {
   std::string summary = std::to_string(t.formulas) + " formulas (" + std::to_string(t.sat) + " SAT, " +
                         std::to_string(t.unsat) + " UNSAT): " + std::to_string(t.agree) + " agree, " +
                         std::to_string(t.unknown) + " unknown (solver limit), " + std::to_string(t.disagree) +
-                        " disagree; " + std::to_string(t.certificates) + " certificates checked; " +
-                        fmt_ms(t.ms / 1000) + " s";
+                        " disagree; " + std::to_string(t.certificates) + " certificates checked (" +
+                        std::to_string(t.no_certified) + " NO certificates checked, " + std::to_string(t.no_rejected) +
+                        " missing or rejected); " + fmt_ms(t.ms / 1000) + " s";
   if (t.interrupted) summary += "; " + cli::interrupted_note() + " after " + std::to_string(t.formulas) + " formulas";
   return summary;
 }
@@ -261,7 +270,9 @@ nlohmann::json verify_json(const VerifyCampaign& c, size_t inputs, nlohmann::jso
                   {"agree", t.agree},
                   {"unknown", t.unknown},
                   {"disagree", t.disagree},
-                  {"certificates_checked", t.certificates}};
+                  {"certificates_checked", t.certificates},
+                  {"no_certificates_checked", t.no_certified},
+                  {"no_certificates_rejected", t.no_rejected}};
   j["interrupted"] = t.interrupted;
   j["exit_code"] = t.interrupted ? cli::interrupted_exit_code() : t.disagree ? 1 : 0;
   return j;

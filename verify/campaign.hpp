@@ -55,6 +55,7 @@ struct FuzzTally {
   uint64_t formulas = 0, sat = 0, unsat = 0;
   uint64_t unknown = 0;       // agreeing formulas on which an exact solver hit a limit
   uint64_t certificates = 0;  // certificates checked and valid
+  uint64_t no_certified = 0;  // of them: NO certificates (certify/) accepted
   uint64_t disagreements = 0;
   double seconds = 0;  // since the campaign started
   bool interrupted = false;
@@ -96,6 +97,8 @@ struct VerifyTally {
   size_t formulas = 0, sat = 0, unsat = 0;
   size_t agree = 0, unknown = 0, disagree = 0;
   size_t certificates = 0;  // certificates checked and valid
+  size_t no_certified = 0;  // of them: NO certificates (certify/) accepted
+  size_t no_rejected = 0;   // discrete NOs whose certificate was missing or rejected
   double ms = 0;            // the formulas' own times (sat, compile, solvers)
   bool interrupted = false;
   // Disagreements whose reproducer could not be written: (formula index,

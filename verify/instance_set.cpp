@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "certify/certify.hpp"
 #include "cnf/dimacs.hpp"
 #include "cnf/generate.hpp"
 #include "cnf/sat_solver.hpp"
@@ -11,6 +12,7 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/to_lsat.hpp"
+#include "solver/no_certificate.hpp"
 #include "verify/fuzz.hpp"
 
 namespace gridlock {
@@ -133,6 +135,7 @@ class SetMaker {
       e.certificate_file = e.name + (cont ? ".times" : ".schedule");
       ev_.write(e.certificate_file, certified_witness(c, red.lift_to_target(sat.model), cont, e.name));
     }
+    if (!e.yes && !cont && plan_.no_certificates) write_no_certificate(c.instance, e);
     std::ostringstream grid;
     write_instance(grid, c.instance,
                    {e.name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
@@ -140,6 +143,22 @@ class SetMaker {
     ev_.write(e.instance_file, grid.str());
     tally_.instances.push_back(e);
     if (ev_.instance) ev_.instance(tally_.instances.back());
+  }
+
+  // The solver's NO certificate, checked by the independent checker, as
+  // NAME.nocert. None if the solver hits plan_.solve_seconds.
+  void write_no_certificate(const Instance& inst, SetInstance& e) {
+    const PreparedInstance prep(inst);
+    SolveOptions opt;
+    opt.seconds = plan_.solve_seconds;
+    const CertifiedSolve cs = solve_discrete_certified(prep, opt);
+    if (cs.result.status == Verdict::Unknown) return;
+    if (cs.result.status != Verdict::No)
+      throw std::logic_error(e.name + ": the exact solver finds a schedule for an unsatisfiable formula");
+    const CertifyResult r = certify(inst, cs.certificate, "discrete");
+    if (!r.proved) throw std::logic_error(e.name + ": the NO certificate is rejected: " + r.reason);
+    e.no_certificate_file = e.name + ".nocert";
+    ev_.write(e.no_certificate_file, cs.certificate);
   }
 
   const InstanceSetPlan& plan_;

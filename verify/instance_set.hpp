@@ -6,7 +6,9 @@
 // is certified by a witness the exact simulator has accepted (the lifted
 // model as a schedule, or as start times in the continuous model), NO by
 // CaDiCaL's UNSAT of the source formula (the reduction preserves
-// satisfiability: docs/gadgets.md; verify and fuzz test it).
+// satisfiability: docs/gadgets.md; verify and fuzz test it) and, in the
+// discrete model, by the solver's NO certificate, which certify/ has
+// accepted (NAME.nocert; `gridlock certify` checks it without the solvers).
 //
 // make_instance_set never prints, never exits and writes no file itself: it
 // hands each file (name and text, in a safe order) to a callback, and
@@ -48,6 +50,11 @@ struct InstanceSetPlan {
   double sat_seconds = 60;          // CaDiCaL's limit per formula; undecided ones are skipped
   Shard shard;                      // instances i (given, threshold, lsat) with shard.has(i); not with want_*
   std::vector<ReductionModel> models = {ReductionModel::Discrete};  // 1 or 2, compiled in this order
+  // Discrete NO instances: the exact solver's NO certificate (docs/certificates.md),
+  // checked by certify/ and written as NAME.nocert. A NO the solver does not
+  // settle within solve_seconds (0: no limit) gets none (the manifest names none).
+  bool no_certificates = true;
+  double solve_seconds = 60;
   bool mix() const { return want_yes >= 0 || want_no >= 0; }
   // Formulas the plan asks for (without want_*).
   size_t planned() const { return given.size() + static_cast<size_t>(threshold) + static_cast<size_t>(lsat); }
@@ -65,7 +72,8 @@ struct SetInstance {
   size_t clauses = 0, lsat_clauses = 0;
   size_t nodes = 0, operations = 0, couplings = 0, max_coupling = 0;
   bool yes = false;
-  std::string certificate_file;  // YES: the witness (NAME.schedule or NAME.times); NO: ""
+  std::string certificate_file;     // YES: the witness (NAME.schedule or NAME.times); NO: ""
+  std::string no_certificate_file;  // discrete NO: NAME.nocert, checked by certify/; "" if none
 };
 
 struct InstanceSetTally {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "certify/certify.hpp"
 #include "cnf/dimacs.hpp"
 #include "cnf/lsat.hpp"
 #include "cnf/sat_solver.hpp"
@@ -19,6 +20,7 @@
 #include "reductions/to_lsat.hpp"
 #include "solver/continuous.hpp"
 #include "solver/gaps.hpp"
+#include "solver/no_certificate.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {
@@ -35,7 +37,7 @@ std::optional<VerifyModel> parse_verify_model(const std::string& s) {
 
 int VerifyResult::witnesses_checked() const {
   return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid) +
-         (csat_witness == Check::Valid) + (csolver_witness == Check::Valid);
+         (no_certificate == Check::Valid) + (csat_witness == Check::Valid) + (csolver_witness == Check::Valid);
 }
 
 namespace {
@@ -161,6 +163,21 @@ Lift lsat_form(VerifyResult& r, const VerifyOptions& opt, std::optional<LsatRedu
 // The discrete reduction: compile G, lift CaDiCaL's model to a schedule
 // through the simulator, the exact discrete solver (its YES order replayed
 // by the simulator, lifted back to F), the gap checker and its witness.
+// The NO certificate the solver wrote, through the independent checker.
+void check_no_certificate(const Instance& inst, const CertifiedSolve& cs, VerifyResult& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  r.certificate = cs.certificate;
+  if (cs.certificate.empty()) {
+    r.no_certificate = Check::Invalid;
+    r.certificate_issue = "the solver's NO has no certificate: " + cs.why_none;
+  } else {
+    const CertifyResult c = certify(inst, cs.certificate, "discrete");
+    r.no_certificate = c.proved ? Check::Valid : Check::Invalid;
+    if (!c.proved) r.certificate_issue = "the solver's NO certificate is rejected: " + c.reason;
+  }
+  r.ms_certify = ms_since(t0);
+}
+
 void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt,
                      std::unique_ptr<Simulator>& simulator, Problems& p) {
   r.ran_discrete = true;
@@ -183,8 +200,16 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
     r.sat_witness = sim.run_order(order).collision ? Check::Invalid : Check::Valid;
   }
   t0 = std::chrono::steady_clock::now();
-  SolveResult sr = solve_discrete(prep, solve_options(opt), &sim);
+  CertifiedSolve cs;
+  SolveOptions so = solve_options(opt);
+  // The default engine decides, as without certificates (the precedence
+  // engine then runs again on a NO to write the log: a second engine's NO).
+  if (inst.horizontal_only()) so.engine = SolveOptions::Engine::Sat;
+  if (opt.certify) cs = solve_discrete_certified(prep, so, &sim);
+  else cs.result = solve_discrete(prep, solve_options(opt), &sim);
+  const SolveResult& sr = cs.result;
   r.ms_solve = ms_since(t0);
+  if (opt.certify && sr.status == Verdict::No) check_no_certificate(inst, cs, r);
   r.solver_states = sr.stats.states;
   r.discrete = sr.status;
   if (r.discrete == Verdict::Yes) {
@@ -208,6 +233,7 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
   p.check(r.sat_witness, "the SAT model's schedule collides in the simulator");
   p.check(r.solver_witness, "the solver's schedule lifts to an assignment that falsifies the formula");
   p.check(r.gaps_witness, "running every coupling at time 0 collides in the simulator");
+  if (r.no_certificate == Check::Invalid) p.add(r.certificate_issue);
 }
 
 }  // namespace

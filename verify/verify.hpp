@@ -52,6 +52,10 @@ struct VerifyOptions {
   // small formulas stay small instances. Formulas with an empty clause still
   // go through to-lsat.
   bool direct = false;
+  // With every discrete NO, ask the solver for a NO certificate
+  // (solver/no_certificate.hpp) and check it with the independent checker
+  // (certify/certify.hpp); a missing or rejected certificate is a problem.
+  bool certify = true;
 };
 
 // A certificate check: not applicable, checked and valid, checked and INVALID.
@@ -68,6 +72,10 @@ struct VerifyResult {
   Check sat_witness = Check::None;                         // F's model -> schedule -> simulator
   Check solver_witness = Check::None;                      // solver's schedule -> assignment -> F
   Check gaps_witness = Check::None;                        // gaps YES: all couplings at time 0 -> simulator
+  Check no_certificate = Check::None;                      // discrete NO: its certificate -> certify
+  std::string certificate;                                 // that certificate (kept for reproducers)
+  std::string certificate_issue;                           // why no_certificate is Invalid
+  double ms_certify = 0;                                   // time of the independent check
   std::vector<std::string> sat_schedule, solver_schedule;  // coupling names
   // The continuous reduction (when VerifyOptions::model asks for it).
   bool ran_discrete = false, ran_continuous = false;

@@ -1,0 +1,153 @@
+#include "certify/certificate_text.hpp"
+
+#include <charconv>
+#include <cstdio>
+
+namespace gridlock {
+namespace {
+
+std::vector<std::string_view> words_of(std::string_view line) {
+  std::vector<std::string_view> w;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) w.push_back(line.substr(start, i - start));
+  }
+  return w;
+}
+
+bool parse_int(std::string_view s, int64_t& v) {
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  return ec == std::errc() && p == s.data() + s.size();
+}
+
+// "x,y" -> the node in that cell.
+std::optional<std::string> cell_node(const Instance& inst, std::string_view w, NodeId& out) {
+  const size_t comma = w.find(',');
+  Vec2 c{};
+  if (comma == std::string_view::npos || !parse_int(w.substr(0, comma), c.x) || !parse_int(w.substr(comma + 1), c.y))
+    return "'" + std::string(w) + "' is not a cell x,y";
+  out = inst.node_at(c);
+  if (out == kNone) return "no node in cell " + std::string(w);
+  return std::nullopt;
+}
+
+std::optional<std::string> coupling(const Instance& inst, std::string_view w, CouplingId& out) {
+  out = inst.find_coupling(std::string(w));
+  if (out == kNone) return "unknown coupling '" + std::string(w) + "'";
+  return std::nullopt;
+}
+
+// "a<b" -> (a, b).
+std::optional<std::string> literal(const Instance& inst, std::string_view w, OrderLiteral& out) {
+  const size_t lt = w.find('<');
+  if (lt == std::string_view::npos) return "'" + std::string(w) + "' is not an order literal a<b";
+  if (auto e = coupling(inst, w.substr(0, lt), out.first)) return e;
+  if (auto e = coupling(inst, w.substr(lt + 1), out.second)) return e;
+  if (out.first == out.second) return "'" + std::string(w) + "' orders a coupling before itself";
+  return std::nullopt;
+}
+
+std::string at(size_t line, const std::string& what) { return "line " + std::to_string(line) + ": " + what; }
+
+// The "p" and "couplings" lines.
+std::optional<std::string> header_line(const Instance& inst, const std::vector<std::string_view>& w, size_t line,
+                                       CertificateText& out) {
+  if (w[0] == "p") {
+    if (!out.model.empty()) return at(line, "a second p line");
+    if (w.size() != 4 || w[1] != "gridlock-no-certificate" || w[2] != "1")
+      return at(line, "expected 'p gridlock-no-certificate 1 MODEL'");
+    if (w[3] != "discrete" && w[3] != "continuous") return at(line, "model must be discrete or continuous");
+    out.model = std::string(w[3]);
+    return std::nullopt;
+  }
+  int64_t k = 0;
+  if (w.size() != 3 || !parse_int(w[1], k)) return at(line, "expected 'couplings COUNT DIGEST'");
+  char digest[17];
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(certificate_digest(inst)));
+  if (k != static_cast<int64_t>(inst.couplings().size()) || w[2] != digest)
+    return at(line, "certificate for another instance: its couplings are " + std::to_string(k) + " with digest " +
+                        std::string(w[2]) + ", this instance has " + std::to_string(inst.couplings().size()) +
+                        " with digest " + digest);
+  return std::nullopt;
+}
+
+std::optional<std::string> lemma_line(const Instance& inst, const std::vector<std::string_view>& w, size_t line,
+                                      CertificateText& out) {
+  if (out.kind != "gaps") return at(line, "lemma line outside a gaps proof");
+  CertificateLemma lem;
+  lem.line = line;
+  lem.cycle = w[0] == "o";
+  for (size_t i = 1; i < w.size(); ++i) {
+    OrderLiteral l;
+    if (auto e = literal(inst, w[i], l)) return at(line, *e);
+    lem.lits.push_back(l);
+  }
+  out.lemmas.push_back(std::move(lem));
+  return std::nullopt;
+}
+
+std::optional<std::string> evidence_line(const Instance& inst, const std::vector<std::string_view>& w, size_t line,
+                                         CertificateText& out) {
+  if (out.model.empty()) return at(line, "evidence before the p line");
+  if (!out.kind.empty()) return at(line, "a second kind of evidence ('" + std::string(w[0]) + "')");
+  out.kind = std::string(w[0]);
+  out.kind_line = line;
+  size_t first = 1;
+  if (out.kind == "breaker") {
+    if (w.size() < 2) return at(line, "breaker needs a coupling");
+    if (auto e = coupling(inst, w[1], out.breaker)) return at(line, *e);
+    first = 2;
+  }
+  for (size_t i = first; i < w.size(); ++i) {
+    NodeId v = kNone;
+    if (auto e = cell_node(inst, w[i], v)) return at(line, *e);
+    out.nodes.push_back(v);
+  }
+  if (out.kind == "gaps" && !out.nodes.empty()) return at(line, "gaps takes no cells");
+  if (out.kind == "final-gap" && out.nodes.size() != 2) return at(line, "final-gap takes two cells");
+  return std::nullopt;
+}
+
+}  // namespace
+
+uint64_t certificate_digest(const Instance& inst) {
+  uint64_t h = 14695981039346656037ull;
+  for (const Coupling& c : inst.couplings()) {
+    for (char ch : c.name + "\n") h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
+  }
+  return h;
+}
+
+std::optional<std::string> read_certificate(const Instance& inst, std::string_view text, CertificateText& out) {
+  out = CertificateText{};
+  bool digest_seen = false;
+  size_t line = 0;
+  for (size_t pos = 0; pos < text.size();) {
+    const size_t end = std::min(text.find('\n', pos), text.size());
+    const std::vector<std::string_view> w = words_of(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line;
+    if (w.empty() || w[0] == "c") continue;
+    std::optional<std::string> e;
+    if (w[0] == "p" || w[0] == "couplings") {
+      e = header_line(inst, w, line, out);
+      digest_seen |= w[0] == "couplings";
+    } else if (w[0] == "o" || w[0] == "l") {
+      e = lemma_line(inst, w, line, out);
+    } else if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "final-gap" || w[0] == "final-cycle") {
+      e = evidence_line(inst, w, line, out);
+    } else {
+      e = at(line, "unknown line kind '" + std::string(w[0]) + "'");
+    }
+    if (e) return e;
+  }
+  if (out.model.empty()) return std::string("no 'p gridlock-no-certificate 1 MODEL' line");
+  if (!digest_seen) return std::string("no 'couplings COUNT DIGEST' line");
+  if (out.kind.empty()) return std::string("no evidence (breaker, gaps, final-gap or final-cycle)");
+  return std::nullopt;
+}
+
+}  // namespace gridlock

@@ -1,0 +1,41 @@
+// Reading a NO certificate (docs/certificates.md, "Format"): lines of
+// words, '#'-free; 'c' lines are comments. Names are resolved against the
+// instance here, so everything after works on ids.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "lattice/instance.hpp"
+
+namespace gridlock {
+
+using OrderLiteral = std::pair<CouplingId, CouplingId>;  // (a, b): "a before b"
+
+struct CertificateLemma {
+  size_t line = 0;
+  bool cycle = false;  // 'o': no total order has all of `lits`; 'l': one of `lits` holds
+  std::vector<OrderLiteral> lits;
+};
+
+struct CertificateText {
+  std::string model;  // discrete | continuous
+  std::string kind;   // breaker | gaps | final-gap | final-cycle
+  size_t kind_line = 0;
+  CouplingId breaker = kNone;            // breaker
+  std::vector<NodeId> nodes;             // breaker, final-cycle: a closed walk; final-gap: the two ends
+  std::vector<CertificateLemma> lemmas;  // gaps
+};
+
+// Parses text against inst. Returns the reason on failure ("line N: ...").
+std::optional<std::string> read_certificate(const Instance& inst, std::string_view text, CertificateText& out);
+
+// FNV-1a (64 bits) of the coupling names in instance order, each followed
+// by '\n' (the "couplings" line).
+uint64_t certificate_digest(const Instance& inst);
+
+}  // namespace gridlock

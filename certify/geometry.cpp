@@ -1,0 +1,117 @@
+#include "certify/geometry.hpp"
+
+#include <algorithm>
+
+namespace gridlock {
+namespace {
+
+void normalise(CouplingForm& f) {
+  std::sort(f.terms.begin(), f.terms.end());
+  size_t out = 0;
+  for (size_t i = 0; i < f.terms.size();) {
+    int64_t sum = 0;
+    size_t j = i;
+    for (; j < f.terms.size() && f.terms[j].first == f.terms[i].first; ++j) sum += f.terms[j].second;
+    if (sum != 0) f.terms[out++] = {f.terms[i].first, sum};
+    i = j;
+  }
+  f.terms.resize(out);
+}
+
+}  // namespace
+
+CertifyGeometry::CertifyGeometry(const Instance& inst)
+    : inst_(inst), tree_(SpanningTree::build(inst)), regions_(Regions::build(inst)), depth_(inst.num_nodes(), 0) {
+  for (NodeId w : tree_.order)  // parents come before children in the Euler order
+    if (tree_.parent[w] != kNone) depth_[w] = depth_[tree_.parent[w]] + 1;
+}
+
+void CertifyGeometry::add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f) const {
+  const auto& ops = inst_.ops();
+  while (p != q) {
+    // Step up from the deeper end: its tree edge lies on the path.
+    const bool up_q = depth_[q] >= depth_[p];
+    const NodeId w = up_q ? q : p;
+    const OpId k = tree_.parent_op[w];
+    const int64_t dx = op_child_vector(inst_, tree_, w).x;
+    if (k != kNone && dx != 0) f.terms.push_back({ops[k].coupling, (up_q ? sign : -sign) * dx});
+    (up_q ? q : p) = tree_.parent[w];
+  }
+}
+
+std::optional<std::string> CertifyGeometry::walk_net(const std::vector<NodeId>& walk, const std::vector<char>& in,
+                                                     Vec2& net) const {
+  net = {0, 0};
+  for (size_t i = 0; i < walk.size(); ++i) {
+    const NodeId a = walk[i], b = walk[(i + 1) % walk.size()];
+    uint32_t e = kNone;
+    for (Dir d : kDirs)
+      if (inst_.neighbour(a, d) == b) e = inst_.edge_index(a, d);
+    if (e == kNone) return inst_.node_label(a) + " and " + inst_.node_label(b) + " are not joined by an edge";
+    const OpId k = inst_.edges()[e].op;
+    if (k == kNone || !in[inst_.ops()[k].coupling]) continue;
+    const Operation& op = inst_.ops()[k];
+    // b relative to a: an expansion u->v moves v away from u, a contraction toward it.
+    const Vec2 d = unit(op.dir);
+    const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
+    net = net + Vec2{s * d.x, s * d.y};
+  }
+  return std::nullopt;
+}
+
+CouplingForm CertifyGeometry::overlap_form(NodeId a, NodeId b) const {
+  CouplingForm f;
+  f.base = inst_.cells()[a].x + 1 - inst_.cells()[b].x;
+  // right(a) follows node ref[1] of a, left(b) node ref[0] of b: overlap = base + dx(ra) - dx(lb).
+  add_path(regions_.shapes[b].ref[0], regions_.shapes[a].ref[1], 1, f);
+  const auto& ops = inst_.ops();
+  const OpId ka = inst_.op_of_node(a), kb = inst_.op_of_node(b);
+  if (ka != kNone && ops[ka].kind == OpKind::Grow && ops[ka].u == a && ops[ka].dir == Dir::PosX)
+    f.terms.push_back({ops[ka].coupling, 1});
+  if (kb != kNone && ops[kb].kind == OpKind::Grow && ops[kb].u == b && ops[kb].dir == Dir::NegX)
+    f.terms.push_back({ops[kb].coupling, 1});
+  normalise(f);
+  return f;
+}
+
+bool CertifyGeometry::row_neighbours(NodeId a, NodeId b) const {
+  const Vec2 ca = inst_.cells()[a], cb = inst_.cells()[b];
+  if (ca.y != cb.y || ca.x >= cb.x) return false;
+  for (int64_t x = ca.x + 1; x < cb.x; ++x)
+    if (inst_.node_at({x, ca.y}) != kNone) return false;
+  return true;
+}
+
+std::vector<GapInequality> CertifyGeometry::gap_inequalities() const {
+  std::vector<NodeId> by_row(inst_.num_nodes());
+  for (NodeId w = 0; w < by_row.size(); ++w) by_row[w] = w;
+  const auto& cells = inst_.cells();
+  std::sort(by_row.begin(), by_row.end(), [&](NodeId p, NodeId q) {
+    return cells[p].y != cells[q].y ? cells[p].y < cells[q].y : cells[p].x < cells[q].x;
+  });
+  std::vector<GapInequality> out;
+  for (size_t i = 0; i + 1 < by_row.size(); ++i) {
+    const NodeId a = by_row[i], b = by_row[i + 1];
+    if (cells[a].y != cells[b].y) continue;
+    const CouplingForm f = overlap_form(a, b);
+    int64_t narrow = 0, widen = 0;
+    for (auto [q, c] : f.terms) (c > 0 ? narrow : widen) += c > 0 ? c : -c;
+    if (f.base + narrow <= 0) continue;  // never overlapping: no inequality
+    // After t runs: base + coef_t + sum of the coefs of those before t <= 0, i.e.
+    // sum_{u narrows} coef_u [u<t] + sum_{w widens} |coef_w| [t<w] <= -base - coef_t + sum |coef_w|.
+    for (auto [t, ct] : f.terms) {
+      if (ct <= 0) continue;
+      GapInequality g;
+      g.bound = -f.base - ct + widen;
+      for (auto [q, c] : f.terms) {
+        if (q == t) continue;
+        if (c > 0) g.terms.push_back({{q, t}, c});
+        else g.terms.push_back({{t, q}, -c});
+      }
+      out.push_back(std::move(g));
+    }
+  }
+  return out;
+}
+
+}  // namespace gridlock

@@ -1,0 +1,64 @@
+// What the checker derives from the instance itself, with the model's
+// definitions only (lattice/motion.hpp: the spanning tree, the regions and
+// which node each face follows). Horizontal displacements are linear forms
+// in the couplings done: each tree edge with an operation moves the child's
+// side by one unit (away from the parent for an expansion, toward it for a
+// contraction) when the operation's coupling is done.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "certify/certificate_text.hpp"
+#include "lattice/instance.hpp"
+#include "lattice/motion.hpp"
+
+namespace gridlock {
+
+// sum of coef * [coupling done] (+ base); terms sorted by coupling, no zeros.
+struct CouplingForm {
+  int64_t base = 0;
+  std::vector<std::pair<CouplingId, int64_t>> terms;
+};
+
+// One gap inequality: sum of weight * [lit] <= bound, every weight > 0.
+struct GapInequality {
+  std::vector<std::pair<OrderLiteral, int64_t>> terms;
+  int64_t bound = 0;
+};
+
+class CertifyGeometry {
+ public:
+  explicit CertifyGeometry(const Instance& inst);
+
+  // Net displacement around the closed walk (consecutive nodes and the last
+  // and first joined by edges) of the couplings with in[q] != 0, all done.
+  // Reason if two consecutive nodes are not joined by an edge.
+  std::optional<std::string> walk_net(const std::vector<NodeId>& walk, const std::vector<char>& in, Vec2& net) const;
+
+  // Overlap form of the row neighbours a (left) and b: right(a) - left(b)
+  // with a's growth toward +x and b's toward -x counted as part of the node
+  // (> 0: the two overlap).
+  CouplingForm overlap_form(NodeId a, NodeId b) const;
+
+  // True iff a and b are in the same row, a left of b, no node between.
+  bool row_neighbours(NodeId a, NodeId b) const;
+
+  // Every gap inequality of a horizontal-only instance: for each pair of
+  // row neighbours and each coupling t that narrows their gap, the gap is
+  // <= 0 right after t (docs/certificates.md, "Gap inequalities").
+  std::vector<GapInequality> gap_inequalities() const;
+
+ private:
+  // x-displacement of node q minus that of node p.
+  void add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f) const;
+  const Instance& inst_;
+  SpanningTree tree_;
+  Regions regions_;
+  std::vector<uint32_t> depth_;
+};
+
+}  // namespace gridlock

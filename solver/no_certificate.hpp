@@ -1,0 +1,47 @@
+// NO certificates: the text that `gridlock certify` (certify/, a checker
+// that shares none of this code) reads to confirm a NO without trusting
+// the solvers. Format and why each kind proves NO: docs/certificates.md.
+//
+// Discrete: a coupling that breaks a cycle (its face walk), or, for
+// horizontal-only instances, the learning precedence engine's log: every
+// cycle of order literals it met ("o" lines) and every nogood it learned
+// ("l" lines), ending with the empty clause. Continuous, horizontal-only:
+// running everything at once collides (paper, linear-time theorem): the
+// final configuration has a negative gap or a cycle that does not close.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "lattice/prepared.hpp"
+#include "solver/solve.hpp"
+
+namespace gridlock {
+
+// FNV-1a (64 bits) of the coupling names in instance order, each followed
+// by '\n': ties a certificate to its instance's couplings.
+uint64_t coupling_digest(const Instance& inst);
+
+struct CertifiedSolve {
+  SolveResult result;
+  std::string certificate;  // result NO: the certificate, or empty (then why_none says why)
+  std::string why_none;
+};
+
+// solve_discrete(prep, opt, replay), and with every NO a certificate when one can be
+// written: always for a cycle breaker; for a horizontal-only instance from
+// the precedence engine (engine Auto runs it instead of the SAT engine, so
+// the search runs once; after a NO of another engine it runs again, with
+// the same limits, to write the log). A NO of a non-horizontal instance
+// without a cycle breaker has none yet (why_none). Same exceptions as
+// solve_discrete; std::logic_error if the second run disagrees.
+CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt,
+                                        Simulator* replay = nullptr);
+
+// Continuous model, horizontal-only instances: if running everything at
+// once collides (check_gaps), the certificate naming why the final
+// configuration is invalid; empty if it does not collide. O(n + e).
+// Requires inst.horizontal_only().
+std::string continuous_no_certificate(const Instance& inst);
+
+}  // namespace gridlock

@@ -1,0 +1,114 @@
+// gridlock certify and solve --certificate end to end (the real binary on
+// real files): every kind of certificate written and accepted (exit 20,
+// "s NO", "c certificate checked"); broken ones refused with exit 1 and the
+// reason; YES instances get no certificate; verify and gen-instances use it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/cli.hpp"
+
+namespace gridlock {
+namespace {
+
+using test::run_gridlock;
+
+// (1,0) expands into (2,0), which sits beside it unjoined: NO in both models.
+const char* const kPush =
+    "p grid 6 5 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\nn 2 1\nn 2 0\n"
+    "e 0 0 1 0\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\no a expand 0 0 +x\n";
+// An expansion on one side of a square: a breaks the cycle.
+const char* const kSquare =
+    "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 0 0 1\ne 1 0 1 1\ne 0 1 1 1\no a expand 0 0 +x\n";
+
+void expect_certified(const std::string& grid, const std::string& cert, const std::string& model,
+                      const std::string& kind) {
+  const auto s = run_gridlock({"solve", grid, "--model", model, "--certificate", cert});
+  ASSERT_EQ(s.exit_code, 20) << s.out << s.err;
+  EXPECT_NE(s.out.find("certificate written to"), std::string::npos);
+  EXPECT_NE(test::read_file(cert).find(kind), std::string::npos) << test::read_file(cert);
+  const auto c = run_gridlock({"certify", grid, cert, "--model", model});
+  EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+  EXPECT_NE(c.out.find("s NO"), std::string::npos);
+  EXPECT_NE(c.out.find("c certificate checked"), std::string::npos);
+}
+
+TEST(CertifyCli, EveryKindWrittenAndChecked) {
+  const std::string d = test::temp_dir();
+  const std::string push = test::write_file(d + "/push.grid", kPush),
+                    square = test::write_file(d + "/sq.grid", kSquare);
+  expect_certified(push, d + "/push.cert", "discrete", "gaps");
+  expect_certified(push, d + "/push.ccert", "continuous", "final-gap 1,0 2,0");
+  expect_certified(square, d + "/sq.cert", "discrete", "breaker a");
+  expect_certified(square, d + "/sq.ccert", "continuous", "final-cycle");
+}
+
+TEST(CertifyCli, CompiledUnsatFormula) {
+  const std::string d = test::temp_dir();
+  // (x1 or x2) and (x1 or -x2) and (-x1 or x2) and (-x1 or -x2): unsatisfiable.
+  test::write_file(d + "/f.cnf", "p cnf 2 4\n1 2 0\n1 -2 0\n-1 2 0\n-1 -2 0\n");
+  ASSERT_EQ(run_gridlock({"compile", d + "/f.cnf", "-o", d + "/f.grid"}).exit_code, 0);
+  expect_certified(d + "/f.grid", d + "/f.cert", "discrete", "gaps");
+  // Its certificate is refused for another instance.
+  test::write_file(d + "/g.cnf", "p cnf 2 3\n1 2 0\n1 -2 0\n-1 2 0\n");
+  ASSERT_EQ(run_gridlock({"compile", d + "/g.cnf", "-o", d + "/g.grid"}).exit_code, 0);
+  const auto other = run_gridlock({"certify", d + "/g.grid", d + "/f.cert"});
+  EXPECT_EQ(other.exit_code, 1);
+  EXPECT_NE(other.err.find("certificate for another instance"), std::string::npos) << other.err;
+  // The satisfiable one gets no certificate (and leaves no file).
+  const auto yes = run_gridlock({"solve", d + "/g.grid", "--certificate", d + "/g.cert"});
+  EXPECT_EQ(yes.exit_code, 10);
+  EXPECT_FALSE(std::filesystem::exists(d + "/g.cert"));
+}
+
+TEST(CertifyCli, BrokenCertificatesRefusedWithTheReason) {
+  const std::string d = test::temp_dir();
+  const std::string push = test::write_file(d + "/push.grid", kPush),
+                    square = test::write_file(d + "/sq.grid", kSquare);
+  ASSERT_EQ(run_gridlock({"solve", push, "--certificate", d + "/p.cert"}).exit_code, 20);
+  const std::string good = test::read_file(d + "/p.cert");
+  struct Case {
+    std::string grid, text, model, reason;
+  };
+  const std::string head = good.substr(0, good.find("gaps"));
+  const Case cases[] = {
+      {push, head, "discrete", "no evidence"},
+      {push, head + "gaps\n", "discrete", "does not end with the empty clause"},
+      {push, head + "gaps\nl a<zz\nl\n", "discrete", "line 5: unknown coupling 'zz'"},
+      {push, head + "gaps\nl a<a\nl\n", "discrete", "orders a coupling before itself"},
+      {push, head + "final-gap 0,0 1,0\n", "discrete", "does not prove NO in the discrete model"},
+      {push, "p gridlock-no-certificate 1 continuous\n" + head.substr(head.find("couplings")) + "final-gap 0,0 1,0\n",
+       "continuous", "not negative"},
+      {push, good, "continuous", "a discrete certificate, checked as continuous"},
+      {square, head + "breaker a 0,0 1,0\n", "discrete", "sums to zero around this walk"},
+      {square, head + "breaker a 0,0 1,1\n", "discrete", "are not joined by an edge"},
+      {push, "", "discrete", "no 'p gridlock-no-certificate 1 MODEL' line"},
+  };
+  int i = 0;
+  for (const Case& c : cases) {
+    const std::string f = test::write_file(d + "/bad" + std::to_string(i++), c.text);
+    const auto r = run_gridlock({"certify", c.grid, f, "--model", c.model});
+    EXPECT_EQ(r.exit_code, 1) << c.text;
+    EXPECT_NE(r.err.find("gridlock: error: " + f + ": certificate rejected: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.reason), std::string::npos) << "want '" << c.reason << "' in " << r.err;
+  }
+}
+
+TEST(CertifyCli, VerifyAndGenInstancesUseIt) {
+  const std::string d = test::temp_dir();
+  test::write_file(d + "/f.cnf", "p cnf 2 4\n1 2 0\n1 -2 0\n-1 2 0\n-1 -2 0\n");
+  const auto v = run_gridlock({"verify", d + "/f.cnf"});
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  EXPECT_NE(v.out.find("1 NO certificates checked, 0 missing or rejected"), std::string::npos) << v.out;
+  const auto g = run_gridlock(
+      {"gen-instances", "-o", d + "/set", "--threshold", "0", "--lsat", "0", "--formula", d + "/f.cnf"});
+  ASSERT_EQ(g.exit_code, 0) << g.out << g.err;
+  const std::string manifest = test::read_file(d + "/set/manifest.json");
+  EXPECT_NE(manifest.find("\"file\": \"given-f.nocert\""), std::string::npos) << manifest;
+  const auto c = run_gridlock({"certify", d + "/set/given-f.grid", d + "/set/given-f.nocert"});
+  EXPECT_EQ(c.exit_code, 20) << c.err;
+}
+
+}  // namespace
+}  // namespace gridlock
