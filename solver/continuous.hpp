@@ -83,7 +83,16 @@ struct ContinuousResult {
 // cycle constraints built; stats.decisions / refuted: Z3 decisions and
 // conflicts summed over the components; stats.states: components solved by
 // Z3; stats.safe_moves: components settled by a cheap test (step 4).
-ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {});
+// Which search decides a component that the cheap tests do not settle.
+// Auto and Sat: the learning engine (solver/continuous_sat.hpp) when it
+// supports the component, else Z3; Z3: the Z3 encoding of step 5 always.
+// SatNoShortcuts (tests): as Sat, without the cheap tests (all at once,
+// layered, the discrete order), so the learning engine meets every
+// component it supports.
+enum class ContinuousEngine { Auto, Sat, Z3, SatNoShortcuts };
+
+ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {},
+                                  ContinuousEngine engine = ContinuousEngine::Auto);
 
 // How the general path encodes a pair constraint for Z3. Auto: a pair of
 // one coupling is decided at once; a pair of two couplings becomes "the
@@ -96,7 +105,9 @@ enum class PairEncoding { Auto, Segments };
 
 // Steps 2-6 alone, on any instance (horizontal-only ones too, where tests
 // and benchmarks compare it with check_gaps). Same contract.
+// Segments implies the Z3 engine.
 ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt = {},
-                                          PairEncoding encoding = PairEncoding::Auto);
+                                          PairEncoding encoding = PairEncoding::Auto,
+                                          ContinuousEngine engine = ContinuousEngine::Auto);
 
 }  // namespace gridlock

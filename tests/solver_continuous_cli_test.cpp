@@ -110,7 +110,7 @@ TEST(SolveContinuousCommand, BadOptionsAreErrors) {
   auto eng = run_gridlock(
       {"solve", kExamples + "model-case1-two-growths.grid", "--model", "continuous", "--engine", "states"});
   EXPECT_EQ(eng.exit_code, 1);
-  EXPECT_NE(eng.err.find("--engine applies to --model discrete only"), std::string::npos) << eng.err;
+  EXPECT_NE(eng.err.find("--engine with --model continuous must be auto, sat or z3"), std::string::npos) << eng.err;
   auto missing = run_gridlock({"solve", "/nonexistent.grid", "--model", "continuous"});
   EXPECT_EQ(missing.exit_code, 1);
 }
