@@ -250,9 +250,9 @@ class ComponentEncoder {
 // t_b >= t_a + lo (or t_a >= t_b - hi); longest paths from 0 give the times.
 // Accepted only if every pair and face of the component is collision-free at
 // them (pair_free_at_times, exact); nullopt otherwise.
-std::optional<std::vector<Rational>> layered_candidate(
-    const Component& comp, const ConstraintSystem& sys, const FaceNets& faces, std::vector<uint32_t>& local,
-    FreeOffsetsCache& cache) {
+std::optional<std::vector<Rational>> layered_candidate(const Component& comp, const ConstraintSystem& sys,
+                                                       const FaceNets& faces, std::vector<uint32_t>& local,
+                                                       FreeOffsetsCache& cache) {
   for (uint32_t j = 0; j < comp.couplings.size(); ++j) local[comp.couplings[j]] = j;
   struct Arc {
     uint32_t from, to;
@@ -368,9 +368,8 @@ struct ComponentOutcome {
 // refuted, decisions and propagations).
 ComponentOutcome solve_component_z3(z3::context& ctx, const Component& comp, const ConstraintSystem& sys,
                                     const FaceNets& faces, std::vector<int>& var_of, PairEncoding encoding,
-                                    FreeOffsetsCache& offsets_cache,
-                                    const SolveOptions& opt, double elapsed, uint64_t& conflicts,
-                                    SolveStats& stats) {
+                                    FreeOffsetsCache& offsets_cache, const SolveOptions& opt, double elapsed,
+                                    uint64_t& conflicts, SolveStats& stats) {
   ComponentOutcome out;
   z3::solver s(ctx, "QF_LRA");
   ComponentEncoder enc(ctx, s, comp, sys, faces, var_of, encoding, offsets_cache);
@@ -498,8 +497,8 @@ struct GeneralRun {
 // Decides one component that the cheap tests did not settle: the discrete
 // order (once per instance), then the sat engine or Z3. Writes the times
 // into run.res.schedule; returns the verdict.
-Verdict solve_hard_component(GeneralRun& run, const Component& comp, const ConstraintSystem& sys,
-                             const FaceNets& faces, z3::context& ctx, std::vector<int>& var_of, uint64_t& conflicts) {
+Verdict solve_hard_component(GeneralRun& run, const Component& comp, const ConstraintSystem& sys, const FaceNets& faces,
+                             z3::context& ctx, std::vector<int>& var_of, uint64_t& conflicts) {
   if (run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::SatNoShortcuts) {
     if (!run.tried_discrete) run.tried_discrete = true, run.discrete_times = discrete_candidate(run.inst, run.budget);
     if (!run.discrete_times.empty() && component_free_at(comp, sys, faces, run.discrete_times)) {
@@ -577,10 +576,8 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   res.stats.engine = run.used_sat ? "sat" : run.used_z3 ? "z3" : "trivial";
   if (v == Verdict::Yes && check_schedule_bounds(inst, res.schedule)) v = Verdict::Unknown;  // see the header
   res.status = v;
-  if (v == Verdict::Yes)
-    check_witness(inst, res.schedule);
-  else
-    res.schedule.start.clear();
+  if (v == Verdict::Yes) check_witness(inst, res.schedule);
+  else res.schedule.start.clear();
   res.stats.seconds = run.budget.elapsed();
   return res;
 }

@@ -1,10 +1,8 @@
 #include "solver/continuous_sat.hpp"
 
 #include <algorithm>
-#include <memory>
-#include <cstdio>
-#include <cstdlib>
 #include <deque>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <unordered_map>
@@ -81,7 +79,7 @@ constexpr bool kStrict[4] = {false, true, false, true};
 struct Edge {
   uint32_t from = 0, to = 0;
   int64_t w = 0;
-  int lit = 0;       // the SAT literal it comes from (0: none)
+  int lit = 0;        // the SAT literal it comes from (0: none)
   int32_t rule = -1;  // or the DiffRule it comes from
 };
 
@@ -104,16 +102,7 @@ class Engine {
       out.verdict = Verdict::No;
       return out;
     }
-    const bool dbg = std::getenv("GRIDLOCK_DEBUG_CONT") != nullptr;
-    if (dbg)
-      std::fprintf(stderr, "comp n=%zu pairs=%zu vars=%d static=%zu diff_rules=%zu lin_rules=%zu t=%.2f\n",
-                   couplings_.size(), pairs_.size(), sat_.num_vars(), static_.size(), diff_rules_.size(),
-                   lin_rules_.size(), budget_.elapsed());
     for (;;) {
-      if (dbg && stats_.decisions % 20 == 0)
-        std::fprintf(stderr, "  round %llu learned %llu z3 %llu conflicts %llu t=%.2f\n",
-                     (unsigned long long)stats_.decisions, (unsigned long long)stats_.propagations,
-                     (unsigned long long)stats_.memo_hits, (unsigned long long)stats_.refuted, budget_.elapsed());
       budget_.tick(stats_);
       ++stats_.decisions;
       const uint64_t before = sat_.conflicts();
@@ -237,8 +226,8 @@ class Engine {
 
   // The event t_(qs[j]) + delta of one gap: every choice of branches (0:
   // not started, 1: done, 2: partial) of the other couplings.
-  void encode_event(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j,
-                    int delta, int g) {
+  void encode_event(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j, int delta,
+                    int g) {
     const size_t m = qs.size();
     std::vector<int> branch(m, 0);
     for (;;) {
@@ -254,8 +243,8 @@ class Engine {
     }
   }
 
-  void encode_choice(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j,
-                     int delta, int g, const std::vector<int>& branch) {
+  void encode_choice(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j, int delta,
+                     int g, const std::vector<int>& branch) {
     const uint32_t r = qs[j];
     int64_t k = base + cs[j] * delta, lo = 0, hi = 0;
     std::vector<int> guard;
@@ -281,8 +270,8 @@ class Engine {
     const bool violated = partial.empty() ? k > 0 : k + lo >= 0;
     const bool holds = partial.empty() ? k <= 0 : k + hi <= 0;
     if (violated) {
-      std::vector<int> clause;
-      for (int l : guard) clause.push_back(-l);
+      std::vector<int> clause(guard.size());
+      std::transform(guard.begin(), guard.end(), clause.begin(), [](int l) { return -l; });
       sat_.add_clause(clause);
       return;
     }
@@ -292,10 +281,8 @@ class Engine {
       // K + cq (t_r + delta - t_q) <= 0.
       DiffRule rule;
       rule.guard = guard;
-      if (cq > 0)
-        rule.b = {r, q, Rational(-k - cq * delta, cq), false};
-      else
-        rule.b = {q, r, Rational(k + cq * delta, cq), false};
+      if (cq > 0) rule.b = {r, q, Rational(-k - cq * delta, cq), false};
+      else rule.b = {q, r, Rational(k + cq * delta, cq), false};
       diff_rules_.push_back(std::move(rule));
       return;
     }
@@ -365,8 +352,8 @@ class Engine {
 
   // Shortest path weights from a (reverse: to a) over the static edges, by
   // a queue-based Bellman-Ford (no negative cycle: checked before).
-  void paths_from(uint32_t a, const std::vector<Edge>& es, const std::vector<std::vector<uint32_t>>& out,
-                  bool reverse, std::vector<int64_t>& d, int64_t inf) {
+  void paths_from(uint32_t a, const std::vector<Edge>& es, const std::vector<std::vector<uint32_t>>& out, bool reverse,
+                  std::vector<int64_t>& d, int64_t inf) {
     std::fill(d.begin(), d.end(), inf);
     d[a] = 0;
     std::deque<uint32_t> queue{a};
@@ -437,6 +424,7 @@ class Engine {
     std::vector<char> queued(n, 1);
     std::deque<uint32_t> queue(n);
     std::iota(queue.begin(), queue.end(), 0u);
+    size_t relaxed = 0;
     while (!queue.empty()) {
       budget_.poll();
       const uint32_t u = queue.front();
@@ -450,8 +438,10 @@ class Engine {
         dist[e.to] = dist[u] + e.w;
         parent[e.to] = ei;
         len[e.to] = len[u] + 1;
-        if (len[e.to] >= n) {
-          std::vector<uint32_t> cyc = parent_cycle(es, parent, e.to);
+        // Walking the parent graph every n relaxations finds a cycle soon
+        // after it forms (waiting for a path of n edges can take n rounds).
+        if (len[e.to] >= n || ++relaxed % n == 0) {
+          std::vector<uint32_t> cyc = any_parent_cycle(es, parent, e.to);
           if (!cyc.empty()) return cyc;
         }
         if (!queued[e.to]) queued[e.to] = 1, queue.push_back(e.to);
@@ -460,13 +450,34 @@ class Engine {
     return {};
   }
 
+  // A cycle of the parent graph (first from v, then from every node), or
+  // empty. O(n).
+  std::vector<uint32_t> any_parent_cycle(const std::vector<Edge>& es, const std::vector<uint32_t>& parent, uint32_t v) {
+    std::vector<uint32_t> cyc = parent_cycle(es, parent, v);
+    if (!cyc.empty()) return cyc;
+    // Nodes marked by earlier walks of this scan lead to a root or to a walk
+    // already done: skip them (marks of older scans are smaller stamps).
+    const uint64_t scan = stamp_ + 1;
+    for (uint32_t u = 0; u < couplings_.size(); ++u) {
+      if (seen_[u] >= scan) continue;
+      cyc = parent_cycle(es, parent, u, scan);
+      if (!cyc.empty()) return cyc;
+    }
+    return {};
+  }
+
   // A cycle of the parent graph reached from v, or empty if the walk ends
   // at a root. Every cycle of the parent graph of a shortest-path relaxation
   // is negative (checked: a positive one would be a bug).
-  std::vector<uint32_t> parent_cycle(const std::vector<Edge>& es, const std::vector<uint32_t>& parent, uint32_t v) {
+  // Nodes of this walk get a fresh stamp; a walk that meets a node of an
+  // earlier walk of the same scan (stamp >= scan) stops: it ends where that
+  // one ended. scan == 0: a walk on its own.
+  std::vector<uint32_t> parent_cycle(const std::vector<Edge>& es, const std::vector<uint32_t>& parent, uint32_t v,
+                                     uint64_t scan = 0) {
     ++stamp_;
     if (seen_.size() != couplings_.size()) seen_.assign(couplings_.size(), 0);
     while (seen_[v] != stamp_) {
+      if (scan != 0 && seen_[v] >= scan) return {};
       seen_[v] = stamp_;
       if (parent[v] == UINT32_MAX) return {};
       v = es[parent[v]].from;
@@ -575,9 +586,11 @@ class Engine {
   void build_z3() {
     z3ctx_ = std::make_unique<z3::context>();
     z3s_ = std::make_unique<z3::solver>(*z3ctx_, "QF_LRA");
-    for (size_t q = 0; q < couplings_.size(); ++q) zt_.push_back((*z3ctx_).real_const(("t" + std::to_string(q)).c_str()));
+    for (size_t q = 0; q < couplings_.size(); ++q)
+      zt_.push_back((*z3ctx_).real_const(("t" + std::to_string(q)).c_str()));
     zb_.push_back((*z3ctx_).bool_val(true));
-    for (size_t v = 1; v <= meaning_.size(); ++v) zb_.push_back((*z3ctx_).bool_const(("b" + std::to_string(v)).c_str()));
+    for (size_t v = 1; v <= meaning_.size(); ++v)
+      zb_.push_back((*z3ctx_).bool_const(("b" + std::to_string(v)).c_str()));
     for (const Bound& b : static_) z3s_->add(z3_bound(b));
     for (size_t v = 1; v <= meaning_.size(); ++v) {
       const VarMeaning& m = meaning_[v - 1];
@@ -664,7 +677,8 @@ std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sy
   for (uint32_t ci : pairs) {
     const CollisionConstraint& c = sys.constraints[ci];
     if (c.rel.size() <= 2) continue;
-    if (c.rel.size() > kMaxGapCouplings) return "a pair of more than " + std::to_string(kMaxGapCouplings) + " couplings";
+    if (c.rel.size() > kMaxGapCouplings)
+      return "a pair of more than " + std::to_string(kMaxGapCouplings) + " couplings";
     if (c.num_forms > 1 && !forms_exclusive(c)) return "a pair of three or more couplings with several forms";
   }
   return std::nullopt;

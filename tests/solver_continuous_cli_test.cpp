@@ -89,15 +89,19 @@ TEST(SolveContinuousCommand, ContinuousYesWhereDiscreteSaysNo) {
   EXPECT_TRUE(j["stats"].contains("constraints"));
 }
 
-// The mutual wait is proved NO by Z3.
+// The mutual wait is proved NO by the learning engine (the default) and by
+// Z3 (--engine z3).
 TEST(SolveContinuousCommand, NoFromZ3OnANonHorizontalInstance) {
   std::string dir = test::temp_dir();
   std::string grid = test::write_file(dir + "/n.grid", kMutualWait);
   auto r = run_gridlock({"solve", grid, "--model", "continuous", "--json"});
   ASSERT_EQ(r.exit_code, 20) << r.out << r.err;
   auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["engine"], "z3") << r.out;
+  EXPECT_EQ(j["engine"], "sat") << r.out;
   EXPECT_EQ(j["status"], "NO");
+  auto z = run_gridlock({"solve", grid, "--model", "continuous", "--engine", "z3", "--json"});
+  ASSERT_EQ(z.exit_code, 20) << z.out << z.err;
+  EXPECT_EQ(nlohmann::json::parse(z.out)["engine"], "z3") << z.out;
   // No order works either.
   auto disc = run_gridlock({"solve", grid});
   EXPECT_EQ(disc.exit_code, 20) << disc.out;

@@ -98,9 +98,10 @@ TEST(ContinuousSat, AgreesWithZ3AndTwin) {
   EXPECT_GT(yes, per_family / 4);
   EXPECT_GT(no, per_family / 4);
   EXPECT_GT(by_sat, per_family);  // the engine itself answered, not only its fallback
-  std::printf("sat engine: %d YES, %d NO, %d decided by the engine (%llu Z3 conjunction checks), %d also against "
-              "the twin\n",
-              yes, no, by_sat, static_cast<unsigned long long>(z3_calls), twin_checked);
+  std::printf(
+      "sat engine: %d YES, %d NO, %d decided by the engine (%llu Z3 conjunction checks), %d also against "
+      "the twin\n",
+      yes, no, by_sat, static_cast<unsigned long long>(z3_calls), twin_checked);
 }
 
 // The default (shortcuts, then the engine) answers as the Z3 path does.
@@ -145,8 +146,8 @@ TEST(ContinuousSat, CompiledFormulasMatchCadical) {
   const int formulas = test::scaled(3);
   for (int s = 1; s <= formulas; ++s) {
     const std::string seed = std::to_string(20261125 + s);
-    const std::string cnf = dir + "/f" + seed + ".cnf", lsat = dir + "/f" + seed + ".l.cnf",
-                      grid = dir + "/f" + seed + ".grid";
+    const std::string stem = dir + "/f" + seed;  // NOLINT(performance-inefficient-string-concatenation)
+    const std::string cnf = stem + ".cnf", lsat = stem + ".l.cnf", grid = stem + ".grid";
     ASSERT_EQ(test::run_gridlock({"cnf", "gen", "ksat", "--n", "3", "--m", "10", "--seed", seed, "-o", cnf}).exit_code,
               0);
     ASSERT_EQ(test::run_gridlock({"cnf", "to-lsat", cnf, "-o", lsat}).exit_code, 0);

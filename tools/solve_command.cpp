@@ -149,10 +149,8 @@ int run_solve(const std::vector<std::string>& args) {
     throw UserError("--model must be discrete or continuous, not '" + model + "'");
   ContinuousEngine cont_engine = ContinuousEngine::Auto;
   if (model == "continuous") {
-    if (engine == "z3")
-      cont_engine = ContinuousEngine::Z3;
-    else if (engine == "sat")
-      cont_engine = ContinuousEngine::Sat;
+    if (engine == "z3") cont_engine = ContinuousEngine::Z3;
+    else if (engine == "sat") cont_engine = ContinuousEngine::Sat;
     else if (engine != "auto")
       throw UserError("--engine with --model continuous must be auto, sat or z3, not '" + engine + "'");
   }
