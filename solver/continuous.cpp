@@ -515,7 +515,7 @@ Verdict solve_hard_component(GeneralRun& run, const Component& comp, const Const
   if (sat_ok) {
     run.used_sat = true;
     ContinuousSatOutcome got = solve_component_sat(sys, comp.couplings, comp.pairs, run.offsets_cache, run.budget,
-                                                   run.res.stats);
+                                                   run.res.stats, run.engine == ContinuousEngine::SatNoShortcuts);
     for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
     return got.verdict;
   }

@@ -99,7 +99,8 @@ struct ContinuousResult {
 // supports the component, else Z3; Z3: the Z3 encoding of step 5 always.
 // SatNoShortcuts (tests): as Sat, without the cheap tests (all at once,
 // layered, the discrete order), so the learning engine meets every
-// component it supports.
+// component it supports, and every model with an active linear rule goes to
+// Z3 (not only those whose potentials break one).
 enum class ContinuousEngine { Auto, Sat, Z3, SatNoShortcuts };
 
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {},

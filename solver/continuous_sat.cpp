@@ -91,6 +91,8 @@ class Engine {
     for (uint32_t j = 0; j < couplings.size(); ++j) local_.emplace(couplings[j], j);
   }
 
+  bool z3_for_linear = false;  // see solve_component_sat
+
   ContinuousSatOutcome run() {
     ContinuousSatOutcome out;
     if (!encode()) {
@@ -526,7 +528,7 @@ class Engine {
     for (size_t q = 0; q < t.size(); ++q) t[q] = Rational(dist[q], scale_);
     bool linear_ok = true;
     for (const LinRule& r : lin_rules_)
-      if (guard_true(r.guard) && !holds(r, t)) {
+      if (guard_true(r.guard) && (z3_for_linear || !holds(r, t))) {
         linear_ok = false;
         break;
       }
@@ -686,8 +688,9 @@ std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sy
 
 ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
                                          const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
-                                         SearchBudget& budget, SolveStats& stats) {
+                                         SearchBudget& budget, SolveStats& stats, bool z3_for_linear) {
   Engine engine(sys, couplings, pairs, cache, budget, stats);
+  engine.z3_for_linear = z3_for_linear;
   return engine.run();
 }
 

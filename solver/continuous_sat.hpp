@@ -78,8 +78,10 @@ struct ContinuousSatOutcome {
 // refuted += CaDiCaL conflicts, propagations += learned theory clauses,
 // memo_hits += Z3 calls. Time per round: one CaDiCaL call plus
 // O(n * edges) for Bellman-Ford in the worst case (near linear in practice).
+// z3_for_linear (tests): a model with an active linear rule always goes to
+// Z3, even when the potentials meet every rule (so tests reach that path).
 ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
                                          const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
-                                         SearchBudget& budget, SolveStats& stats);
+                                         SearchBudget& budget, SolveStats& stats, bool z3_for_linear = false);
 
 }  // namespace gridlock
