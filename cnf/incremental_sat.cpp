@@ -47,6 +47,8 @@ Verdict IncrementalSat::solve(const std::function<bool(uint64_t)>& stop) {
   return code == 10 ? Verdict::Yes : code == 20 ? Verdict::No : Verdict::Unknown;
 }
 
+void IncrementalSat::set_phase(int lit) { impl_->solver.phase(lit); }
+
 bool IncrementalSat::value(int var) const { return impl_->solver.val(var) > 0; }
 
 uint64_t IncrementalSat::conflicts() const { return impl_->conflicts; }

@@ -32,6 +32,8 @@ class IncrementalSat {
   // add_clause or solve.
   Verdict solve(const std::function<bool(uint64_t conflicts)>& stop);
   bool value(int var) const;
+  // The value the search tries first for lit's variable (lit true). O(1).
+  void set_phase(int lit);
   uint64_t conflicts() const;  // over all solve calls
 
  private:

@@ -14,7 +14,9 @@
 #include "lattice/simulate.hpp"
 #include "solver/constraints.hpp"
 #include "solver/continuous_pairs.hpp"
+#include "solver/continuous_sat.hpp"
 #include "solver/gaps.hpp"
+#include "solver/search.hpp"
 
 namespace gridlock {
 
@@ -63,7 +65,7 @@ class ComponentEncoder {
  public:
   ComponentEncoder(z3::context& ctx, z3::solver& s, const Component& comp, const ConstraintSystem& sys,
                    const FaceNets& faces, std::vector<int>& var_of, PairEncoding encoding,
-                   std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& offsets_cache)
+                   FreeOffsetsCache& offsets_cache)
       : ctx_(ctx),
         s_(s),
         comp_(comp),
@@ -237,7 +239,7 @@ class ComponentEncoder {
   const FaceNets& faces_;
   std::vector<int>& var_of_;
   PairEncoding encoding_;
-  std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& cache_;
+  FreeOffsetsCache& cache_;
   std::vector<z3::expr> t_;
   uint64_t counter_ = 0;
 };
@@ -248,9 +250,9 @@ class ComponentEncoder {
 // t_b >= t_a + lo (or t_a >= t_b - hi); longest paths from 0 give the times.
 // Accepted only if every pair and face of the component is collision-free at
 // them (pair_free_at_times, exact); nullopt otherwise.
-std::optional<std::vector<Rational>> layered_candidate(
-    const Component& comp, const ConstraintSystem& sys, const FaceNets& faces, std::vector<uint32_t>& local,
-    std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& cache) {
+std::optional<std::vector<Rational>> layered_candidate(const Component& comp, const ConstraintSystem& sys,
+                                                       const FaceNets& faces, std::vector<uint32_t>& local,
+                                                       FreeOffsetsCache& cache) {
   for (uint32_t j = 0; j < comp.couplings.size(); ++j) local[comp.couplings[j]] = j;
   struct Arc {
     uint32_t from, to;
@@ -352,10 +354,6 @@ bool component_free_all_at_once(const Component& comp, const ConstraintSystem& s
   return at_once;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // What Z3 says of one component: Yes with its couplings' start times (in
 // comp.couplings order, the earliest at 0), No, or Unknown (opt's time or
 // conflict budget spent, Z3 gave up, or a time is no Rational).
@@ -370,15 +368,14 @@ struct ComponentOutcome {
 // refuted, decisions and propagations).
 ComponentOutcome solve_component_z3(z3::context& ctx, const Component& comp, const ConstraintSystem& sys,
                                     const FaceNets& faces, std::vector<int>& var_of, PairEncoding encoding,
-                                    std::map<std::vector<int64_t>, std::vector<OffsetInterval>>& offsets_cache,
-                                    const SolveOptions& opt, std::chrono::steady_clock::time_point start,
+                                    FreeOffsetsCache& offsets_cache, const SolveOptions& opt, double elapsed,
                                     uint64_t& conflicts, SolveStats& stats) {
   ComponentOutcome out;
   z3::solver s(ctx, "QF_LRA");
   ComponentEncoder enc(ctx, s, comp, sys, faces, var_of, encoding, offsets_cache);
   enc.encode();
   if (opt.seconds > 0) {
-    double left = opt.seconds - seconds_since(start);
+    double left = opt.seconds - elapsed;
     if (left <= 0) return out;
     s.set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
   }
@@ -422,8 +419,8 @@ void check_witness(const Instance& inst, const Schedule& sched) {
 
 }  // namespace
 
-ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt) {
-  if (!inst.horizontal_only()) return solve_continuous_general(inst, opt);
+ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt, ContinuousEngine engine) {
+  if (!inst.horizontal_only()) return solve_continuous_general(inst, opt, PairEncoding::Auto, engine);
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   ContinuousResult res;
@@ -444,63 +441,144 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt)
   }
 }
 
-ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt, PairEncoding encoding) {
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return seconds_since(start); };
-  ContinuousResult res;
-  const size_t k = inst.couplings().size();
-  const FaceNets faces = FaceNets::build(inst);
-  const SpanningTree tree = SpanningTree::build(inst);
-  const ConstraintSystem sys = build_pair_constraints(inst, tree);
-  res.stats.constraints = sys.constraints.size() + faces.faces.size();
-  const std::vector<Component> comps = components_of(k, sys, faces);
+namespace {
 
-  res.schedule.start.assign(k, Rational(0));
+// The discrete solver's order as start times 0, 1, 2, ... (a discrete YES is
+// a continuous YES), within a small share of the budget; empty if it found
+// no order in time.
+std::vector<Rational> discrete_candidate(const Instance& inst, const SearchBudget& budget) {
+  SolveOptions d;
+  d.seconds = 1.0;
+  if (budget.deadline().limit() > 0) d.seconds = std::min(1.0, (budget.deadline().limit() - budget.elapsed()) / 10);
+  if (d.seconds <= 0.01) return {};
+  SolveResult r = solve_discrete(inst, d);
+  if (r.status != Verdict::Yes) return {};
+  std::vector<Rational> t(inst.couplings().size(), Rational(0));
+  for (size_t i = 0; i < r.order.size(); ++i) t[r.order[i]] = Rational(static_cast<int64_t>(i));
+  return t;
+}
+
+// True iff the times t (per coupling of the instance) keep every pair and
+// face of comp collision-free (exact).
+bool component_free_at(const Component& comp, const ConstraintSystem& sys, const FaceNets& faces,
+                       const std::vector<Rational>& t) {
+  for (uint32_t ci : comp.pairs) {
+    const CollisionConstraint& c = sys.constraints[ci];
+    std::vector<Rational> st;
+    for (CouplingId q : c.rel) st.push_back(t[q]);
+    if (!pair_free_at_times(c, st)) return false;
+  }
+  for (uint32_t fi : comp.faces) {
+    const auto& nets = faces.faces[fi].nets;
+    for (auto& [q, v] : nets) {
+      Vec2 sum{0, 0};
+      for (auto& [r, w] : nets)
+        if (t[r] == t[q]) sum += w;
+      if (!sum.is_zero()) return false;
+    }
+  }
+  return true;
+}
+
+// Everything solve_continuous_general shares between its steps.
+struct GeneralRun {
+  const Instance& inst;
+  const SolveOptions& opt;
+  PairEncoding encoding;
+  ContinuousEngine engine;
+  SearchBudget budget;
+  ContinuousResult res;
+  FreeOffsetsCache offsets_cache;
+  bool tried_discrete = false;
+  std::vector<Rational> discrete_times;
+  bool used_z3 = false, used_sat = false;
+};
+
+// Decides one component that the cheap tests did not settle: the discrete
+// order (once per instance), then the sat engine or Z3. Writes the times
+// into run.res.schedule; returns the verdict.
+Verdict solve_hard_component(GeneralRun& run, const Component& comp, const ConstraintSystem& sys, const FaceNets& faces,
+                             z3::context& ctx, std::vector<int>& var_of, uint64_t& conflicts) {
+  if (run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::SatNoShortcuts) {
+    if (!run.tried_discrete) run.tried_discrete = true, run.discrete_times = discrete_candidate(run.inst, run.budget);
+    if (!run.discrete_times.empty() && component_free_at(comp, sys, faces, run.discrete_times)) {
+      Rational lo = run.discrete_times[comp.couplings[0]];
+      for (CouplingId q : comp.couplings) lo = std::min(lo, run.discrete_times[q]);
+      for (CouplingId q : comp.couplings) run.res.schedule.start[q] = run.discrete_times[q] - lo;
+      ++run.res.stats.safe_moves;
+      return Verdict::Yes;
+    }
+  }
+  ++run.res.stats.states;
+  const bool sat_ok = run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::Z3 &&
+                      !continuous_sat_unsupported(sys, comp.pairs, comp.faces.size());
+  if (sat_ok) {
+    run.used_sat = true;
+    ContinuousSatOutcome got = solve_component_sat(sys, comp.couplings, comp.pairs, run.offsets_cache, run.budget,
+                                                   run.res.stats, run.engine == ContinuousEngine::SatNoShortcuts);
+    for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
+    return got.verdict;
+  }
+  run.used_z3 = true;
+  ComponentOutcome got = solve_component_z3(ctx, comp, sys, faces, var_of, run.encoding, run.offsets_cache, run.opt,
+                                            run.budget.elapsed(), conflicts, run.res.stats);
+  for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
+  return got.verdict;
+}
+
+// The general path inside the budget (throws LimitReached).
+Verdict solve_general_within(GeneralRun& run) {
+  const size_t k = run.inst.couplings().size();
+  const FaceNets faces = FaceNets::build(run.inst);
+  run.budget.check();
+  const SpanningTree tree = SpanningTree::build(run.inst);
+  const ConstraintSystem sys = build_pair_constraints(run.inst, tree, &run.budget.deadline());
+  run.res.stats.constraints = sys.constraints.size() + faces.faces.size();
+  const std::vector<Component> comps = components_of(k, sys, faces);
+  run.res.schedule.start.assign(k, Rational(0));
   z3::context ctx;
   std::vector<int> var_of(k, -1);
-  std::map<std::vector<int64_t>, std::vector<OffsetInterval>> offsets_cache;
   std::vector<uint32_t> local(k, 0);
-  bool unknown = false, needed_z3 = false;
   uint64_t conflicts = 0;
   for (const Component& comp : comps) {
-    if (component_free_all_at_once(comp, sys, faces)) {
-      ++res.stats.safe_moves;
+    run.budget.check();
+    const bool shortcuts = run.engine != ContinuousEngine::SatNoShortcuts;
+    if (shortcuts && component_free_all_at_once(comp, sys, faces)) {
+      ++run.res.stats.safe_moves;
       continue;
     }
-    if (encoding == PairEncoding::Auto) {
-      if (auto t = layered_candidate(comp, sys, faces, local, offsets_cache)) {
-        for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = (*t)[j];
-        ++res.stats.safe_moves;
+    if (shortcuts && run.encoding == PairEncoding::Auto) {
+      if (auto t = layered_candidate(comp, sys, faces, local, run.offsets_cache)) {
+        for (size_t j = 0; j < comp.couplings.size(); ++j) run.res.schedule.start[comp.couplings[j]] = (*t)[j];
+        ++run.res.stats.safe_moves;
         continue;
       }
     }
-    needed_z3 = true;
-    ++res.stats.states;
-    ComponentOutcome got = solve_component_z3(ctx, comp, sys, faces, var_of, encoding, offsets_cache, opt, start,
-                                              conflicts, res.stats);
-    if (got.verdict == Verdict::No) {
-      res.status = Verdict::No;
-      res.stats.engine = "z3";
-      res.stats.seconds = elapsed();
-      res.schedule.start.clear();
-      return res;
-    }
-    if (got.verdict == Verdict::Unknown) {
-      unknown = true;
-      break;
-    }
-    for (size_t j = 0; j < comp.couplings.size(); ++j) res.schedule.start[comp.couplings[j]] = got.start[j];
+    Verdict v = solve_hard_component(run, comp, sys, faces, ctx, var_of, conflicts);
+    if (v != Verdict::Yes) return v;
   }
-  res.stats.engine = needed_z3 ? "z3" : "trivial";
-  if (!unknown && check_schedule_bounds(inst, res.schedule)) unknown = true;  // see the header: never observed
-  if (unknown) {
-    res.status = Verdict::Unknown;
-    res.schedule.start.clear();
-  } else {
-    res.status = Verdict::Yes;
-    check_witness(inst, res.schedule);
+  return Verdict::Yes;
+}
+
+}  // namespace
+
+ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt, PairEncoding encoding,
+                                          ContinuousEngine engine) {
+  GeneralRun run{inst, opt, encoding, engine, SearchBudget(opt), {}, {}, false, {}, false, false};
+  ContinuousResult& res = run.res;
+  Verdict v = Verdict::Unknown;
+  try {
+    v = solve_general_within(run);
+  } catch (const LimitReached&) {
+    v = Verdict::Unknown;
   }
-  res.stats.seconds = elapsed();
+  run.budget.clear_progress();
+  res.stats.engine = run.used_sat ? "sat" : run.used_z3 ? "z3" : "trivial";
+  if (v == Verdict::Yes && check_schedule_bounds(inst, res.schedule)) v = Verdict::Unknown;  // see the header
+  res.status = v;
+  if (v == Verdict::Yes) check_witness(inst, res.schedule);
+  else res.schedule.start.clear();
+  res.stats.seconds = run.budget.elapsed();
   return res;
 }
 

@@ -25,7 +25,12 @@
 //     "layered" schedule that its two-coupling pairs ask for (t_b >= t_a + lo
 //     where offset 0 collides), as early as possible (longest paths), checked
 //     pair by pair (pair_free_at_times) and face by face;
-//  5. otherwise Z3 (QF_LRA, exact rationals) decides the component: start
+//  4b. then the discrete solver's order (solve_discrete, 1 s at most, once
+//     per instance) as start times 0, 1, 2, ..., checked exactly per pair;
+//  4c. then the learning engine (solver/continuous_sat.hpp: CaDiCaL over
+//     difference atoms, Bellman-Ford and Z3 on conjunctions) for every
+//     component it supports (no faces with non-zero nets; see its header);
+//  5. otherwise (or with ContinuousEngine::Z3) Z3 (QF_LRA, exact rationals) decides the component: start
 //     times t_q in [0, k] (k couplings; idle time can always be cut out).
 //     A pair of two couplings depends only on the offset of their start
 //     times; its collision-free offsets are computed exactly beforehand
@@ -44,12 +49,15 @@
 //     solve_continuous throws std::logic_error (a bug, never a silent wrong
 //     answer).
 //
-// Limits: SolveOptions::seconds is passed to Z3 as the remaining time per
-// component; SolveOptions::max_states bounds the sum of Z3 conflicts (a
-// component that needs more stops with Unknown). A Z3 model whose start
+// Limits: SolveOptions::seconds covers everything, the pair building
+// included (checked every few pairs; stop requests too), and is passed to Z3
+// as the remaining time per component; SolveOptions::max_states bounds the
+// learning engine's rounds plus CaDiCaL conflicts, and the sum of Z3
+// conflicts on the Z3 path (a component that needs more stops with
+// Unknown). SolveOptions::progress draws the progress line. A Z3 model whose start
 // times do not fit kMaxStartTime / kMaxDenominator (lattice/schedule.hpp)
 // gives Unknown (never observed; the model's values are vertices of small
-// integer systems). SolveOptions::engine is ignored.
+// integer systems). SolveOptions::engine is ignored (see ContinuousEngine).
 //
 // Sizes measured (docs/performance.md, CPU time on the loaded CI machine):
 // separation chains t_b >= t_a + 1 (the continuous reduction's contract) of
@@ -79,11 +87,24 @@ struct ContinuousResult {
 
 // Decides Continuous Collision-free Schedule exactly (any instance), or
 // Unknown on a limit of opt. stats.engine: "gaps" (horizontal-only),
-// "trivial" (no constraint needs Z3), "z3". stats.constraints: pair and
-// cycle constraints built; stats.decisions / refuted: Z3 decisions and
-// conflicts summed over the components; stats.states: components solved by
-// Z3; stats.safe_moves: components settled by a cheap test (step 4).
-ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {});
+// "trivial" (every component settled by a cheap test), "sat" (the learning
+// engine decided some component), "z3". stats.constraints: pair and cycle
+// constraints built; stats.decisions / refuted: Z3 decisions and conflicts
+// (learning engine: rounds and CaDiCaL conflicts) summed over the
+// components; stats.states: components searched plus search nodes;
+// stats.propagations: learned theory clauses; stats.safe_moves: components
+// settled by a cheap test (steps 4, 4b).
+// Which search decides a component that the cheap tests do not settle.
+// Auto and Sat: the learning engine (solver/continuous_sat.hpp) when it
+// supports the component, else Z3; Z3: the Z3 encoding of step 5 always.
+// SatNoShortcuts (tests): as Sat, without the cheap tests (all at once,
+// layered, the discrete order), so the learning engine meets every
+// component it supports, and every model with an active linear rule goes to
+// Z3 (not only those whose potentials break one).
+enum class ContinuousEngine { Auto, Sat, Z3, SatNoShortcuts };
+
+ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {},
+                                  ContinuousEngine engine = ContinuousEngine::Auto);
 
 // How the general path encodes a pair constraint for Z3. Auto: a pair of
 // one coupling is decided at once; a pair of two couplings becomes "the
@@ -96,7 +117,9 @@ enum class PairEncoding { Auto, Segments };
 
 // Steps 2-6 alone, on any instance (horizontal-only ones too, where tests
 // and benchmarks compare it with check_gaps). Same contract.
+// Segments implies the Z3 engine.
 ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt = {},
-                                          PairEncoding encoding = PairEncoding::Auto);
+                                          PairEncoding encoding = PairEncoding::Auto,
+                                          ContinuousEngine engine = ContinuousEngine::Auto);
 
 }  // namespace gridlock

@@ -89,15 +89,19 @@ TEST(SolveContinuousCommand, ContinuousYesWhereDiscreteSaysNo) {
   EXPECT_TRUE(j["stats"].contains("constraints"));
 }
 
-// The mutual wait is proved NO by Z3.
+// The mutual wait is proved NO by the learning engine (the default) and by
+// Z3 (--engine z3).
 TEST(SolveContinuousCommand, NoFromZ3OnANonHorizontalInstance) {
   std::string dir = test::temp_dir();
   std::string grid = test::write_file(dir + "/n.grid", kMutualWait);
   auto r = run_gridlock({"solve", grid, "--model", "continuous", "--json"});
   ASSERT_EQ(r.exit_code, 20) << r.out << r.err;
   auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["engine"], "z3") << r.out;
+  EXPECT_EQ(j["engine"], "sat") << r.out;
   EXPECT_EQ(j["status"], "NO");
+  auto z = run_gridlock({"solve", grid, "--model", "continuous", "--engine", "z3", "--json"});
+  ASSERT_EQ(z.exit_code, 20) << z.out << z.err;
+  EXPECT_EQ(nlohmann::json::parse(z.out)["engine"], "z3") << z.out;
   // No order works either.
   auto disc = run_gridlock({"solve", grid});
   EXPECT_EQ(disc.exit_code, 20) << disc.out;
@@ -110,7 +114,7 @@ TEST(SolveContinuousCommand, BadOptionsAreErrors) {
   auto eng = run_gridlock(
       {"solve", kExamples + "model-case1-two-growths.grid", "--model", "continuous", "--engine", "states"});
   EXPECT_EQ(eng.exit_code, 1);
-  EXPECT_NE(eng.err.find("--engine applies to --model discrete only"), std::string::npos) << eng.err;
+  EXPECT_NE(eng.err.find("--engine with --model continuous must be auto, sat or z3"), std::string::npos) << eng.err;
   auto missing = run_gridlock({"solve", "/nonexistent.grid", "--model", "continuous"});
   EXPECT_EQ(missing.exit_code, 1);
 }

@@ -42,22 +42,22 @@ void write_certificate(Answer& ans, const std::string& cert_path, const std::str
   ans.data()["certificate"] = cert_path;
 }
 
-int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, bool json,
-                   const std::string& cert_path) {
+int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, ContinuousEngine engine,
+                   bool json, const std::string& cert_path) {
   Answer ans("solve", json);
   ans.witness_one_per_line();
   ans.comment("gridlock solve --model continuous " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
               " couplings" + (inst.horizontal_only() ? ", horizontal-only" : ""));
-  ContinuousResult r = solve_continuous(inst, opt);
+  ContinuousResult r = solve_continuous(inst, opt, engine);
   const SolveStats& st = r.stats;
   if (st.engine == "gaps") {
     ans.comment("horizontal-only: linear gap check (" + std::to_string(st.constraints) + " gaps and cycles)");
   } else {
     ans.comment("engine " + st.engine + " on " + std::to_string(st.constraints) + " pair and cycle constraints");
-    ans.comment("components settled all at once " + std::to_string(st.safe_moves) + ", solved by z3 " +
-                std::to_string(st.states) + ", z3 decisions " + std::to_string(st.decisions) + ", conflicts " +
-                std::to_string(st.refuted));
+    ans.comment("components settled by a cheap test " + std::to_string(st.safe_moves) + ", searched " +
+                std::to_string(st.states) + ", decisions " + std::to_string(st.decisions) + ", conflicts " +
+                std::to_string(st.refuted) + ", learned " + std::to_string(st.propagations));
   }
   ans.comment("time " + fixed(st.seconds, 3) + " s");
   if (r.status == Verdict::Yes) ans.comment("start times checked by the simulator: collision-free");
@@ -126,7 +126,8 @@ po::options_description solve_options() {
       "model", po::value<std::string>()->default_value("discrete"),
       "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
       "engine", po::value<std::string>()->default_value("auto"),
-      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat")(
+      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat; "
+      "continuous: auto or sat (the learning engine), z3 (Z3 on the whole component)")(
       "json", "print one JSON object instead of c/s/v lines")(
       "certificate", po::value<std::string>(),
       "with a NO, write a certificate to FILE that 'gridlock certify' checks (docs/certificates.md)");
@@ -142,6 +143,8 @@ const char* const kSolveDescription =
     "collision? s YES with lines 'v NAME TIME' (exact rationals, checked by the simulator;\n"
     "'gridlock check --times' reads them back), s NO only when proved (Z3, exact), s UNKNOWN on\n"
     "a limit (--max-states bounds Z3's conflicts).";
+
+bool model_is_discrete(const po::variables_map& vm) { return vm["model"].as<std::string>() != "continuous"; }
 
 SolveOptions::Engine engine_arg(const std::string& engine) {
   if (engine == "auto") return SolveOptions::Engine::Auto;
@@ -165,12 +168,18 @@ int run_solve(const std::vector<std::string>& args) {
   opt.max_states = cli::count_arg_opt(vm, "max-states").value_or(0);
   opt.progress = !vm.count("json") && isatty(STDERR_FILENO);
   const std::string engine = vm["engine"].as<std::string>();
-  opt.engine = engine_arg(engine);
+  if (model_is_discrete(vm)) opt.engine = engine_arg(engine);
 
   const std::string model = vm["model"].as<std::string>();
   if (model != "discrete" && model != "continuous")
     throw UserError("--model must be discrete or continuous, not '" + model + "'");
-  if (model == "continuous" && !vm["engine"].defaulted()) throw UserError("--engine applies to --model discrete only");
+  ContinuousEngine cont_engine = ContinuousEngine::Auto;
+  if (model == "continuous") {
+    if (engine == "z3") cont_engine = ContinuousEngine::Z3;
+    else if (engine == "sat") cont_engine = ContinuousEngine::Sat;
+    else if (engine != "auto")
+      throw UserError("--engine with --model continuous must be auto, sat or z3, not '" + engine + "'");
+  }
 
   const std::string path = vm["instance"].as<std::string>();
   // Kept until the process ends (reachable, so no leak report): freeing an
@@ -184,7 +193,7 @@ int run_solve(const std::vector<std::string>& args) {
   if (opt.seconds > 0) opt.seconds = std::max(opt.seconds - since_start.elapsed(), 1e-6);
   const std::string cert_path = vm.count("certificate") ? vm["certificate"].as<std::string>() : "";
   if (!cert_path.empty()) cli::refuse_overwriting_input(cert_path, {path});
-  if (model == "continuous") return run_continuous(path, inst, opt, vm.count("json") > 0, cert_path);
+  if (model == "continuous") return run_continuous(path, inst, opt, cont_engine, vm.count("json") > 0, cert_path);
   return run_discrete(path, inst, opt, engine, vm.count("json") > 0, cert_path);
 }
 

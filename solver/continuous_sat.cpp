@@ -1,0 +1,697 @@
+#include "solver/continuous_sat.hpp"
+
+#include <algorithm>
+#include <deque>
+#include <memory>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <z3++.h>
+
+#include "cnf/incremental_sat.hpp"
+
+namespace gridlock {
+
+const std::vector<OffsetInterval>& cached_free_offsets(const CollisionConstraint& c, FreeOffsetsCache& cache) {
+  std::vector<int64_t> key(c.base);
+  key.insert(key.end(), c.coef.begin(), c.coef.end());
+  key.push_back(c.num_forms);
+  auto it = cache.find(key);
+  if (it == cache.end()) it = cache.emplace(std::move(key), free_offsets(c)).first;
+  return it->second;
+}
+
+namespace {
+
+// True iff f_i + f_j > 0 on the whole progress cube for every two forms: no
+// two forms are ever <= 0 together, so a collision-free pair keeps one form
+// <= 0 for all time (a cover could never hand over).
+bool forms_exclusive(const CollisionConstraint& c) {
+  for (uint32_t i = 0; i < c.num_forms; ++i)
+    for (uint32_t j = i + 1; j < c.num_forms; ++j) {
+      int64_t m = c.base[i] + c.base[j];
+      for (size_t q = 0; q < c.rel.size(); ++q) m += std::min<int64_t>(0, c.coef_of(q)[i] + c.coef_of(q)[j]);
+      if (m <= 0) return false;
+    }
+  return true;
+}
+
+// t_x - t_y <= v (< v when strict), x and y local coupling indices.
+struct Bound {
+  uint32_t x = 0, y = 0;
+  Rational v;
+  bool strict = false;
+};
+
+// A difference bound that holds whenever every literal of guard is true.
+struct DiffRule {
+  std::vector<int> guard;
+  Bound b;
+};
+
+// K + sum over terms (q, c) of c * (t_r + delta - t_q) <= 0 whenever every
+// literal of guard is true.
+struct LinRule {
+  std::vector<int> guard;
+  Rational k;
+  uint32_t r = 0;
+  int delta = 0;
+  std::vector<std::pair<uint32_t, int64_t>> terms;
+};
+
+// What a SAT variable stands for.
+struct VarMeaning {
+  enum class Kind { Atom, Selector, Guard } kind = Kind::Guard;
+  Bound when_true;    // Atom, Selector (first bound)
+  Bound when_true2;   // Selector: second bound (lo side); unused if !has2
+  bool has2 = false;  // Selector only
+  bool has1 = false;  // Selector only: when_true is set
+  Bound when_false;   // Atom only
+};
+
+// Atom thresholds on D = t_a - t_b: index 0: D <= -1, 1: D < 0, 2: D <= 0, 3: D < 1.
+constexpr int64_t kThreshold[4] = {-1, 0, 0, 1};
+constexpr bool kStrict[4] = {false, true, false, true};
+
+// A scaled edge for Bellman-Ford: t_to - t_from <= w / scale, strictness in
+// the low part of w (see Engine::scaled).
+struct Edge {
+  uint32_t from = 0, to = 0;
+  int64_t w = 0;
+  int lit = 0;        // the SAT literal it comes from (0: none)
+  int32_t rule = -1;  // or the DiffRule it comes from
+};
+
+class Engine {
+ public:
+  Engine(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings, const std::vector<uint32_t>& pairs,
+         FreeOffsetsCache& cache, SearchBudget& budget, SolveStats& stats)
+      : sys_(sys), couplings_(couplings), pairs_(pairs), cache_(cache), budget_(budget), stats_(stats) {
+    for (uint32_t j = 0; j < couplings.size(); ++j) local_.emplace(couplings[j], j);
+  }
+
+  bool z3_for_linear = false;  // see solve_component_sat
+
+  ContinuousSatOutcome run() {
+    ContinuousSatOutcome out;
+    if (!encode()) {
+      out.verdict = Verdict::No;
+      return out;
+    }
+    compute_scale();
+    if (!propagate_static()) {
+      out.verdict = Verdict::No;
+      return out;
+    }
+    for (;;) {
+      budget_.tick(stats_);
+      ++stats_.decisions;
+      const uint64_t before = sat_.conflicts();
+      Verdict v = sat_.solve([&](uint64_t conf) { return budget_.exhausted(stats_, conf - before); });
+      stats_.refuted += sat_.conflicts() - before;
+      stats_.states += sat_.conflicts() - before;
+      if (v == Verdict::No) {
+        out.verdict = Verdict::No;
+        return out;
+      }
+      if (v == Verdict::Unknown) throw LimitReached{};
+      std::vector<Rational> t;
+      if (!check_model(t)) continue;
+      out.verdict = Verdict::Yes;
+      Rational lo = *std::min_element(t.begin(), t.end());
+      for (Rational& x : t) x = x - lo;
+      verify(t);
+      out.start = std::move(t);
+      return out;
+    }
+  }
+
+ private:
+  int lit_of(bool value, int var) const { return value ? var : -var; }
+
+  // The first of the four atoms of local couplings a < b.
+  int atoms(uint32_t a, uint32_t b) {
+    auto key = (static_cast<uint64_t>(a) << 32) | b;
+    auto it = atom_base_.find(key);
+    if (it != atom_base_.end()) return it->second;
+    const int first = sat_.num_vars() + 1;
+    for (int i = 0; i < 4; ++i) {
+      int v = sat_.new_var();
+      VarMeaning m;
+      m.kind = VarMeaning::Kind::Atom;
+      m.when_true = {a, b, Rational(kThreshold[i]), kStrict[i]};
+      // not (D <= c): t_b - t_a < -c; not (D < c): t_b - t_a <= -c.
+      m.when_false = {b, a, Rational(-kThreshold[i]), !kStrict[i]};
+      meaning_.push_back(m);
+      if (i > 0) sat_.add_clause({-(v - 1), v});  // the chain D <= -1 -> D < 0 -> D <= 0 -> D < 1
+    }
+    atom_base_.emplace(key, first);
+    return first;
+  }
+
+  // The literal of "t_r - t_q <= -1" (which 0), "< 0" (1), "<= 0" (2), "< 1" (3).
+  int diff_lit(uint32_t r, uint32_t q, int which) {
+    if (r < q) return atoms(r, q) + which;
+    return -(atoms(q, r) + 3 - which);
+  }
+
+  int new_var(VarMeaning m) {
+    int v = sat_.new_var();
+    meaning_.push_back(m);
+    return v;
+  }
+
+  // Encodes every pair; false if some pair can never be free (NO at once).
+  bool encode() {
+    for (uint32_t ci : pairs_) {
+      budget_.poll();
+      const CollisionConstraint& c = sys_.constraints[ci];
+      if (c.rel.size() == 1) {
+        if (!pair_free_at_offset(c, Rational(0))) return false;
+      } else if (c.rel.size() == 2) {
+        if (!encode_two(c)) return false;
+      } else if (c.num_forms == 1) {
+        if (!encode_gap(c, 0, 0)) return false;
+      } else {
+        std::vector<int> some;
+        for (uint32_t i = 0; i < c.num_forms; ++i) {
+          int g = new_var({});
+          some.push_back(g);
+          encode_gap(c, i, g);
+        }
+        sat_.add_clause(some);
+      }
+    }
+    return true;
+  }
+
+  // A two-coupling pair: t_b - t_a in one of its free intervals.
+  bool encode_two(const CollisionConstraint& c) {
+    const auto& iv = cached_free_offsets(c, cache_);
+    if (iv.empty()) return false;
+    const uint32_t a = local_.at(c.rel[0]), b = local_.at(c.rel[1]);
+    std::vector<int> some;
+    for (const OffsetInterval& x : iv) {
+      VarMeaning m;
+      m.kind = VarMeaning::Kind::Selector;
+      if (x.hi) m.when_true = {b, a, *x.hi, false}, m.has1 = true;
+      if (x.lo) m.when_true2 = {a, b, Rational(0) - *x.lo, false}, m.has2 = true;
+      if (iv.size() == 1) {
+        if (m.has1) static_.push_back(m.when_true);
+        if (m.has2) static_.push_back(m.when_true2);
+        return true;
+      }
+      some.push_back(new_var(m));
+    }
+    sat_.add_clause(some);
+    return true;
+  }
+
+  // Form i of c must be <= 0 at every event (when guard g is true; g == 0:
+  // always). Enumerates every event and every branch choice of the other
+  // clamps. False if the gap can never hold (only when g == 0).
+  bool encode_gap(const CollisionConstraint& c, uint32_t i, int g) {
+    std::vector<uint32_t> qs;
+    std::vector<int64_t> cs;
+    for (size_t j = 0; j < c.rel.size(); ++j)
+      if (c.coef_of(j)[i] != 0) qs.push_back(local_.at(c.rel[j])), cs.push_back(c.coef_of(j)[i]);
+    if (c.base[i] > 0) {
+      if (g == 0) return false;
+      sat_.add_clause({-g});
+      return true;
+    }
+    for (size_t j = 0; j < qs.size(); ++j)
+      for (int delta = 0; delta <= 1; ++delta) encode_event(c.base[i], qs, cs, j, delta, g);
+    return true;
+  }
+
+  // The event t_(qs[j]) + delta of one gap: every choice of branches (0:
+  // not started, 1: done, 2: partial) of the other couplings.
+  void encode_event(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j, int delta,
+                    int g) {
+    const size_t m = qs.size();
+    std::vector<int> branch(m, 0);
+    for (;;) {
+      budget_.poll();
+      encode_choice(base, qs, cs, j, delta, g, branch);
+      size_t p = 0;
+      for (; p < m; ++p) {
+        if (p == j) continue;
+        if (++branch[p] < 3) break;
+        branch[p] = 0;
+      }
+      if (p == m) return;
+    }
+  }
+
+  void encode_choice(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j, int delta,
+                     int g, const std::vector<int>& branch) {
+    const uint32_t r = qs[j];
+    int64_t k = base + cs[j] * delta, lo = 0, hi = 0;
+    std::vector<int> guard;
+    if (g != 0) guard.push_back(g);
+    std::vector<std::pair<uint32_t, int64_t>> partial;
+    for (size_t p = 0; p < qs.size(); ++p) {
+      if (p == j) continue;
+      const uint32_t q = qs[p];
+      // delta 0: zero iff t_r - t_q <= 0, done iff >= 1; delta 1: <= -1 and >= 0.
+      const int zero_which = delta == 0 ? 2 : 0, below_done_which = delta == 0 ? 3 : 1;
+      if (branch[p] == 0) {
+        guard.push_back(diff_lit(r, q, zero_which));
+      } else if (branch[p] == 1) {
+        guard.push_back(-diff_lit(r, q, below_done_which));
+        k += cs[p];
+      } else {
+        guard.push_back(-diff_lit(r, q, zero_which));
+        guard.push_back(diff_lit(r, q, below_done_which));
+        partial.emplace_back(q, cs[p]);
+        lo += std::min<int64_t>(0, cs[p]), hi += std::max<int64_t>(0, cs[p]);
+      }
+    }
+    const bool violated = partial.empty() ? k > 0 : k + lo >= 0;
+    const bool holds = partial.empty() ? k <= 0 : k + hi <= 0;
+    if (violated) {
+      std::vector<int> clause(guard.size());
+      std::transform(guard.begin(), guard.end(), clause.begin(), [](int l) { return -l; });
+      sat_.add_clause(clause);
+      return;
+    }
+    if (holds) return;
+    if (partial.size() == 1) {
+      const auto [q, cq] = partial[0];
+      // K + cq (t_r + delta - t_q) <= 0.
+      DiffRule rule;
+      rule.guard = guard;
+      if (cq > 0) rule.b = {r, q, Rational(-k - cq * delta, cq), false};
+      else rule.b = {q, r, Rational(k + cq * delta, cq), false};
+      diff_rules_.push_back(std::move(rule));
+      return;
+    }
+    lin_rules_.push_back({guard, Rational(k), r, delta, partial});
+  }
+
+  // scale_ = (n + 1) * lcm of every bound's denominator: w = scale * v - strict
+  // is an integer, and a cycle's weights sum to < 0 iff its bounds sum to < 0
+  // or to 0 with a strict one (at most n strict edges on a simple cycle).
+  void compute_scale() {
+    int64_t l = 1;
+    auto add = [&](const Bound& b) { l = std::lcm(l, b.v.den()); };
+    for (const Bound& b : static_) add(b);
+    for (const VarMeaning& m : meaning_) {
+      if (m.kind == VarMeaning::Kind::Selector) {
+        if (m.has1) add(m.when_true);
+        if (m.has2) add(m.when_true2);
+      }
+    }
+    for (const DiffRule& r : diff_rules_) add(r.b);
+    if (l > (int64_t{1} << 20)) throw std::overflow_error("continuous sat: denominators too large");
+    scale_ = static_cast<int64_t>(couplings_.size() + 1) * l;
+  }
+
+  // Shortest paths over the bounds that hold in every schedule (the
+  // intervals of two-coupling pairs with one interval: separation and order
+  // gadgets), from every coupling that has atoms: each atom they decide is
+  // a unit clause. The static potentials also give every atom its first
+  // phase. False if the static bounds alone are contradictory (NO).
+  bool propagate_static() {
+    std::vector<Edge> es;
+    for (const Bound& b : static_) es.push_back(edge(b, 0, -1));
+    std::vector<char> off(es.size(), 0);
+    std::vector<int64_t> pot;
+    if (!negative_cycle(es, off, pot).empty()) return false;
+    const size_t n = couplings_.size();
+    std::vector<std::vector<uint32_t>> out(n);
+    for (uint32_t i = 0; i < es.size(); ++i) out[es[i].from].push_back(i);
+    std::vector<std::vector<std::pair<uint32_t, int>>> atoms_of(n);  // (other end b, first var) per a
+    for (auto [key, first] : atom_base_) atoms_of[key >> 32].emplace_back(static_cast<uint32_t>(key), first);
+    constexpr int64_t kInf = INT64_MAX / 4;
+    std::vector<int64_t> from_a(n), to_a(n);
+    for (uint32_t a = 0; a < n; ++a) {
+      if (atoms_of[a].empty()) continue;
+      budget_.check();
+      paths_from(a, es, out, false, from_a, kInf);
+      paths_from(a, es, out, true, to_a, kInf);
+      for (auto [b, first] : atoms_of[a]) {
+        for (int i = 0; i < 4; ++i) {
+          const VarMeaning& m = meaning_[static_cast<size_t>(first + i - 1)];
+          // t_a - t_b <= to_a[b] (path b -> a); t_b - t_a <= from_a[b] (path a -> b).
+          if (to_a[b] < kInf && to_a[b] <= scaled(m.when_true)) sat_.add_clause({first + i});
+          if (from_a[b] < kInf && from_a[b] <= scaled(m.when_false)) sat_.add_clause({-(first + i)});
+        }
+      }
+    }
+    for (auto [key, first] : atom_base_) {
+      const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+      for (int i = 0; i < 4; ++i) {
+        const VarMeaning& m = meaning_[static_cast<size_t>(first + i - 1)];
+        const bool val = pot[a] - pot[b] <= scaled(m.when_true);
+        sat_.set_phase(val ? first + i : -(first + i));
+      }
+    }
+    return true;
+  }
+
+  // Shortest path weights from a (reverse: to a) over the static edges, by
+  // a queue-based Bellman-Ford (no negative cycle: checked before).
+  void paths_from(uint32_t a, const std::vector<Edge>& es, const std::vector<std::vector<uint32_t>>& out, bool reverse,
+                  std::vector<int64_t>& d, int64_t inf) {
+    std::fill(d.begin(), d.end(), inf);
+    d[a] = 0;
+    std::deque<uint32_t> queue{a};
+    std::vector<std::vector<uint32_t>>* rev = nullptr;
+    if (reverse) {
+      if (rev_.empty()) {
+        rev_.assign(couplings_.size(), {});
+        for (uint32_t i = 0; i < es.size(); ++i) rev_[es[i].to].push_back(i);
+      }
+      rev = &rev_;
+    }
+    while (!queue.empty()) {
+      const uint32_t u = queue.front();
+      queue.pop_front();
+      for (uint32_t ei : reverse ? (*rev)[u] : out[u]) {
+        const uint32_t v = reverse ? es[ei].from : es[ei].to;
+        if (d[u] + es[ei].w < d[v]) d[v] = d[u] + es[ei].w, queue.push_back(v);
+      }
+    }
+  }
+
+  int64_t scaled(const Bound& b) const {
+    __int128 w = static_cast<__int128>(b.v.num()) * (scale_ / b.v.den()) - (b.strict ? 1 : 0);
+    if (w > (int64_t{1} << 50) || w < -(int64_t{1} << 50)) throw std::overflow_error("continuous sat: bound too large");
+    return static_cast<int64_t>(w);
+  }
+
+  Edge edge(const Bound& b, int lit, int32_t rule) const { return {b.y, b.x, scaled(b), lit, rule}; }
+
+  bool guard_true(const std::vector<int>& guard) const {
+    for (int l : guard)
+      if (sat_.value(std::abs(l)) != (l > 0)) return false;
+    return true;
+  }
+
+  std::vector<Edge> active_edges() const {
+    std::vector<Edge> es;
+    for (const Bound& b : static_) es.push_back(edge(b, 0, -1));
+    for (size_t v = 1; v <= meaning_.size(); ++v) {
+      const VarMeaning& m = meaning_[v - 1];
+      const bool val = sat_.value(static_cast<int>(v));
+      if (m.kind == VarMeaning::Kind::Atom) {
+        es.push_back(edge(val ? m.when_true : m.when_false, lit_of(val, static_cast<int>(v)), -1));
+      } else if (m.kind == VarMeaning::Kind::Selector && val) {
+        if (m.has1) es.push_back(edge(m.when_true, static_cast<int>(v), -1));
+        if (m.has2) es.push_back(edge(m.when_true2, static_cast<int>(v), -1));
+      }
+    }
+    for (size_t r = 0; r < diff_rules_.size(); ++r)
+      if (guard_true(diff_rules_[r].guard)) es.push_back(edge(diff_rules_[r].b, 0, static_cast<int32_t>(r)));
+    return es;
+  }
+
+  // Queue-based Bellman-Ford from a virtual source (every distance 0).
+  // Returns the edges of a negative cycle, or empty with dist the potentials.
+  std::vector<uint32_t> negative_cycle(const std::vector<Edge>& es, const std::vector<char>& off,
+                                       std::vector<int64_t>& dist) {
+    const size_t n = couplings_.size();
+    std::vector<uint32_t> start(n + 1, 0), adj(es.size());
+    for (const Edge& e : es) ++start[e.from + 1];
+    for (size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    {
+      std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+      for (uint32_t i = 0; i < es.size(); ++i) adj[fill[es[i].from]++] = i;
+    }
+    dist.assign(n, 0);
+    std::vector<uint32_t> len(n, 0), parent(n, UINT32_MAX);
+    std::vector<char> queued(n, 1);
+    std::deque<uint32_t> queue(n);
+    std::iota(queue.begin(), queue.end(), 0u);
+    size_t relaxed = 0;
+    while (!queue.empty()) {
+      budget_.poll();
+      const uint32_t u = queue.front();
+      queue.pop_front();
+      queued[u] = 0;
+      for (uint32_t a = start[u]; a < start[u + 1]; ++a) {
+        const uint32_t ei = adj[a];
+        if (off[ei]) continue;
+        const Edge& e = es[ei];
+        if (dist[u] + e.w >= dist[e.to]) continue;
+        dist[e.to] = dist[u] + e.w;
+        parent[e.to] = ei;
+        len[e.to] = len[u] + 1;
+        // Walking the parent graph every n relaxations finds a cycle soon
+        // after it forms (waiting for a path of n edges can take n rounds).
+        if (len[e.to] >= n || ++relaxed % n == 0) {
+          std::vector<uint32_t> cyc = any_parent_cycle(es, parent, e.to);
+          if (!cyc.empty()) return cyc;
+        }
+        if (!queued[e.to]) queued[e.to] = 1, queue.push_back(e.to);
+      }
+    }
+    return {};
+  }
+
+  // A cycle of the parent graph (first from v, then from every node), or
+  // empty. O(n).
+  std::vector<uint32_t> any_parent_cycle(const std::vector<Edge>& es, const std::vector<uint32_t>& parent, uint32_t v) {
+    std::vector<uint32_t> cyc = parent_cycle(es, parent, v);
+    if (!cyc.empty()) return cyc;
+    // Nodes marked by earlier walks of this scan lead to a root or to a walk
+    // already done: skip them (marks of older scans are smaller stamps).
+    const uint64_t scan = stamp_ + 1;
+    for (uint32_t u = 0; u < couplings_.size(); ++u) {
+      if (seen_[u] >= scan) continue;
+      cyc = parent_cycle(es, parent, u, scan);
+      if (!cyc.empty()) return cyc;
+    }
+    return {};
+  }
+
+  // A cycle of the parent graph reached from v, or empty if the walk ends
+  // at a root. Every cycle of the parent graph of a shortest-path relaxation
+  // is negative (checked: a positive one would be a bug).
+  // Nodes of this walk get a fresh stamp; a walk that meets a node of an
+  // earlier walk of the same scan (stamp >= scan) stops: it ends where that
+  // one ended. scan == 0: a walk on its own.
+  std::vector<uint32_t> parent_cycle(const std::vector<Edge>& es, const std::vector<uint32_t>& parent, uint32_t v,
+                                     uint64_t scan = 0) {
+    ++stamp_;
+    if (seen_.size() != couplings_.size()) seen_.assign(couplings_.size(), 0);
+    while (seen_[v] != stamp_) {
+      if (scan != 0 && seen_[v] >= scan) return {};
+      seen_[v] = stamp_;
+      if (parent[v] == UINT32_MAX) return {};
+      v = es[parent[v]].from;
+    }
+    std::vector<uint32_t> cyc;
+    uint32_t u = v;
+    do {
+      cyc.push_back(parent[u]);
+      u = es[parent[u]].from;
+    } while (u != v);
+    int64_t sum = 0;
+    for (uint32_t ei : cyc) sum += es[ei].w;
+    if (sum >= 0) throw std::logic_error("continuous sat: parent cycle is not negative");
+    return cyc;
+  }
+
+  // Checks the current model; true with t the start times if it is a
+  // schedule. Else learns clauses (at least one) and returns false.
+  bool check_model(std::vector<Rational>& t) {
+    std::vector<Edge> es = active_edges();
+    std::vector<char> off(es.size(), 0);
+    std::vector<int64_t> dist;
+    size_t learned = 0;
+    for (int round = 0; round < 256; ++round) {
+      std::vector<uint32_t> cyc = negative_cycle(es, off, dist);
+      if (cyc.empty()) break;
+      std::vector<int> clause;
+      for (uint32_t ei : cyc) {
+        const Edge& e = es[ei];
+        if (e.lit != 0) clause.push_back(-e.lit);
+        if (e.rule >= 0)
+          for (int l : diff_rules_[static_cast<size_t>(e.rule)].guard) clause.push_back(-l);
+        off[ei] = 1;
+      }
+      std::sort(clause.begin(), clause.end());
+      clause.erase(std::unique(clause.begin(), clause.end()), clause.end());
+      sat_.add_clause(clause);
+      ++stats_.propagations;
+      ++learned;
+    }
+    if (learned > 0) {
+      if (dist.size() == couplings_.size()) phases_from(dist);
+      return false;
+    }
+    t.assign(couplings_.size(), Rational(0));
+    for (size_t q = 0; q < t.size(); ++q) t[q] = Rational(dist[q], scale_);
+    bool linear_ok = true;
+    for (const LinRule& r : lin_rules_)
+      if (guard_true(r.guard) && (z3_for_linear || !holds(r, t))) {
+        linear_ok = false;
+        break;
+      }
+    if (linear_ok) return true;
+    return check_with_z3(t);
+  }
+
+  // Points the next search at the potentials of the edges that survived
+  // the cycles just learned: every atom's and selector's phase is its value
+  // there, so CaDiCaL's next model starts from a nearly consistent one.
+  void phases_from(const std::vector<int64_t>& dist) {
+    for (size_t v = 1; v <= meaning_.size(); ++v) {
+      const VarMeaning& m = meaning_[v - 1];
+      const int var = static_cast<int>(v);
+      auto sat_at = [&](const Bound& b) { return dist[b.x] - dist[b.y] <= scaled(b); };
+      if (m.kind == VarMeaning::Kind::Atom) {
+        sat_.set_phase(sat_at(m.when_true) ? var : -var);
+      } else if (m.kind == VarMeaning::Kind::Selector) {
+        const bool in = (!m.has1 || sat_at(m.when_true)) && (!m.has2 || sat_at(m.when_true2));
+        sat_.set_phase(in ? var : -var);
+      }
+    }
+  }
+
+  static bool holds(const LinRule& r, const std::vector<Rational>& t) {
+    Rational v = r.k;
+    for (auto [q, c] : r.terms) v = v + Rational(c) * (t[r.r] + Rational(r.delta) - t[q]);
+    return v <= Rational(0);
+  }
+
+  void verify(const std::vector<Rational>& t) const {
+    for (uint32_t ci : pairs_) {
+      const CollisionConstraint& c = sys_.constraints[ci];
+      std::vector<Rational> st;
+      for (CouplingId q : c.rel) st.push_back(t[local_.at(q)]);
+      if (!pair_free_at_times(c, st))
+        throw std::logic_error("continuous sat engine: a pair collides at the times of a model");
+    }
+  }
+
+  z3::expr z3_bound(const Bound& b) {
+    z3::expr d = zt_[b.x] - zt_[b.y];
+    z3::expr v = (*z3ctx_).real_val(b.v.str().c_str());
+    return b.strict ? d < v : d <= v;
+  }
+
+  z3::expr z3_lit(int l) { return l > 0 ? zb_[static_cast<size_t>(l)] : !zb_[static_cast<size_t>(-l)]; }
+
+  z3::expr z3_guard(const std::vector<int>& guard) {
+    z3::expr_vector v((*z3ctx_));
+    for (int l : guard) v.push_back(z3_lit(l));
+    return z3::mk_and(v);
+  }
+
+  // Builds the Z3 twin of the encoding once: a real per coupling, a Boolean
+  // per SAT variable, every meaning as an implication.
+  void build_z3() {
+    z3ctx_ = std::make_unique<z3::context>();
+    z3s_ = std::make_unique<z3::solver>(*z3ctx_, "QF_LRA");
+    for (size_t q = 0; q < couplings_.size(); ++q)
+      zt_.push_back((*z3ctx_).real_const(("t" + std::to_string(q)).c_str()));
+    zb_.push_back((*z3ctx_).bool_val(true));
+    for (size_t v = 1; v <= meaning_.size(); ++v)
+      zb_.push_back((*z3ctx_).bool_const(("b" + std::to_string(v)).c_str()));
+    for (const Bound& b : static_) z3s_->add(z3_bound(b));
+    for (size_t v = 1; v <= meaning_.size(); ++v) {
+      const VarMeaning& m = meaning_[v - 1];
+      if (m.kind == VarMeaning::Kind::Atom) {
+        z3s_->add(z3::implies(zb_[v], z3_bound(m.when_true)));
+        z3s_->add(z3::implies(!zb_[v], z3_bound(m.when_false)));
+      } else if (m.kind == VarMeaning::Kind::Selector) {
+        if (m.has1) z3s_->add(z3::implies(zb_[v], z3_bound(m.when_true)));
+        if (m.has2) z3s_->add(z3::implies(zb_[v], z3_bound(m.when_true2)));
+      }
+    }
+    for (const DiffRule& r : diff_rules_) z3s_->add(z3::implies(z3_guard(r.guard), z3_bound(r.b)));
+    for (const LinRule& r : lin_rules_) {
+      z3::expr sum = (*z3ctx_).real_val(r.k.str().c_str());
+      for (auto [q, c] : r.terms)
+        sum = sum + (*z3ctx_).real_val(std::to_string(c).c_str()) * (zt_[r.r] + (*z3ctx_).real_val(r.delta) - zt_[q]);
+      z3s_->add(z3::implies(z3_guard(r.guard), sum <= 0));
+    }
+  }
+
+  // Z3 on the model's conjunction (every SAT variable assumed at its value).
+  bool check_with_z3(std::vector<Rational>& t) {
+    if (!z3s_) build_z3();
+    ++stats_.memo_hits;
+    z3::expr_vector assume((*z3ctx_));
+    std::unordered_map<unsigned, int> lit_of_id;
+    for (size_t v = 1; v <= meaning_.size(); ++v) {
+      const int l = lit_of(sat_.value(static_cast<int>(v)), static_cast<int>(v));
+      z3::expr e = z3_lit(l);
+      lit_of_id.emplace(e.id(), l);
+      assume.push_back(e);
+    }
+    if (budget_.deadline().limit() > 0) {
+      const double left = budget_.deadline().limit() - budget_.elapsed();
+      if (left <= 0) throw LimitReached{};
+      z3s_->set("timeout", static_cast<unsigned>(std::max(1.0, left * 1000)));
+    }
+    const z3::check_result cr = z3s_->check(assume);
+    if (cr == z3::unknown) throw LimitReached{};
+    if (cr == z3::unsat) {
+      std::vector<int> clause;
+      for (const z3::expr& e : z3s_->unsat_core()) clause.push_back(-lit_of_id.at(e.id()));
+      sat_.add_clause(clause);
+      ++stats_.propagations;
+      return false;
+    }
+    z3::model model = z3s_->get_model();
+    for (size_t q = 0; q < couplings_.size(); ++q) {
+      auto parsed = Rational::parse(Z3_get_numeral_string((*z3ctx_), model.eval(zt_[q], true)));
+      if (!parsed) throw std::overflow_error("continuous sat: a Z3 time is no 64-bit rational");
+      t[q] = *parsed;
+    }
+    return true;
+  }
+
+  const ConstraintSystem& sys_;
+  const std::vector<CouplingId>& couplings_;
+  const std::vector<uint32_t>& pairs_;
+  FreeOffsetsCache& cache_;
+  SearchBudget& budget_;
+  SolveStats& stats_;
+  std::unordered_map<CouplingId, uint32_t> local_;
+  IncrementalSat sat_;
+  std::unordered_map<uint64_t, int> atom_base_;
+  std::vector<VarMeaning> meaning_;  // meaning_[v - 1] for SAT variable v
+  std::vector<Bound> static_;
+  std::vector<DiffRule> diff_rules_;
+  std::vector<LinRule> lin_rules_;
+  int64_t scale_ = 1;
+  std::vector<uint64_t> seen_;
+  std::vector<std::vector<uint32_t>> rev_;
+  uint64_t stamp_ = 0;
+  // Created on first use: most components never need Z3.
+  std::unique_ptr<z3::context> z3ctx_;
+  std::unique_ptr<z3::solver> z3s_;
+  std::vector<z3::expr> zt_, zb_;
+};
+
+}  // namespace
+
+std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sys, const std::vector<uint32_t>& pairs,
+                                                      size_t num_faces) {
+  if (num_faces > 0) return "a face with non-zero nets (cycle constraints)";
+  for (uint32_t ci : pairs) {
+    const CollisionConstraint& c = sys.constraints[ci];
+    if (c.rel.size() <= 2) continue;
+    if (c.rel.size() > kMaxGapCouplings)
+      return "a pair of more than " + std::to_string(kMaxGapCouplings) + " couplings";
+    if (c.num_forms > 1 && !forms_exclusive(c)) return "a pair of three or more couplings with several forms";
+  }
+  return std::nullopt;
+}
+
+ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
+                                         const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
+                                         SearchBudget& budget, SolveStats& stats, bool z3_for_linear) {
+  Engine engine(sys, couplings, pairs, cache, budget, stats);
+  engine.z3_for_linear = z3_for_linear;
+  return engine.run();
+}
+
+}  // namespace gridlock

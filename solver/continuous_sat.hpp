@@ -1,0 +1,87 @@
+// The learning engine of the continuous solver (solver/continuous.hpp): one
+// component of pair constraints decided by CaDiCaL over Boolean atoms, with
+// every conjunction checked exactly (docs/solver.md, "Engine sat").
+//
+// Atoms. For two couplings a < b of a gap (a one-form pair) of three or more
+// couplings, D = t_a - t_b is compared with the thresholds the clamps need:
+// [D <= -1], [D < 0], [D <= 0], [D < 1] (a chain of implications). At an
+// event e = t_r + delta (delta in {0, 1}) the clamp of another coupling q of
+// the gap is 0 (e <= t_q), 1 (e >= t_q + 1) or partial, and which one is a
+// conjunction of these atoms. A two-coupling pair depends only on the offset
+// of its two start times (free_offsets, solver/continuous_pairs.hpp): one
+// interval is a fixed pair of difference bounds, several get one selector
+// atom each ("the offset lies in interval i") and a clause "some selector".
+//
+// Gap events, enumerated before the search (3^(r-1) branch choices per event
+// of a gap of r couplings): given the branches the event's value is
+// K + sum over partial q of c_q (e - t_q), each e - t_q in (0, 1). If it is
+// > 0 on the whole open box, or <= 0 on it, the choice is decided: a clause
+// (the choice is impossible) or nothing. Else, with one partial clamp it is a
+// difference bound and with several a linear inequality, both guarded by the
+// choice's atoms ("rules"), checked on each model.
+//
+// Search. CaDiCaL finds a model of the clauses; the active difference bounds
+// (every atom's bound in its polarity, chosen intervals, rules whose guard is
+// true) are checked by Bellman-Ford (queue-based, exact integer weights that
+// encode strictness): a negative cycle is learned as the clause "not all of
+// its edges' reasons" and CaDiCaL runs again, incrementally. With no cycle,
+// the shortest-path potentials are start times meeting every bound; if they
+// also meet every active linear rule, they are the answer. Otherwise Z3
+// (QF_LRA, exact rationals) decides the model's conjunction under
+// assumptions; an unsat core is learned as a clause, a model is the answer.
+// Every clause is true of every schedule, so UNSAT is a proof of NO; every
+// answer is rechecked pair by pair (pair_free_at_times) before it is
+// returned (a failure throws std::logic_error: a bug, never a wrong answer).
+//
+// Not supported (continuous_sat_supports says why; the caller uses Z3 on the
+// whole component instead): faces with non-zero nets (cycles), pairs of
+// three or more couplings with several forms unless no two of their forms can
+// be <= 0 together (then one form is a gap, picked by a selector), gaps of
+// more than kMaxGapCouplings couplings.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lattice/rational.hpp"
+#include "solver/constraints.hpp"
+#include "solver/continuous_pairs.hpp"
+#include "solver/search.hpp"
+
+namespace gridlock {
+
+// free_offsets results shared between identical pairs (key: base, coef, forms).
+using FreeOffsetsCache = std::map<std::vector<int64_t>, std::vector<OffsetInterval>>;
+
+// free_offsets(c) through the cache.
+const std::vector<OffsetInterval>& cached_free_offsets(const CollisionConstraint& c, FreeOffsetsCache& cache);
+
+inline constexpr size_t kMaxGapCouplings = 8;
+
+// nullopt if solve_component_sat can decide the component made of `pairs`
+// (indices into sys) and no faces; else the reason it cannot. O(pairs * forms^2).
+std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sys, const std::vector<uint32_t>& pairs,
+                                                      size_t num_faces);
+
+struct ContinuousSatOutcome {
+  Verdict verdict = Verdict::Unknown;
+  std::vector<Rational> start;  // Yes: per coupling of the component (its order), the earliest at 0
+};
+
+// Decides the component (couplings: its couplings, pairs: its pair
+// constraints; requires continuous_sat_unsupported == nullopt). Throws
+// LimitReached when budget runs out (time, stop request, nodes: one node per
+// CaDiCaL conflict and per round). stats: decisions += rounds (solve calls),
+// refuted += CaDiCaL conflicts, propagations += learned theory clauses,
+// memo_hits += Z3 calls. Time per round: one CaDiCaL call plus
+// O(n * edges) for Bellman-Ford in the worst case (near linear in practice).
+// z3_for_linear (tests): a model with an active linear rule always goes to
+// Z3, even when the potentials meet every rule (so tests reach that path).
+ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
+                                         const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
+                                         SearchBudget& budget, SolveStats& stats, bool z3_for_linear = false);
+
+}  // namespace gridlock
