@@ -45,7 +45,15 @@ int run_certify(const std::vector<std::string>& args) {
   std::stringstream text;
   text << in.rdbuf();
   const CertifyResult r = certify(inst, text.str(), model);
-  if (!r.proved) throw UserError(cert_path + ": certificate rejected: " + r.reason);
+  if (!r.proved) {
+    // "line N: what" becomes FILE:N: (the message convention of every reader).
+    long line = 0;
+    size_t end = 0;
+    if (r.reason.rfind("line ", 0) == 0 && (end = r.reason.find(": ")) != std::string::npos)
+      line = std::stol(r.reason.substr(5, end - 5));
+    throw UserError(
+        Diagnostic{cert_path, line, "certificate rejected: " + (line ? r.reason.substr(end + 2) : r.reason)});
+  }
   Answer ans("certify", vm.count("json") > 0);
   ans.comment("gridlock certify " + path + " " + cert_path + ": " + r.kind + ", " + model + " model");
   if (r.kind == "gaps")
