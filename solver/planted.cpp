@@ -68,7 +68,7 @@ PlantedInstance plant_schedule(const Instance& inst, uint64_t seed, size_t max_c
 
 PlantedInstance planted_family_instance(const RandomFamilyParams& f, uint64_t seed) {
   PlantedInstance best;
-  for (uint32_t factor = 2; factor <= 16; factor *= 2) {
+  for (uint32_t factor = 2; factor <= 4; factor *= 2) {
     RandomFamilyParams g = f;
     g.couplings = f.couplings * factor;
     PlantedInstance p = plant_schedule(random_family_instance(g, seed), seed, f.couplings);

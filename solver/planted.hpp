@@ -30,10 +30,12 @@ struct PlantedInstance {
 // it. O(pair constraints + sum over the order of the steps' constraints).
 PlantedInstance plant_schedule(const Instance& inst, uint64_t seed, size_t max_couplings = 0);
 
-// A planted instance of the family with exactly f.couplings couplings
-// (unless the shapes run out of room): random_family_instance with 2, 4, 8,
-// then 16 times the couplings, planted with at most f.couplings kept, until
-// enough are kept. Deterministic in (f, seed).
+// A planted instance of the family with at most f.couplings couplings:
+// random_family_instance with 2, then (if too few are kept) 4 times the
+// couplings, planted with at most f.couplings kept; the larger result is
+// returned. Compact shapes keep few (a tree blob about a tenth: most
+// expansions there push a subtree into an unjoined neighbour), sparse
+// shapes most. Deterministic in (f, seed).
 PlantedInstance planted_family_instance(const RandomFamilyParams& f, uint64_t seed);
 
 }  // namespace gridlock
