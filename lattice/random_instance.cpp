@@ -52,12 +52,36 @@ std::vector<Vec2> grow_shape(const RandomInstanceParams& p, Rng& rng, InstanceBu
   return cells;
 }
 
-// Random couplings: shuffle, then cut into groups of 1..max_coupling.
-void add_random_couplings(Rng& rng, InstanceBuilder& b, std::vector<std::string>& names, uint32_t max_coupling) {
+// Group sizes for exactly `want` couplings over n operations (each 1..max,
+// as even as the draws allow), or fewer couplings when n < want.
+std::vector<size_t> exact_group_sizes(Rng& rng, size_t n, size_t want, size_t max) {
+  want = std::min(want, n);
+  std::vector<size_t> len(want, 1);
+  size_t left = n - want;
+  while (left > 0) {
+    size_t i = rng.below(want);
+    if (len[i] >= max) {
+      for (i = 0; i < want && len[i] >= max; ++i) {
+      }
+      if (i == want) break;  // every group full: the extra operations are dropped
+    }
+    ++len[i];
+    --left;
+  }
+  return len;
+}
+
+// Random couplings: shuffle, then cut into groups of 1..max_coupling
+// (exactly `exact` groups when exact > 0).
+void add_random_couplings(Rng& rng, InstanceBuilder& b, std::vector<std::string>& names, uint32_t max_coupling,
+                          uint32_t exact) {
   rng.shuffle(names);
-  size_t i = 0, q = 0;
+  std::vector<size_t> sizes;
+  if (exact > 0) sizes = exact_group_sizes(rng, names.size(), exact, std::max<uint32_t>(max_coupling, 1));
+  size_t i = 0, q = 0, g = 0;
   while (i < names.size()) {
-    size_t len = 1 + rng.below(std::max<uint32_t>(max_coupling, 1));
+    if (exact > 0 && g == sizes.size()) break;  // dropped operations stay uncoupled singletons
+    size_t len = exact > 0 ? sizes[g++] : 1 + rng.below(std::max<uint32_t>(max_coupling, 1));
     len = std::min(len, names.size() - i);
     if (len > 1) {
       std::vector<std::string> group(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(i + len));
@@ -71,6 +95,8 @@ void add_random_couplings(Rng& rng, InstanceBuilder& b, std::vector<std::string>
 
 Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
   if (p.nodes == 0) throw std::invalid_argument("random_instance needs at least one node");
+  if (!p.allow_expand && !p.allow_contract && !p.allow_grow)
+    throw std::invalid_argument("random_instance needs at least one operation kind");
   // The instance stream starts from this scramble of the seed (kept so that
   // every seed gives the instance it always gave).
   Rng rng(seed * 0x2545F4914F6CDD1DULL + 0x1234567ULL);
@@ -97,6 +123,8 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     OpKind kind = OpKind::Expand;
     if (kind_roll >= 6 && p.allow_contract) kind = OpKind::Contract;
     if (kind_roll >= 8 && p.allow_grow) kind = OpKind::Grow;
+    if (kind == OpKind::Expand && !p.allow_expand)
+      kind = p.allow_contract && (!p.allow_grow || rng.below(2) == 0) ? OpKind::Contract : OpKind::Grow;
     std::string name = "o" + std::to_string(names.size() + 1);
     if (kind == OpKind::Grow) {
       // Growth needs no edge toward c; it may still be into an occupied cell.
@@ -108,10 +136,64 @@ Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
     }
     names.push_back(name);
   }
-  add_random_couplings(rng, b, names, p.max_coupling);
+  add_random_couplings(rng, b, names, p.max_coupling, p.couplings);
   Instance inst;
   if (auto err = b.finish(inst)) throw std::logic_error("random_instance built a bad instance: " + err->message);
   return inst;
+}
+
+bool parse_shape_family(const std::string& name, ShapeFamily& out) {
+  for (ShapeFamily f :
+       {ShapeFamily::Tree, ShapeFamily::Cycles, ShapeFamily::Sparse, ShapeFamily::Dense, ShapeFamily::Path})
+    if (name == shape_family_name(f)) {
+      out = f;
+      return true;
+    }
+  return false;
+}
+
+const char* shape_family_name(ShapeFamily f) {
+  switch (f) {
+    case ShapeFamily::Tree: return "tree";
+    case ShapeFamily::Cycles: return "cycles";
+    case ShapeFamily::Sparse: return "sparse";
+    case ShapeFamily::Dense: return "dense";
+    case ShapeFamily::Path: return "path";
+  }
+  return "?";
+}
+
+RandomInstanceParams family_params(const RandomFamilyParams& f) {
+  if (f.couplings == 0) throw std::invalid_argument("a random family instance needs at least one coupling");
+  if (f.max_coupling == 0) throw std::invalid_argument("couplings need at least one operation");
+  if (!f.expand && !f.contract && !f.grow) throw std::invalid_argument("no operation kind allowed");
+  RandomInstanceParams p;
+  p.couplings = f.couplings;
+  p.max_coupling = f.max_coupling;
+  p.ops = static_cast<uint32_t>((uint64_t{f.couplings} * (1 + f.max_coupling) + 1) / 2);
+  p.allow_expand = f.expand;
+  p.allow_contract = f.contract;
+  p.allow_grow = f.grow;
+  p.horizontal_only = f.horizontal_only;
+  p.nodes = 3 * p.ops;
+  switch (f.family) {
+    case ShapeFamily::Tree: break;
+    case ShapeFamily::Cycles: p.extra_edge_percent = 35; break;
+    case ShapeFamily::Sparse:
+      p.nodes = 4 * p.ops;
+      p.spread = 3;
+      break;
+    case ShapeFamily::Dense:
+      p.nodes = p.ops + (p.ops + 1) / 2;
+      p.extra_edge_percent = 80;
+      break;
+    case ShapeFamily::Path: p.path_shape = true; break;
+  }
+  return p;
+}
+
+Instance random_family_instance(const RandomFamilyParams& f, uint64_t seed) {
+  return random_instance(family_params(f), seed);
 }
 
 }  // namespace gridlock

@@ -11,7 +11,9 @@
 //     <= -base_c - coef_t + sum_w |coef_w|  =: bound.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "common/assert.hpp"
@@ -50,6 +52,24 @@ bool for_each_gap_inequality(const CollisionConstraint& c, std::vector<Precedenc
     if (!f(terms, -c.base[0] - at + widen)) return false;
   }
   return true;
+}
+
+// Relations every solution has, from one gap alone: for a narrower t of c
+// with need = base + coef_t > 0 (a lower bound: other narrowers before t only
+// add), a widener w without which the other wideners cannot supply need must
+// come before t. Appends (w, t) to out. Requires c.num_forms == 1. O(|c.rel|^2).
+inline void gap_forced_relations(const CollisionConstraint& c, std::vector<std::pair<CouplingId, CouplingId>>& out) {
+  GRIDLOCK_ASSERT(c.num_forms == 1, "gap_forced_relations needs a gap constraint (one form)");
+  int64_t widen = 0;
+  for (size_t j = 0; j < c.rel.size(); ++j) widen += std::max<int64_t>(-c.coef_of(j)[0], 0);
+  for (size_t jt = 0; jt < c.rel.size(); ++jt) {
+    const int64_t need = c.base[0] + c.coef_of(jt)[0];
+    if (c.coef_of(jt)[0] <= 0 || need <= 0) continue;
+    for (size_t j = 0; j < c.rel.size(); ++j) {
+      const int64_t a = c.coef_of(j)[0];
+      if (a < 0 && widen + a < need) out.push_back({c.rel[j], c.rel[jt]});
+    }
+  }
 }
 
 }  // namespace gridlock

@@ -131,4 +131,18 @@ SearchOutcome search_precedence_chronological(const ConstraintSystem& sys, Searc
 // Throws std::invalid_argument for a system with more forms.
 SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
 
+// SAT back end for any system (docs/solver.md, "Engine pairs"): one-form
+// constraints as the sat engine encodes them; a constraint of more forms
+// over at most 8 couplings as one clause per cube of colliding patterns
+// (the running coupling and which of the others ran before it, decided by
+// step_collides), larger ones lazily, pattern by pattern, as an acyclic
+// model's order meets them; order literals, transitivity and lazy cycle
+// clauses from solver/order_sat.hpp. Statistics as search_sat, propagations
+// also counting lazy pattern clauses. eager_limit: constraints of more
+// couplings than this are handled lazily (tests use 0 to run the lazy path
+// on every multi-form constraint).
+constexpr size_t kPairsEagerLimit = 8;
+SearchOutcome search_pairs(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
+                           size_t eager_limit = kPairsEagerLimit);
+
 }  // namespace gridlock

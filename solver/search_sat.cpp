@@ -13,386 +13,45 @@
 //     <= -base_c - coef_t + sum_w |coef_w|  =: K,
 // encoded by a weighted sequential counter. Only the relative order of
 // couplings that share a gap matters, so any topological order of an acyclic
-// orientation of those pairs satisfies the system; a cyclic orientation is
-// excluded by a clause "not all of these B's" (true in every total order)
-// and the solver runs again, keeping what it learned.
-#include <algorithm>
+// orientation of those pairs satisfies the system; cyclic orientations are
+// excluded lazily by the order layer (solver/order_sat.hpp).
 #include <stdexcept>
-#include <unordered_map>
 
-#include "cnf/incremental_sat.hpp"
 #include "solver/gap_inequalities.hpp"
+#include "solver/order_sat.hpp"
 #include "solver/search.hpp"
 
 namespace gridlock {
-namespace {
 
-class SatSearch {
- public:
-  SatSearch(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st)
-      : sys_(sys), budget_(budget), st_(st), k_(sys.num_couplings) {}
-
-  SearchOutcome run() {
-    SearchOutcome out;
-    for (const CollisionConstraint& c : sys_.constraints) {
-      if (c.num_forms != 1) throw std::invalid_argument("the SAT engine needs one form per constraint");
-      if (c.base[0] > 0) {  // overlapping from the start: the first step of c collides
-        out.status = Verdict::No;
-        ++st_.refuted;
-        return out;
-      }
+SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st) {
+  SearchOutcome out;
+  for (const CollisionConstraint& c : sys.constraints) {
+    if (c.num_forms != 1) throw std::invalid_argument("the SAT engine needs one form per constraint");
+    if (c.base[0] > 0) {  // overlapping from the start: the first step of c collides
+      out.status = Verdict::No;
+      ++st.refuted;
+      return out;
     }
-    if (!encode() || !add_order_clauses()) {
+  }
+  OrderSat os(sys.num_couplings, budget, st);
+  std::vector<std::pair<CouplingId, CouplingId>> forced;
+  for (size_t ci = 0; ci < sys.constraints.size(); ++ci) {
+    if ((ci & 255) == 0) budget.check(st);
+    if (!encode_gap_constraint(sys.constraints[ci], os)) {
       out.status = Verdict::No;
       return out;
     }
-    const std::function<bool(uint64_t)> stop = [&](uint64_t conflicts) {
-      return budget_.exhausted(st_, conflicts - counted_conflicts_);
-    };
-    for (;;) {
-      budget_.tick(st_);
-      ++st_.decisions;
-      const Verdict s = sat_.solve(stop);
-      const uint64_t conf = sat_.conflicts();
-      st_.refuted += conf - counted_conflicts_;
-      st_.states += conf - counted_conflicts_;
-      counted_conflicts_ = conf;
-      if (s == Verdict::Unknown) throw SearchBudget::LimitReached{};
-      if (s == Verdict::No) {
-        out.status = Verdict::No;
-        return out;
-      }
-      if (order_of_model(out.order)) {
-        if (replay_order(sys_, out.order).failed_step != out.order.size())
-          throw std::logic_error("SAT engine: an acyclic model whose order the constraints reject");
-        out.status = Verdict::Yes;
-        return out;
-      }
-    }
+    gap_forced_relations(sys.constraints[ci], forced);
   }
-
- private:
-  static uint64_t key(CouplingId a, CouplingId b) { return (uint64_t{a} << 32) | b; }
-
-  // The literal "a before b" (a != b), creating its variable.
-  int before(CouplingId a, CouplingId b) {
-    const CouplingId lo = std::min(a, b), hi = std::max(a, b);
-    auto [it, fresh] = var_of_pair_.try_emplace(key(lo, hi), 0);
-    if (fresh) {
-      it->second = sat_.new_var();
-      pair_vars_.push_back({it->second, lo, hi});
-    }
-    return a == lo ? it->second : -it->second;
+  if (!os.add_order_clauses(forced)) {
+    out.status = Verdict::No;
+    return out;
   }
-
-  // sum w_i [l_i] <= bound, weights > 0 (Hoelldobler, Manthey, Steinke's
-  // weighted sequential counter: reg[j-1] of literal i means "the literals
-  // up to i weigh at least j"; only the implications toward larger sums are
-  // needed). False if the bound is negative (unsatisfiable).
-  bool at_most(std::vector<std::pair<int, int64_t>>& lits, int64_t bound) {
-    if (bound < 0) return false;
-    std::vector<std::pair<int, int64_t>> kept;
-    int64_t total = 0;
-    for (auto [l, w] : lits) {
-      if (w > bound) {
-        sat_.add_clause({-l});
-        continue;
-      }
-      kept.push_back({l, w});
-      total += w;
-    }
-    if (total <= bound) return true;
-    const auto K = static_cast<size_t>(bound);
-    std::vector<int> prev, cur;  // registers of the literals so far, 1..K
-    for (size_t i = 0; i < kept.size(); ++i) {
-      const int l = kept[i].first;
-      const auto w = static_cast<size_t>(kept[i].second);
-      if (i > 0) sat_.add_clause({-l, -prev[K - w]});  // prev >= K + 1 - w and l: too much
-      if (i + 1 == kept.size()) break;
-      cur.assign(K, 0);
-      for (size_t j = 0; j < K; ++j) cur[j] = sat_.new_var();
-      for (size_t j = 0; j < K; ++j) {
-        if (i > 0) sat_.add_clause({-prev[j], cur[j]});
-        if (j < w) sat_.add_clause({-l, cur[j]});
-        else if (i > 0) sat_.add_clause({-l, -prev[j - w], cur[j]});
-      }
-      std::swap(prev, cur);
-    }
+  return os.solve([&](const std::vector<CouplingId>& order) {
+    if (replay_order(sys, order).failed_step != order.size())
+      throw std::logic_error("SAT engine: an acyclic model whose order the constraints reject");
     return true;
-  }
-
-  bool encode() {
-    std::vector<std::pair<int, int64_t>> lits;
-    std::vector<PrecedenceTerm> terms;
-    for (size_t ci = 0; ci < sys_.constraints.size(); ++ci) {
-      if ((ci & 255) == 0) budget_.check(st_);
-      const bool ok = for_each_gap_inequality(sys_.constraints[ci], terms, [&](auto& ts, int64_t bound) {
-        lits.clear();
-        for (const PrecedenceTerm& x : ts) lits.push_back({before(x.first, x.second), x.weight});
-        return at_most(lits, bound);
-      });
-      if (!ok) return false;
-    }
-    return true;
-  }
-
-  // Relations every solution has, from one gap alone: for a narrower t of
-  // c with need = base + coef_t > 0 (a lower bound: other narrowers before t
-  // only add), a widener w without which the other wideners cannot supply
-  // need must come before t. Fills forced_ (w, t).
-  void forced_relations() {
-    for (const CollisionConstraint& c : sys_.constraints) {
-      int64_t widen = 0;
-      for (size_t j = 0; j < c.rel.size(); ++j) widen += std::max<int64_t>(-c.coef_of(j)[0], 0);
-      for (size_t jt = 0; jt < c.rel.size(); ++jt) {
-        const int64_t need = c.base[0] + c.coef_of(jt)[0];
-        if (c.coef_of(jt)[0] <= 0 || need <= 0) continue;
-        for (size_t j = 0; j < c.rel.size(); ++j) {
-          const int64_t a = c.coef_of(j)[0];
-          if (a < 0 && widen + a < need) forced_.push_back({c.rel[j], c.rel[jt]});
-        }
-      }
-    }
-  }
-
-  // Clauses true in every total order that make most cycles impossible
-  // up front (the lazy cycle clauses are then rarely needed):
-  //  - the transitive closure R of the forced relations (bit matrix, when
-  //    k <= kClosureLimit): a cycle in it is NO; an order literal it decides
-  //    is a unit; for a coupling x and two partners c1 R c2 of x,
-  //    "x before c1 implies x before c2";
-  //  - transitivity on every triangle of partners (x, a, c).
-  // False if the forced relations are cyclic (then no order exists).
-  bool add_order_clauses() {
-    forced_relations();
-    std::vector<std::vector<std::pair<CouplingId, int>>> partners(k_);  // (other, literal "x before other")
-    for (const PairVar& p : pair_vars_) {
-      partners[p.lo].push_back({p.hi, p.var});
-      partners[p.hi].push_back({p.lo, -p.var});
-    }
-    if (k_ <= kClosureLimit) {
-      const size_t words = (k_ + 63) / 64;
-      std::vector<std::vector<CouplingId>> succ(k_);
-      std::vector<uint32_t> indeg(k_, 0);
-      for (auto [a, b] : forced_) succ[a].push_back(b), ++indeg[b];
-      std::vector<CouplingId> topo;
-      for (CouplingId q = 0; q < k_; ++q)
-        if (indeg[q] == 0) topo.push_back(q);
-      for (size_t h = 0; h < topo.size(); ++h)
-        for (CouplingId b : succ[topo[h]])
-          if (--indeg[b] == 0) topo.push_back(b);
-      if (topo.size() < k_) return false;  // forced relations form a cycle
-      std::vector<uint64_t> reach(k_ * words, 0);
-      auto r = [&](CouplingId a, CouplingId b) { return (reach[a * words + (b >> 6)] >> (b & 63)) & 1; };
-      for (size_t h = topo.size(); h-- > 0;) {
-        const CouplingId v = topo[h];
-        if ((h & 1023) == 0) budget_.check(st_);
-        uint64_t* row = reach.data() + v * words;
-        for (CouplingId w : succ[v]) {
-          row[w >> 6] |= uint64_t{1} << (w & 63);
-          const uint64_t* wr = reach.data() + w * words;
-          for (size_t i = 0; i < words; ++i) row[i] |= wr[i];
-        }
-      }
-      for (const PairVar& p : pair_vars_) {
-        if (r(p.lo, p.hi)) sat_.add_clause({p.var});
-        if (r(p.hi, p.lo)) sat_.add_clause({-p.var});
-      }
-      for (CouplingId x = 0; x < k_; ++x) {
-        if ((x & 1023) == 0) budget_.check(st_);
-        for (auto [c1, l1] : partners[x])
-          for (auto [c2, l2] : partners[x])
-            if (c1 != c2 && r(c1, c2)) sat_.add_clause({-l1, l2});
-      }
-    }
-    for (CouplingId x = 0; x < k_; ++x) {
-      if ((x & 1023) == 0) budget_.check(st_);
-      for (auto [a, la] : partners[x]) {
-        if (a < x) continue;
-        for (auto [c, lc] : partners[x]) {
-          if (c <= a) continue;
-          auto it = var_of_pair_.find(key(a, c));  // a < c
-          if (it == var_of_pair_.end()) continue;
-          // a before x before c implies a before c; c before x before a implies c before a.
-          sat_.add_clause({la, -lc, it->second});
-          sat_.add_clause({-la, lc, -it->second});
-        }
-      }
-    }
-    return true;
-  }
-
-  // The orientation of the pairs in the model, as a graph in CSR form: the
-  // successors of v are adj[deg[v]] .. adj[deg[v + 1] - 1].
-  struct Orientation {
-    std::vector<uint32_t> deg;
-    std::vector<CouplingId> adj;
-  };
-
-  // Strongly connected components of an orientation.
-  struct Components {
-    std::vector<uint32_t> comp;                   // component of each coupling
-    std::vector<CouplingId> order_rev;            // couplings, sinks first
-    std::vector<std::vector<CouplingId>> cyclic;  // members of each non-trivial component
-  };
-
-  // Orients every pair as the model says. Acyclic: out = a topological
-  // order of all couplings, true. Cyclic: adds one clause per cycle found
-  // (a shortest cycle through each uncovered vertex of each non-trivial
-  // strongly connected component), false.
-  bool order_of_model(std::vector<CouplingId>& out) {
-    const Orientation g = model_orientation();
-    const Components cc = components(g);
-    if (cc.cyclic.empty()) {
-      out.assign(cc.order_rev.rbegin(), cc.order_rev.rend());
-      return true;
-    }
-    add_cycle_clauses(g, cc);
-    return false;
-  }
-
-  // Adjacency (CSR) of the orientation the current model gives the pairs.
-  Orientation model_orientation() const {
-    Orientation g;
-    g.deg.assign(k_ + 1, 0);
-    std::vector<std::pair<CouplingId, CouplingId>> edges;
-    edges.reserve(pair_vars_.size());
-    for (const PairVar& p : pair_vars_) {
-      const bool lo_first = sat_.value(p.var);
-      edges.push_back(lo_first ? std::make_pair(p.lo, p.hi) : std::make_pair(p.hi, p.lo));
-    }
-    for (auto [a, b] : edges) ++g.deg[a + 1];
-    for (size_t i = 0; i < k_; ++i) g.deg[i + 1] += g.deg[i];
-    g.adj.resize(edges.size());
-    std::vector<uint32_t> fill(g.deg.begin(), g.deg.end() - 1);
-    for (auto [a, b] : edges) g.adj[fill[a]++] = b;
-    return g;
-  }
-
-  // Tarjan's strongly connected components of g, iteratively. Components
-  // come out sinks first.
-  Components components(const Orientation& g) const {
-    const auto& deg = g.deg;
-    const auto& adj = g.adj;
-    Components cc;
-    cc.comp.assign(k_, UINT32_MAX);
-    std::vector<uint32_t> index(k_, UINT32_MAX), low(k_, 0);
-    std::vector<CouplingId> stack;
-    std::vector<std::pair<CouplingId, uint32_t>> call;  // (vertex, next edge)
-    std::vector<char> on_stack(k_, 0);
-    uint32_t next_index = 0, num_comp = 0;
-    for (CouplingId s = 0; s < k_; ++s) {
-      if (index[s] != UINT32_MAX) continue;
-      call.push_back({s, deg[s]});
-      index[s] = low[s] = next_index++;
-      stack.push_back(s);
-      on_stack[s] = 1;
-      while (!call.empty()) {
-        auto& [v, e] = call.back();
-        if (e < deg[v + 1]) {
-          const CouplingId w = adj[e++];
-          if (index[w] == UINT32_MAX) {
-            index[w] = low[w] = next_index++;
-            stack.push_back(w);
-            on_stack[w] = 1;
-            call.push_back({w, deg[w]});
-          } else if (on_stack[w]) {
-            low[v] = std::min(low[v], index[w]);
-          }
-          continue;
-        }
-        const CouplingId done = v;
-        call.pop_back();
-        if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[done]);
-        if (low[done] != index[done]) continue;
-        std::vector<CouplingId> members;
-        CouplingId x;
-        do {
-          x = stack.back();
-          stack.pop_back();
-          on_stack[x] = 0;
-          cc.comp[x] = num_comp;
-          members.push_back(x);
-          cc.order_rev.push_back(x);
-        } while (x != done);
-        ++num_comp;
-        if (members.size() > 1) cc.cyclic.push_back(std::move(members));
-      }
-    }
-    return cc;
-  }
-
-  // Shortest cycles inside each cyclic component (BFS from each vertex not
-  // yet on a cycle clause of this round); adds "not all of these B's" for each.
-  void add_cycle_clauses(const Orientation& g, const Components& cc) {
-    const auto& deg = g.deg;
-    const auto& adj = g.adj;
-    const auto& comp = cc.comp;
-    std::vector<char> covered(k_, 0);
-    std::vector<CouplingId> parent(k_, kNone), queue;
-    std::vector<uint32_t> seen(k_, UINT32_MAX);
-    uint32_t stamp = 0;
-    std::vector<int> clause;
-    for (const auto& members : cc.cyclic) {
-      for (CouplingId s : members) {
-        if (covered[s]) continue;
-        ++stamp;
-        queue.assign(1, s);
-        seen[s] = stamp;
-        CouplingId last = kNone;
-        for (size_t h = 0; h < queue.size() && last == kNone; ++h) {
-          const CouplingId v = queue[h];
-          for (uint32_t e = deg[v]; e < deg[v + 1]; ++e) {
-            const CouplingId w = adj[e];
-            if (comp[w] != comp[s]) continue;
-            if (w == s) {
-              last = v;
-              break;
-            }
-            if (seen[w] == stamp) continue;
-            seen[w] = stamp;
-            parent[w] = v;
-            queue.push_back(w);
-          }
-        }
-        if (last == kNone) throw std::logic_error("SAT engine: no cycle in a strongly connected component");
-        clause.clear();
-        clause.push_back(-before(last, s));
-        covered[s] = 1;
-        for (CouplingId v = last; v != s; v = parent[v]) {
-          clause.push_back(-before(parent[v], v));
-          covered[v] = 1;
-        }
-        sat_.add_clause(clause);
-        ++st_.propagations;
-      }
-      if ((++stamp & 63) == 0) budget_.check(st_);
-    }
-  }
-
-  struct PairVar {
-    int var;
-    CouplingId lo, hi;  // var true: lo before hi
-  };
-
-  const ConstraintSystem& sys_;
-  SearchBudget& budget_;
-  SolveStats& st_;
-  size_t k_;
-  IncrementalSat sat_;
-  std::unordered_map<uint64_t, int> var_of_pair_;
-  std::vector<PairVar> pair_vars_;
-  uint64_t counted_conflicts_ = 0;
-  std::vector<std::pair<CouplingId, CouplingId>> forced_;
-  // Above this many couplings the forced closure (k^2 / 8 bytes) is skipped.
-  static constexpr size_t kClosureLimit = 40000;
-};
-
-}  // namespace
-
-SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st) {
-  SatSearch s(sys, budget, st);
-  return s.run();
+  });
 }
 
 }  // namespace gridlock

@@ -37,8 +37,11 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
       return res;
     }
 
-  const Engine engine = opt.engine != Engine::Auto ? opt.engine : horizontal ? Engine::Sat : Engine::States;
-  res.stats.engine = engine == Engine::Precedence ? "precedence" : engine == Engine::Sat ? "sat" : "states";
+  const Engine engine = opt.engine != Engine::Auto ? opt.engine : horizontal ? Engine::Sat : Engine::Pairs;
+  res.stats.engine = engine == Engine::Precedence ? "precedence"
+                     : engine == Engine::Sat      ? "sat"
+                     : engine == Engine::Pairs    ? "pairs"
+                                                  : "states";
   ConstraintSystem sys;
   try {
     budget.check();
@@ -47,6 +50,7 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
     res.stats.constraints = sys.constraints.size();
     SearchOutcome out = engine == Engine::Precedence ? search_precedence(sys, budget, res.stats, opt.precedence_hooks)
                         : engine == Engine::Sat      ? search_sat(sys, budget, res.stats)
+                        : engine == Engine::Pairs    ? search_pairs(sys, budget, res.stats)
                                                      : search_states(sys, budget, res.stats);
     res.status = out.status;
     res.order = std::move(out.order);

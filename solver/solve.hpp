@@ -55,11 +55,11 @@ struct SolveOptions {
   // Draw a progress line (states, depth, rate) on stderr every 0.5 s; for
   // the command line when stderr is a terminal. Erased before returning.
   bool progress = false;
-  // Which search to run. Auto: Sat for horizontal-only instances (measured
-  // fastest, docs/performance.md), States otherwise. Precedence or Sat on a
-  // non-horizontal instance throws std::invalid_argument. (Tests run every
-  // engine on the same instances.)
-  enum class Engine { Auto, States, Precedence, Sat } engine = Engine::Auto;
+  // Which search to run. Auto: Sat for horizontal-only instances, Pairs
+  // otherwise (measured fastest, docs/performance.md). Precedence or Sat on a
+  // non-horizontal instance throws std::invalid_argument; Pairs and States
+  // take any instance. (Tests run every engine on the same instances.)
+  enum class Engine { Auto, States, Precedence, Sat, Pairs } engine = Engine::Auto;
   // Passed to the precedence engine when it runs (NO certificates,
   // solver/no_certificate.hpp; tests). Not owned.
   const PrecedenceHooks* precedence_hooks = nullptr;
@@ -74,7 +74,7 @@ struct SolveStats {
   uint64_t safe_moves = 0;    // couplings performed without branching
   uint64_t memo_hits = 0;     // states search: revisits of a refuted state
   uint64_t constraints = 0;   // collision constraints built
-  std::string engine;         // "cycle" (a coupling breaks a cycle), "states", "precedence", "sat"
+  std::string engine;         // "cycle" (a coupling breaks a cycle), "states", "precedence", "sat", "pairs"
 };
 
 struct SolveResult {

@@ -9,7 +9,9 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
+#include "solver/constraints.hpp"
 #include "solver/gaps.hpp"
+#include "solver/planted.hpp"
 #include "solver/search.hpp"
 #include "solver/solve.hpp"
 #include "support/reference_solver.hpp"
@@ -57,7 +59,7 @@ TEST(SolveModelCases, Case1TwoGrowthsNo) {
 TEST(SolveModelCases, Case2OrderGadgetAThenB) {
   Instance inst = load("model-case2-order-gadget.grid");
   for (auto e : {SolveOptions::Engine::Auto, SolveOptions::Engine::States, SolveOptions::Engine::Precedence,
-                 SolveOptions::Engine::Sat}) {
+                 SolveOptions::Engine::Sat, SolveOptions::Engine::Pairs}) {
     SolveResult r = solve_with(inst, e);
     ASSERT_EQ(r.status, Status::Yes);
     EXPECT_EQ(names(inst, r.order), " a b");
@@ -122,10 +124,30 @@ struct Tally {
   int big = 0;           // instances with at least 5 couplings
 };
 
+// The pairs engine with every multi-form constraint handled lazily (the
+// path constraints of more than eight couplings take), on the instance's
+// pair constraints (gap constraints when horizontal-only). A coupling that
+// breaks a cycle is NO before any search, as in solve_discrete.
+Status pairs_lazy(const Instance& inst) {
+  const PreparedInstance prep(inst);
+  for (CouplingId q = 0; q < inst.couplings().size(); ++q)
+    if (prep.faces.coupling_breaks_cycle[q]) return Status::No;
+  const ConstraintSystem sys = inst.horizontal_only() ? build_gap_constraints(prep) : build_pair_constraints(prep);
+  SolveOptions o;
+  SearchBudget budget(o);
+  SolveStats st;
+  const SearchOutcome out = search_pairs(sys, budget, st, 0);
+  if (out.status == Status::Yes) {
+    EXPECT_EQ(replay_order(sys, out.order).failed_step, out.order.size());
+    EXPECT_FALSE(Simulator(inst).run_order(out.order).collision);
+  }
+  return out.status;
+}
+
 // One random instance: solve (every applicable engine) vs reference_solve.
 void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally& t) {
   auto ref = test::reference_solve(inst);
-  std::vector<SolveOptions::Engine> engines = {SolveOptions::Engine::States};
+  std::vector<SolveOptions::Engine> engines = {SolveOptions::Engine::States, SolveOptions::Engine::Pairs};
   if (inst.horizontal_only()) {
     engines.push_back(SolveOptions::Engine::Precedence);
     engines.push_back(SolveOptions::Engine::Sat);
@@ -151,6 +173,7 @@ void cross_check(const Instance& inst, uint64_t seed, const char* family, Tally&
     EXPECT_EQ(rp.order, r.order) << family << " seed " << seed;
     EXPECT_EQ(rp.stats.states, r.stats.states) << family << " seed " << seed;
   }
+  ASSERT_EQ(pairs_lazy(inst) == Status::Yes, ref.has_value()) << family << " seed " << seed << " (pairs, all lazy)";
   (ref ? t.yes : t.no) += 1;
   if (inst.couplings().size() >= 5) ++t.big;
   if (!ref && solve_discrete(inst).stats.engine != "cycle") ++t.no_by_search;
@@ -256,6 +279,67 @@ TEST(SolveRandom, SevenCouplingsHorizontal) {
   p.max_coupling = 1;
   p.horizontal_only = true;
   run_family("seven-horizontal", p, test::scaled(400), 310000, false);
+}
+
+// Larger instances (8-16 couplings, beyond the all-permutations reference):
+// the pairs engine (eager and all-lazy) against the states engine, every
+// kind of operation, trees and cycles, half of them planted.
+TEST(SolveRandomLarge, PairsAgreesWithStates) {
+  const uint64_t base = test::base_seed(700000);
+  const int count = test::scaled(2000);
+  int yes = 0, no = 0, lazy_constraints = 0;
+  for (int i = 0; i < count; ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    Rng rng(seed * 0x9E3779B97F4A7C15ULL + 7);
+    RandomInstanceParams p;
+    p.nodes = 14 + static_cast<uint32_t>(rng.below(20));
+    p.ops = 8 + static_cast<uint32_t>(rng.below(20));
+    p.max_coupling = 1 + static_cast<uint32_t>(rng.below(3));
+    p.extra_edge_percent = static_cast<uint32_t>(rng.below(3)) * 20;
+    p.spread = static_cast<uint32_t>(rng.below(3));
+    Instance inst = random_instance(p, seed);
+    // Every other instance planted (a YES kept from a random order), so that
+    // both answers are common.
+    if (i % 2 == 1) inst = plant_schedule(inst, seed).instance;
+    if (inst.couplings().size() < 8 || inst.couplings().size() > 16) continue;
+    const SolveResult states = solve_with(inst, SolveOptions::Engine::States);
+    const SolveResult pairs = solve_with(inst, SolveOptions::Engine::Pairs);
+    ASSERT_EQ(pairs.status, states.status) << "seed " << seed << "\n" << write_instance_string(inst);
+    ASSERT_EQ(pairs_lazy(inst), states.status) << "seed " << seed << " (all lazy)\n" << write_instance_string(inst);
+    (states.status == Status::Yes ? yes : no) += 1;
+    if (!inst.horizontal_only()) {
+      const ConstraintSystem sys = build_pair_constraints(PreparedInstance(inst));
+      for (const CollisionConstraint& c : sys.constraints)
+        if (c.num_forms > 1 && c.rel.size() > kPairsEagerLimit) ++lazy_constraints;
+    }
+  }
+  EXPECT_GT(yes, 0);
+  EXPECT_GT(no, 0);
+  std::printf("[ large ] %d instances: %d YES, %d NO; %d constraints above the eager limit (seed %llu)\n", yes + no,
+              yes, no, lazy_constraints, static_cast<unsigned long long>(base));
+}
+
+// plant_schedule: the hidden order passes the simulator on the cut
+// instance, and the solver agrees that it is YES; sizes as asked.
+TEST(Planted, HiddenOrderIsCollisionFree) {
+  const uint64_t base = test::base_seed(740000);
+  for (int i = 0; i < test::scaled(100); ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    RandomFamilyParams f;
+    f.family = static_cast<ShapeFamily>(i % 5);
+    f.couplings = 5 + static_cast<uint32_t>(i % 20);
+    f.max_coupling = 1 + static_cast<uint32_t>(i % 3);
+    const PlantedInstance p = planted_family_instance(f, seed);
+    const Instance& inst = p.instance;
+    ASSERT_EQ(p.hidden_order.size(), inst.couplings().size()) << "seed " << seed;
+    EXPECT_LE(inst.couplings().size(), f.couplings) << "seed " << seed;
+    std::vector<CouplingId> order;
+    for (const std::string& n : p.hidden_order) order.push_back(inst.find_coupling(n));
+    Simulator sim(inst);
+    ASSERT_FALSE(sim.run_order(order).collision) << "seed " << seed << "\n" << write_instance_string(inst);
+    EXPECT_EQ(solve_discrete(inst).status, Status::Yes) << "seed " << seed;
+  }
+  std::printf("[ planted ] %d instances (seed %llu)\n", test::scaled(100), static_cast<unsigned long long>(base));
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ po::options_description solve_options() {
       "model", po::value<std::string>()->default_value("discrete"),
       "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
       "engine", po::value<std::string>()->default_value("auto"),
-      "search: auto (sat for horizontal-only instances, else states), states, precedence, sat; "
+      "search: auto (sat for horizontal-only instances, else pairs), states, precedence, sat, pairs; "
       "continuous: auto or sat (the learning engine), z3 (Z3 on the whole component)")(
       "json", "print one JSON object instead of c/s/v lines")(
       "certificate", po::value<std::string>(),
@@ -151,7 +151,8 @@ SolveOptions::Engine engine_arg(const std::string& engine) {
   if (engine == "states") return SolveOptions::Engine::States;
   if (engine == "precedence") return SolveOptions::Engine::Precedence;
   if (engine == "sat") return SolveOptions::Engine::Sat;
-  throw UserError("--engine must be auto, states, precedence or sat, not '" + engine + "'");
+  if (engine == "pairs") return SolveOptions::Engine::Pairs;
+  throw UserError("--engine must be auto, states, precedence, sat or pairs, not '" + engine + "'");
 }
 
 int run_solve(const std::vector<std::string>& args) {

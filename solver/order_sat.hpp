@@ -1,0 +1,107 @@
+// Order literals for CaDiCaL: the machinery shared by the SAT engines
+// (solver/search_sat.cpp on gap systems, solver/search_pairs.cpp on any
+// system). Why it is exact: docs/solver.md, "Engine sat".
+//
+// A variable B(a, b) = "a before b" exists for each pair of couplings an
+// engine asks about (B(b, a) is its negation, so antisymmetry and totality
+// on these pairs are built in). An engine adds its clauses over these
+// literals (each must hold in every collision-free total order), then
+// solve() runs CaDiCaL incrementally: a model orients the pairs; a cyclic
+// orientation gets one clause "not all of these B's" per shortest cycle
+// found (true in every total order) and the solver runs again; an acyclic
+// one gives a topological order, which the engine's `accept` either takes
+// or refutes by adding clauses (lazy constraints).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "cnf/incremental_sat.hpp"
+#include "solver/search.hpp"
+
+namespace gridlock {
+
+class OrderSat {
+ public:
+  // k couplings 0..k-1. budget and st outlive this object.
+  OrderSat(size_t k, SearchBudget& budget, SolveStats& st) : budget_(budget), st_(st), k_(k) {}
+
+  // The literal "a before b" (a != b), creating its variable. O(1) expected.
+  int before(CouplingId a, CouplingId b);
+  // True iff the variable of the pair {a, b} exists already.
+  bool has_pair(CouplingId a, CouplingId b) const;
+  void add_clause(const std::vector<int>& lits) { sat_.add_clause(lits); }
+
+  // sum w_i [l_i] <= bound, weights > 0, as a weighted sequential counter
+  // (Hoelldobler, Manthey, Steinke): O(n * bound) clauses and variables.
+  // False if the bound is negative (unsatisfiable). lits is not kept.
+  bool at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t bound);
+
+  // Clauses true in every total order, added once after every pair variable
+  // an engine needs exists: the transitive closure R of `forced` (relations
+  // (a, b) = "a before b" true in every solution; bit matrix, skipped above
+  // kClosureLimit couplings) as units on the pairs it decides and, for a
+  // coupling x and partners c1 R c2, "x before c1 -> x before c2"; and
+  // transitivity on every triangle of pairs. False iff `forced` is cyclic
+  // (then no order exists). O(k^2 / 64 * |forced| + sum_x deg(x)^2).
+  bool add_order_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced);
+
+  // Solves until an acyclic model's topological order is accepted
+  // (Verdict::Yes with it) or the clauses are unsatisfiable (Verdict::No).
+  // accept(order) returns true to take the order; otherwise it must add at
+  // least one clause the current model violates (else the loop would not
+  // end). Throws LimitReached when the budget runs out (conflicts count as
+  // nodes). Statistics: decisions = solve calls, refuted = conflicts,
+  // propagations = cycle clauses, states = both.
+  SearchOutcome solve(const std::function<bool(const std::vector<CouplingId>&)>& accept);
+
+  size_t num_pairs() const { return pair_vars_.size(); }
+
+  // Above this many couplings the forced closure (k^2 / 8 bytes) is skipped.
+  static constexpr size_t kClosureLimit = 40000;
+
+ private:
+  struct PairVar {
+    int var;
+    CouplingId lo, hi;  // var true: lo before hi
+  };
+  // The orientation of the pairs in the model, CSR: the successors of v are
+  // adj[deg[v]] .. adj[deg[v + 1] - 1].
+  struct Orientation {
+    std::vector<uint32_t> deg;
+    std::vector<CouplingId> adj;
+  };
+  struct Components {
+    std::vector<uint32_t> comp;                   // component of each coupling
+    std::vector<CouplingId> order_rev;            // couplings, sinks first
+    std::vector<std::vector<CouplingId>> cyclic;  // members of each non-trivial component
+  };
+  static uint64_t key(CouplingId a, CouplingId b) { return (uint64_t{a} << 32) | b; }
+
+  bool add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced,
+                           const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
+  void add_triangle_clauses(const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
+  bool order_of_model(std::vector<CouplingId>& out);
+  Orientation model_orientation() const;
+  Components components(const Orientation& g) const;
+  void add_cycle_clauses(const Orientation& g, const Components& cc);
+
+  SearchBudget& budget_;
+  SolveStats& st_;
+  size_t k_;
+  IncrementalSat sat_;
+  std::unordered_map<uint64_t, int> var_of_pair_;
+  std::vector<PairVar> pair_vars_;
+  uint64_t counted_conflicts_ = 0;
+};
+
+// A one-form constraint (a gap, or a pair of regions with one changing
+// form) as clauses: one weighted at-most counter per narrower (the
+// inequalities of solver/gap_inequalities.hpp). Requires c.num_forms == 1 and
+// c.base[0] <= 0. False iff some bound is negative (no order exists).
+bool encode_gap_constraint(const CollisionConstraint& c, OrderSat& os);
+
+}  // namespace gridlock
