@@ -1,10 +1,12 @@
 // solve (discrete and continuous), collide and gaps (solver/, collide/).
 // Results are dicts with the fields of the command line's --json (exact
 // times as Fractions); python/gridlock/__init__.py wraps them in dataclasses.
+#include "certify/certify.hpp"
 #include "collide/collide.hpp"
 #include "python/bindings.hpp"
 #include "solver/continuous.hpp"
 #include "solver/gaps.hpp"
+#include "solver/no_certificate.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock::python {
@@ -28,16 +30,24 @@ SolveOptions::Engine engine_arg(const std::string& engine) {
   if (engine == "states") return SolveOptions::Engine::States;
   if (engine == "precedence") return SolveOptions::Engine::Precedence;
   if (engine == "sat") return SolveOptions::Engine::Sat;
-  raise("engine must be auto, states, precedence or sat, not '" + engine + "'");
+  if (engine == "pairs") return SolveOptions::Engine::Pairs;
+  raise("engine must be auto, states, precedence, sat or pairs, not '" + engine + "'");
+}
+
+// The continuous model's engines (as `gridlock solve --model continuous --engine`).
+ContinuousEngine continuous_engine_arg(const std::string& engine) {
+  if (engine == "auto") return ContinuousEngine::Auto;
+  if (engine == "sat") return ContinuousEngine::Sat;
+  if (engine == "z3") return ContinuousEngine::Z3;
+  raise("engine with model='continuous' must be auto, sat or z3, not '" + engine + "'");
 }
 
 SolveOptions solve_options(const std::string& model, const std::string& engine, const py::object& timeout,
                            uint64_t max_states, const Instance& inst) {
   if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
   SolveOptions opt;
-  opt.engine = engine_arg(engine);
-  if (model == "continuous" && opt.engine != SolveOptions::Engine::Auto)
-    raise("engine applies to model='discrete' only");
+  if (model == "discrete") opt.engine = engine_arg(engine);
+  else continuous_engine_arg(engine);
   if ((opt.engine == SolveOptions::Engine::Precedence || opt.engine == SolveOptions::Engine::Sat) &&
       !inst.horizontal_only())
     raise("engine " + engine + " needs a horizontal-only instance");
@@ -50,25 +60,55 @@ SolveOptions solve_options(const std::string& model, const std::string& engine, 
 }
 
 py::dict solve(const Instance& inst, const std::string& model, const std::string& engine, const py::object& timeout,
-               uint64_t max_states) {
+               uint64_t max_states, bool certificate) {
   const SolveOptions opt = solve_options(model, engine, timeout, max_states, inst);
   py::dict d;
   d["model"] = model;
+  d["certificate"] = py::none();
+  d["certificate_note"] = py::none();
   if (model == "continuous") {
-    const ContinuousResult r = run_interruptible([&] { return solve_continuous(inst, opt); });
+    const ContinuousEngine ce = continuous_engine_arg(engine);
+    const ContinuousResult r = run_interruptible([&] { return solve_continuous(inst, opt, ce); });
     d["status"] = verdict_name(r.status);
     d["engine"] = r.stats.engine;
     d["times"] = r.status == Verdict::Yes ? py::object(times_dict(inst, r.schedule)) : py::object(py::none());
     d["stats"] = stats_dict(r.stats);
+    if (certificate && r.status == Verdict::No) {
+      if (inst.horizontal_only()) d["certificate"] = continuous_no_certificate(inst);
+      else d["certificate_note"] = "continuous certificates for instances with vertical operations are not written yet";
+    }
     return d;
   }
-  const SolveResult r = run_interruptible([&] { return solve_discrete(inst, opt); });
+  CertifiedSolve cs;
+  if (certificate) {
+    const PreparedInstance prep(inst);
+    cs = run_interruptible([&] { return solve_discrete_certified(prep, opt); });
+  } else {
+    cs.result = run_interruptible([&] { return solve_discrete(inst, opt); });
+  }
+  const SolveResult& r = cs.result;
   d["status"] = verdict_name(r.status);
   d["engine"] = r.stats.engine;
   d["order"] = r.status == Verdict::Yes ? py::object(order_names(inst, r.order)) : py::object(py::none());
   d["stats"] = stats_dict(r.stats);
   d["cycle_breaker"] = r.cycle_breaker != kNone ? py::object(py::str(inst.couplings()[r.cycle_breaker].name))
                                                 : py::object(py::none());
+  if (certificate && r.status == Verdict::No) {
+    if (!cs.certificate.empty()) d["certificate"] = cs.certificate;
+    else d["certificate_note"] = cs.why_none;
+  }
+  return d;
+}
+
+// The independent checker (certify/, docs/certificates.md): never trusts the solvers.
+py::dict certify_text(const Instance& inst, const std::string& text, const std::string& model) {
+  if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
+  const CertifyResult r = run_interruptible([&] { return certify(inst, text, model); });
+  py::dict d;
+  d["proved"] = r.proved;
+  d["reason"] = r.proved ? py::object(py::none()) : py::object(py::str(r.reason));
+  d["kind"] = r.kind;
+  d["lemmas"] = r.lemmas;
   return d;
 }
 
@@ -138,7 +178,8 @@ py::dict gaps(const Instance& inst) {
 
 void bind_solver(py::module_& m) {
   m.def("solve", &solve, py::arg("instance"), py::arg("model") = "discrete", py::arg("engine") = "auto",
-        py::arg("timeout") = py::none(), py::arg("max_states") = 0);
+        py::arg("timeout") = py::none(), py::arg("max_states") = 0, py::arg("certificate") = false);
+  m.def("certify", &certify_text, py::arg("instance"), py::arg("certificate"), py::arg("model") = "discrete");
   m.def("collide", &collide, py::arg("instance"), py::arg("model") = "discrete", py::arg("method") = "auto");
   m.def("gaps", &gaps, py::arg("instance"));
 }

@@ -33,7 +33,7 @@ from ._core import (  # noqa: F401  (re-exported)
 )
 
 __all__ = [
-    "Collision", "SolveResult", "CollideResult", "GapsResult", "SatResult",
+    "Collision", "SolveResult", "CertifyResult", "certify", "CollideResult", "GapsResult", "SatResult",
     "Compiled", "Error", "Formula", "Instance", "LsatReduction",
     "animate", "collide", "compile", "fuzz", "fuzz_formula", "gaps", "lift",
     "planted_ksat", "random_instance", "random_ksat", "random_lsat",
@@ -65,9 +65,24 @@ class SolveResult:
     times: Optional[Times] = None      # continuous YES: a start time per coupling
     stats: Dict[str, float] = field(default_factory=dict)
     cycle_breaker: Optional[str] = None  # discrete NO because this coupling breaks a cycle
+    certificate: Optional[str] = None       # NO with certificate=True: the text certify() checks
+    certificate_note: Optional[str] = None  # NO with certificate=True but none written: why
 
     def __bool__(self) -> bool:
         return self.status == "YES"
+
+
+@dataclass
+class CertifyResult:
+    """certify(): proved is True when the certificate proves NO (docs/certificates.md)."""
+
+    proved: bool
+    kind: str                    # breaker, gaps, final-gap or final-cycle (once read)
+    lemmas: int                  # gaps: lemma lines checked
+    reason: Optional[str] = None  # not proved: what failed ("line N: ..." where a line is to blame)
+
+    def __bool__(self) -> bool:
+        return self.proved
 
 
 @dataclass
@@ -131,15 +146,25 @@ def simulate(instance: Instance, order: Optional[Sequence[str]] = None,
 
 
 def solve(instance: Instance, model: str = "discrete", engine: str = "auto",
-          timeout: Optional[float] = None, max_states: int = 0) -> SolveResult:
+          timeout: Optional[float] = None, max_states: int = 0,
+          certificate: bool = False) -> SolveResult:
     """Decides Collision-free Schedule exactly (docs/solver.md).
 
-    model "discrete" (an order) or "continuous" (start times); engine (discrete
-    only) "auto", "states", "precedence" or "sat"; timeout in seconds and
-    max_states give "UNKNOWN" when reached. Ctrl-C raises KeyboardInterrupt.
+    model "discrete" (an order) or "continuous" (start times); engine: discrete
+    "auto", "states", "precedence", "sat" or "pairs", continuous "auto", "sat"
+    or "z3"; timeout in seconds and max_states give "UNKNOWN" when reached.
+    certificate=True: a NO carries the text of its NO certificate where one can
+    be written (else certificate_note says why), for certify(). Ctrl-C raises
+    KeyboardInterrupt.
     """
     return SolveResult(**_core.solve(instance, model=model, engine=engine, timeout=timeout,
-                                     max_states=max_states))
+                                     max_states=max_states, certificate=certificate))
+
+
+def certify(instance: Instance, certificate: str, model: str = "discrete") -> CertifyResult:
+    """Checks a NO certificate with the independent checker (certify/, which
+    shares no code with the solvers): proved, or the reason it is rejected."""
+    return CertifyResult(**_core.certify(instance, certificate, model=model))
 
 
 def collide(instance: Instance, model: str = "discrete", method: str = "auto") -> CollideResult:

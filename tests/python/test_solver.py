@@ -10,7 +10,7 @@ from fractions import Fraction
 import pytest
 
 import gridlock
-from conftest import INSTANCES, SEED, cli_json, scaled
+from conftest import INSTANCES, SEED, cli, cli_json, scaled
 
 
 def cli_times(witness):
@@ -104,7 +104,8 @@ def test_engines_agree_on_horizontal_instances(tmp_path):
         inst = gridlock.random_instance(nodes=14, ops=7, max_coupling=3, horizontal_only=True,
                                         allow_grow=True, seed=seed)
         inst.write(str(path))
-        answers = {e: check_solve(inst, path, "discrete", e).status for e in ("states", "precedence", "sat")}
+        answers = {e: check_solve(inst, path, "discrete", e).status
+                   for e in ("states", "precedence", "sat", "pairs")}
         assert len(set(answers.values())) == 1, f"seed {seed}: {answers}"
         assert gridlock.gaps(inst).status == check_solve(inst, path, "continuous").status, f"seed {seed}"
 
@@ -168,3 +169,39 @@ def test_solve_releases_the_gil():
     stop.set()
     t.join()
     assert len(ticks) > 20  # the other thread ran while the solver did
+
+
+def test_no_certificates_are_checked_and_mutations_refused(tmp_path):
+    """Every NO of seeded random horizontal instances carries a certificate
+    that certify() and `gridlock certify` accept; a certificate for another
+    instance, or with its proof cut short, is refused."""
+    path, cert = tmp_path / "h.grid", tmp_path / "h.nocert"
+    nos = 0
+    for i in range(scaled(40)):
+        seed = SEED * 3000 + i
+        inst = gridlock.random_instance(nodes=14, ops=7, max_coupling=3, horizontal_only=True,
+                                        allow_grow=True, seed=seed)
+        r = gridlock.solve(inst, certificate=True)
+        if r.status != "NO":
+            assert r.certificate is None, f"seed {seed}"
+            continue
+        nos += 1
+        assert r.certificate, f"seed {seed}: {r.certificate_note}"
+        assert gridlock.certify(inst, r.certificate), f"seed {seed}"
+        inst.write(str(path))
+        cert.write_text(r.certificate)
+        code, out, _ = cli("certify", path, cert)
+        assert code == 20 and "c certificate checked" in out, f"seed {seed}"
+        if "\ngaps\n" in r.certificate:  # a lemma log: the final empty clause dropped
+            bad = gridlock.certify(inst, r.certificate[: -len("l\n")])
+            assert not bad and bad.reason, f"seed {seed}"
+    assert nos > 0
+
+
+def test_continuous_engines_agree():
+    for path in INSTANCES:
+        inst = gridlock.Instance.read(str(path))
+        got = {e: gridlock.solve(inst, model="continuous", engine=e, timeout=60).status for e in ("sat", "z3")}
+        assert len(set(got.values())) == 1, f"{path.name}: {got}"
+    with pytest.raises(gridlock.Error, match="engine"):
+        gridlock.solve(gridlock.Instance.read(str(INSTANCES[0])), model="continuous", engine="states")
