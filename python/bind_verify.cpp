@@ -41,6 +41,10 @@ py::dict verify_row(const VerifyOptions& opt, size_t i, const std::string& name,
   row["discrete"] = with_discrete ? py::object(py::str(verdict_name(r.discrete))) : py::object(py::none());
   row["continuous"] = with_discrete ? py::object(py::str(verdict_name(r.continuous))) : py::object(py::none());
   row["witnesses_checked"] = r.witnesses_checked();
+  row["no_certificate"] = r.no_certificate == Check::None    ? "none"
+                          : r.no_certificate == Check::Valid ? "checked"
+                                                             : "rejected";
+  row["ms_certify"] = r.ms_certify;
   row["solver_states"] = r.solver_states;
   row["ms_sat"] = r.ms_sat;
   row["ms_compile"] = r.ms_compile;
@@ -120,7 +124,9 @@ py::dict verify(const py::list& inputs, const py::object& names, const std::stri
   d["formulas"] = rows;
   d["summary"] = py::dict(py::arg("formulas") = t.formulas, py::arg("sat") = t.sat, py::arg("unsat") = t.unsat,
                           py::arg("agree") = t.agree, py::arg("unknown") = t.unknown, py::arg("disagree") = t.disagree,
-                          py::arg("certificates_checked") = t.certificates);
+                          py::arg("certificates_checked") = t.certificates,
+                          py::arg("no_certificates_checked") = t.no_certified,
+                          py::arg("no_certificates_rejected") = t.no_rejected);
   return d;
 }
 
@@ -144,6 +150,7 @@ py::dict tally_dict(const FuzzTally& t) {
   d["unsat"] = t.unsat;
   d["unknown"] = t.unknown;
   d["certificates_checked"] = t.certificates;
+  d["no_certificates_checked"] = t.no_certified;
   d["disagreements"] = t.disagreements;
   d["seconds"] = t.seconds;
   return d;

@@ -12,7 +12,7 @@ from conftest import FORMULAS, SEED, cli_json
 
 SMALL = [p for p in FORMULAS if p.stem in ("tiny-sat", "tiny-unsat", "lsat-sat")]
 # Times differ from run to run; everything else must be equal.
-TIMES = {"ms_sat", "ms_compile", "ms_solve", "ms_gaps", "ms_continuous_solve"}
+TIMES = {"ms_sat", "ms_compile", "ms_solve", "ms_gaps", "ms_continuous_solve", "ms_certify"}
 
 
 @pytest.mark.parametrize("model", ["discrete", "continuous", "both"])
