@@ -444,13 +444,19 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt,
 namespace {
 
 // The discrete solver's order as start times 0, 1, 2, ... (a discrete YES is
-// a continuous YES), within a small share of the budget; empty if it found
-// no order in time.
+// a continuous YES); empty if it found no order. Bounded by search nodes
+// (kDiscreteAttemptNodes, the same on any machine and under any load: a
+// wall-clock bound of 1 s made compiled uf50 formulas UNKNOWN on a loaded
+// machine although the discrete engine needs 0.3 s of CPU) and, with a
+// deadline, by a third of the time left.
+constexpr uint64_t kDiscreteAttemptNodes = 20000;
 std::vector<Rational> discrete_candidate(const Instance& inst, const SearchBudget& budget) {
   SolveOptions d;
-  d.seconds = 1.0;
-  if (budget.deadline().limit() > 0) d.seconds = std::min(1.0, (budget.deadline().limit() - budget.elapsed()) / 10);
-  if (d.seconds <= 0.01) return {};
+  d.max_states = kDiscreteAttemptNodes;
+  if (budget.deadline().limit() > 0) {
+    d.seconds = (budget.deadline().limit() - budget.elapsed()) / 3;
+    if (d.seconds <= 0.01) return {};
+  }
   SolveResult r = solve_discrete(inst, d);
   if (r.status != Verdict::Yes) return {};
   std::vector<Rational> t(inst.couplings().size(), Rational(0));

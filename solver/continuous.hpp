@@ -25,8 +25,9 @@
 //     "layered" schedule that its two-coupling pairs ask for (t_b >= t_a + lo
 //     where offset 0 collides), as early as possible (longest paths), checked
 //     pair by pair (pair_free_at_times) and face by face;
-//  4b. then the discrete solver's order (solve_discrete, 1 s at most, once
-//     per instance) as start times 0, 1, 2, ..., checked exactly per pair;
+//  4b. then the discrete solver's order (solve_discrete, at most 20 000
+//     search nodes and a third of the time left, once per instance) as
+//     start times 0, 1, 2, ..., checked exactly per pair;
 //  4c. then the learning engine (solver/continuous_sat.hpp: CaDiCaL over
 //     difference atoms, Bellman-Ford and Z3 on conjunctions) for every
 //     component it supports (no faces with non-zero nets; see its header);
