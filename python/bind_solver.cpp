@@ -3,6 +3,7 @@
 // times as Fractions); python/gridlock/__init__.py wraps them in dataclasses.
 #include "certify/certify.hpp"
 #include "collide/collide.hpp"
+#include "common/limits.hpp"
 #include "python/bindings.hpp"
 #include "solver/continuous.hpp"
 #include "solver/gaps.hpp"
@@ -124,7 +125,8 @@ py::dict collide(const Instance& inst, const std::string& model, const std::stri
   if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
   const TimeModel tm = model == "discrete" ? TimeModel::Discrete : TimeModel::Continuous;
   const CollideMethod cm = method_arg(method);
-  const CollideResult r = run_interruptible([&] { return find_collision(inst, tm, cm); });
+  const Deadline no_limit;  // no time limit, but a stop request (Ctrl-C) ends the quadratic methods
+  const CollideResult r = run_interruptible([&] { return find_collision(inst, tm, cm, &no_limit); });
   py::dict d;
   d["status"] = r.collides ? "YES" : "NO";
   d["model"] = model;
