@@ -41,18 +41,6 @@ bool pair_free_all_at_once(const CollisionConstraint& c) {
   return !step_collides(c.base.data(), sum.data(), c.num_forms);
 }
 
-// True iff f_i + f_j > 0 everywhere on the progress cube for every two forms
-// (its minimum over the cube is at a vertex: base + the negative coefficients).
-bool forms_never_both_nonpositive(const CollisionConstraint& c) {
-  for (uint32_t i = 0; i < c.num_forms; ++i)
-    for (uint32_t j = i + 1; j < c.num_forms; ++j) {
-      int64_t m = c.base[i] + c.base[j];
-      for (size_t q = 0; q < c.rel.size(); ++q) m += std::min<int64_t>(0, c.coef_of(q)[i] + c.coef_of(q)[j]);
-      if (m <= 0) return false;
-    }
-  return true;
-}
-
 // One component: its couplings, pair constraints and faces.
 struct Component {
   std::vector<CouplingId> couplings;

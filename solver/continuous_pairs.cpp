@@ -120,4 +120,14 @@ std::vector<OffsetInterval> free_offsets(const CollisionConstraint& c) {
   return out;
 }
 
+bool forms_never_both_nonpositive(const CollisionConstraint& c) {
+  for (uint32_t i = 0; i < c.num_forms; ++i)
+    for (uint32_t j = i + 1; j < c.num_forms; ++j) {
+      int64_t m = c.base[i] + c.base[j];
+      for (size_t q = 0; q < c.rel.size(); ++q) m += std::min<int64_t>(0, c.coef_of(q)[i] + c.coef_of(q)[j]);
+      if (m <= 0) return false;
+    }
+  return true;
+}
+
 }  // namespace gridlock

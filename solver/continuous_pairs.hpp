@@ -48,4 +48,10 @@ bool pair_free_at_offset(const CollisionConstraint& c, const Rational& d);
 // candidate lines (at most 76).
 std::vector<OffsetInterval> free_offsets(const CollisionConstraint& c);
 
+// True iff f_i + f_j > 0 on the whole progress cube for every two forms of c
+// (the minimum over the cube is at a vertex: base + the negative
+// coefficients): no two forms are ever <= 0 together, so a collision-free
+// pair keeps one form <= 0 for all time. O(forms^2 * couplings of c).
+bool forms_never_both_nonpositive(const CollisionConstraint& c);
+
 }  // namespace gridlock

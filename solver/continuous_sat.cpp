@@ -24,19 +24,6 @@ const std::vector<OffsetInterval>& cached_free_offsets(const CollisionConstraint
 
 namespace {
 
-// True iff f_i + f_j > 0 on the whole progress cube for every two forms: no
-// two forms are ever <= 0 together, so a collision-free pair keeps one form
-// <= 0 for all time (a cover could never hand over).
-bool forms_exclusive(const CollisionConstraint& c) {
-  for (uint32_t i = 0; i < c.num_forms; ++i)
-    for (uint32_t j = i + 1; j < c.num_forms; ++j) {
-      int64_t m = c.base[i] + c.base[j];
-      for (size_t q = 0; q < c.rel.size(); ++q) m += std::min<int64_t>(0, c.coef_of(q)[i] + c.coef_of(q)[j]);
-      if (m <= 0) return false;
-    }
-  return true;
-}
-
 // t_x - t_y <= v (< v when strict), x and y local coupling indices.
 struct Bound {
   uint32_t x = 0, y = 0;
@@ -681,7 +668,8 @@ std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sy
     if (c.rel.size() <= 2) continue;
     if (c.rel.size() > kMaxGapCouplings)
       return "a pair of more than " + std::to_string(kMaxGapCouplings) + " couplings";
-    if (c.num_forms > 1 && !forms_exclusive(c)) return "a pair of three or more couplings with several forms";
+    if (c.num_forms > 1 && !forms_never_both_nonpositive(c))
+      return "a pair of three or more couplings with several forms";
   }
   return std::nullopt;
 }
