@@ -38,9 +38,10 @@ SolveOptions::Engine engine_arg(const std::string& engine) {
 // The continuous model's engines (as `gridlock solve --model continuous --engine`).
 ContinuousEngine continuous_engine_arg(const std::string& engine) {
   if (engine == "auto") return ContinuousEngine::Auto;
+  if (engine == "dl") return ContinuousEngine::Dl;
   if (engine == "sat") return ContinuousEngine::Sat;
   if (engine == "z3") return ContinuousEngine::Z3;
-  raise("engine with model='continuous' must be auto, sat or z3, not '" + engine + "'");
+  raise("engine with model='continuous' must be auto, dl, sat or z3, not '" + engine + "'");
 }
 
 SolveOptions solve_options(const std::string& model, const std::string& engine, const py::object& timeout,

@@ -485,15 +485,19 @@ struct GeneralRun {
   FreeOffsetsCache offsets_cache;
   bool tried_discrete = false;
   std::vector<Rational> discrete_times;
-  bool used_z3 = false, used_sat = false;
+  bool used_z3 = false, used_sat = false, used_dl = false;
 };
+
+bool no_shortcuts(ContinuousEngine e) {
+  return e == ContinuousEngine::SatNoShortcuts || e == ContinuousEngine::DlNoShortcuts;
+}
 
 // Decides one component that the cheap tests did not settle: the discrete
 // order (once per instance), then the sat engine or Z3. Writes the times
 // into run.res.schedule; returns the verdict.
 Verdict solve_hard_component(GeneralRun& run, const Component& comp, const ConstraintSystem& sys, const FaceNets& faces,
                              z3::context& ctx, std::vector<int>& var_of, uint64_t& conflicts) {
-  if (run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::SatNoShortcuts) {
+  if (run.encoding == PairEncoding::Auto && !no_shortcuts(run.engine)) {
     if (!run.tried_discrete) run.tried_discrete = true, run.discrete_times = discrete_candidate(run.inst, run.budget);
     if (!run.discrete_times.empty() && component_free_at(comp, sys, faces, run.discrete_times)) {
       Rational lo = run.discrete_times[comp.couplings[0]];
@@ -507,9 +511,12 @@ Verdict solve_hard_component(GeneralRun& run, const Component& comp, const Const
   const bool sat_ok = run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::Z3 &&
                       !continuous_sat_unsupported(sys, comp.pairs, comp.faces.size());
   if (sat_ok) {
-    run.used_sat = true;
+    ContinuousSatOptions o;
+    o.difference_logic = run.engine != ContinuousEngine::Sat && run.engine != ContinuousEngine::SatNoShortcuts;
+    o.z3_for_linear = no_shortcuts(run.engine);
+    (o.difference_logic ? run.used_dl : run.used_sat) = true;
     ContinuousSatOutcome got = solve_component_sat(sys, comp.couplings, comp.pairs, run.offsets_cache, run.budget,
-                                                   run.res.stats, run.engine == ContinuousEngine::SatNoShortcuts);
+                                                   run.res.stats, o);
     for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
     return got.verdict;
   }
@@ -536,7 +543,7 @@ Verdict solve_general_within(GeneralRun& run) {
   uint64_t conflicts = 0;
   for (const Component& comp : comps) {
     run.budget.check();
-    const bool shortcuts = run.engine != ContinuousEngine::SatNoShortcuts;
+    const bool shortcuts = !no_shortcuts(run.engine);
     if (shortcuts && component_free_all_at_once(comp, sys, faces)) {
       ++run.res.stats.safe_moves;
       continue;
@@ -558,7 +565,7 @@ Verdict solve_general_within(GeneralRun& run) {
 
 ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt, PairEncoding encoding,
                                           ContinuousEngine engine) {
-  GeneralRun run{inst, opt, encoding, engine, SearchBudget(opt), {}, {}, false, {}, false, false};
+  GeneralRun run{inst, opt, encoding, engine, SearchBudget(opt), {}, {}, false, {}, false, false, false};
   ContinuousResult& res = run.res;
   Verdict v = Verdict::Unknown;
   try {
@@ -567,7 +574,7 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
     v = Verdict::Unknown;
   }
   run.budget.clear_progress();
-  res.stats.engine = run.used_sat ? "sat" : run.used_z3 ? "z3" : "trivial";
+  res.stats.engine = run.used_dl ? "dl" : run.used_sat ? "sat" : run.used_z3 ? "z3" : "trivial";
   if (v == Verdict::Yes && check_schedule_bounds(inst, res.schedule)) v = Verdict::Unknown;  // see the header
   res.status = v;
   if (v == Verdict::Yes) check_witness(inst, res.schedule);

@@ -88,21 +88,25 @@ struct ContinuousResult {
 
 // Decides Continuous Collision-free Schedule exactly (any instance), or
 // Unknown on a limit of opt. stats.engine: "gaps" (horizontal-only),
-// "trivial" (every component settled by a cheap test), "sat" (the learning
-// engine decided some component), "z3". stats.constraints: pair and cycle
+// "trivial" (every component settled by a cheap test), "dl" or "sat" (the
+// learning engine, difference-logic mode or lazy loop, decided some
+// component), "z3". stats.constraints: pair and cycle
 // constraints built; stats.decisions / refuted: Z3 decisions and conflicts
 // (learning engine: rounds and CaDiCaL conflicts) summed over the
 // components; stats.states: components searched plus search nodes;
 // stats.propagations: learned theory clauses; stats.safe_moves: components
 // settled by a cheap test (steps 4, 4b).
 // Which search decides a component that the cheap tests do not settle.
-// Auto and Sat: the learning engine (solver/continuous_sat.hpp) when it
-// supports the component, else Z3; Z3: the Z3 encoding of step 5 always.
-// SatNoShortcuts (tests): as Sat, without the cheap tests (all at once,
-// layered, the discrete order), so the learning engine meets every
-// component it supports, and every model with an active linear rule goes to
-// Z3 (not only those whose potentials break one).
-enum class ContinuousEngine { Auto, Sat, Z3, SatNoShortcuts };
+// Auto and Dl: the learning engine (solver/continuous_sat.hpp) in its
+// difference-logic mode (Z3 QF_RDL over the atoms) when it supports the
+// component, else Z3 on the clamped encoding; Sat: the learning engine's
+// lazy loop (CaDiCaL + Bellman-Ford) instead; Z3: the Z3 encoding of step 5
+// always. DlNoShortcuts and SatNoShortcuts (tests): as Dl and Sat, without
+// the cheap tests (all at once, layered, the discrete order), so the
+// learning engine meets every component it supports, and every model with
+// an active linear rule goes to Z3 on everything (not only those whose
+// times break one).
+enum class ContinuousEngine { Auto, Dl, Sat, Z3, DlNoShortcuts, SatNoShortcuts };
 
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {},
                                   ContinuousEngine engine = ContinuousEngine::Auto);

@@ -20,7 +20,10 @@
 // difference bound and with several a linear inequality, both guarded by the
 // choice's atoms ("rules"), checked on each model.
 //
-// Search. CaDiCaL finds a model of the clauses; the active difference bounds
+// Search (difference-logic mode, the default): Z3 on the clauses, meanings
+// and difference rules; linear rules checked on its model
+// (see ContinuousSatOptions). Search (lazy loop, the twin): CaDiCaL finds a
+// model of the clauses; the active difference bounds
 // (every atom's bound in its polarity, chosen intervals, rules whose guard is
 // true) are checked by Bellman-Ford (queue-based, exact integer weights that
 // encode strictness): a negative cycle is learned as the clause "not all of
@@ -71,17 +74,38 @@ struct ContinuousSatOutcome {
   std::vector<Rational> start;  // Yes: per coupling of the component (its order), the earliest at 0
 };
 
+// How solve_component_sat searches the encoding (the atoms, clauses and
+// rules above are the same).
+//  difference_logic (the default): Z3 (its SMT kernel with the
+//    arith.solver=3 arithmetic solver) on the whole encoding but the linear
+//    rules, which are all difference constraints; the linear rules are
+//    checked on its model, and if one fails, Z3 on everything decides. Z3
+//    propagates bounds inside its CDCL search: on unsatisfiable compiled
+//    formulas tens to hundreds of times faster than the lazy loop
+//    (docs/performance.md, "Continuous learning engine").
+//  else the lazy loop: CaDiCaL over the atoms, each full model checked by
+//    Bellman-Ford, negative cycles learned as clauses (the twin; the shape a
+//    proof log would take).
+//  z3_for_linear (tests): a model with an active linear rule always goes to
+//    Z3 on everything, even when it meets every rule (so tests reach that
+//    path).
+struct ContinuousSatOptions {
+  bool difference_logic = true;
+  bool z3_for_linear = false;
+};
+
 // Decides the component (couplings: its couplings, pairs: its pair
 // constraints; requires continuous_sat_unsupported == nullopt). Throws
 // LimitReached when budget runs out (time, stop request, nodes: one node per
-// CaDiCaL conflict and per round). stats: decisions += rounds (solve calls),
-// refuted += CaDiCaL conflicts, propagations += learned theory clauses,
-// memo_hits += Z3 calls. Time per round: one CaDiCaL call plus
-// O(n * edges) for Bellman-Ford in the worst case (near linear in practice).
-// z3_for_linear (tests): a model with an active linear rule always goes to
-// Z3, even when the potentials meet every rule (so tests reach that path).
+// conflict (CaDiCaL's or Z3's) and per round of the lazy loop; Z3 is
+// interrupted by a watcher thread). stats: decisions += rounds (lazy) or
+// Z3's decisions, refuted += conflicts, propagations += learned theory
+// clauses (lazy), memo_hits += Z3 calls. Lazy loop, time per round: one
+// CaDiCaL call plus O(n * edges) for Bellman-Ford in the worst case (near
+// linear in practice). Exponential in the worst case either way (the
+// problem is NP-hard).
 ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
                                          const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
-                                         SearchBudget& budget, SolveStats& stats, bool z3_for_linear = false);
+                                         SearchBudget& budget, SolveStats& stats, ContinuousSatOptions options = {});
 
 }  // namespace gridlock

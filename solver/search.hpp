@@ -45,6 +45,20 @@ class SearchBudget {
   double elapsed() const { return deadline_.elapsed(); }
   // Depth of the current search path, shown by the progress line.
   void set_depth(size_t depth) { depth_ = depth; }
+  // The node limit (0: none), for external solvers given it as a parameter.
+  uint64_t max_states() const { return opt_.max_states; }
+  // Draws "solve: WHAT, T s" on the progress line (if progress is on), at
+  // most twice a second: for a computation that cannot tick, e.g. one call
+  // of an external solver (then only from one thread at a time).
+  void show_activity(const char* what) {
+    if (!opt_.progress) return;
+    const double t = elapsed();
+    if (t - last_shown_ < 0.5) return;
+    last_shown_ = t;
+    std::fprintf(stderr, "\r\033[Ksolve: %s, %.1f s", what, t);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
   // Erases the progress line (if one was drawn).
   void clear_progress() {
     if (drawn_) std::fputs("\r\033[K", stderr);

@@ -97,7 +97,7 @@ TEST(SolveContinuousCommand, NoFromZ3OnANonHorizontalInstance) {
   auto r = run_gridlock({"solve", grid, "--model", "continuous", "--json"});
   ASSERT_EQ(r.exit_code, 20) << r.out << r.err;
   auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["engine"], "sat") << r.out;
+  EXPECT_EQ(j["engine"], "dl") << r.out;
   EXPECT_EQ(j["status"], "NO");
   auto z = run_gridlock({"solve", grid, "--model", "continuous", "--engine", "z3", "--json"});
   ASSERT_EQ(z.exit_code, 20) << z.out << z.err;
@@ -114,7 +114,7 @@ TEST(SolveContinuousCommand, BadOptionsAreErrors) {
   auto eng = run_gridlock(
       {"solve", kExamples + "model-case1-two-growths.grid", "--model", "continuous", "--engine", "states"});
   EXPECT_EQ(eng.exit_code, 1);
-  EXPECT_NE(eng.err.find("--engine with --model continuous must be auto, sat or z3"), std::string::npos) << eng.err;
+  EXPECT_NE(eng.err.find("--engine with --model continuous must be auto, dl, sat or z3"), std::string::npos) << eng.err;
   auto missing = run_gridlock({"solve", "/nonexistent.grid", "--model", "continuous"});
   EXPECT_EQ(missing.exit_code, 1);
 }

@@ -69,7 +69,9 @@ void expect_collision_free(const Instance& inst, const ContinuousResult& r, cons
   EXPECT_FALSE(sim.run(r.schedule).collision) << what;
 }
 
-TEST(ContinuousSat, AgreesWithZ3AndTwin) {
+// engine: SatNoShortcuts (the lazy loop) or DlNoShortcuts (Z3's difference
+// logic); reports "sat" or "dl" in stats.engine.
+void agrees_with_z3_and_twin(ContinuousEngine engine, const std::string& name) {
   const uint64_t seed0 = test::base_seed(20261125);
   const int per_family = test::scaled(300);
   int yes = 0, no = 0, by_sat = 0, twin_checked = 0;
@@ -81,11 +83,11 @@ TEST(ContinuousSat, AgreesWithZ3AndTwin) {
       if (inst.horizontal_only()) continue;
       const std::string what = std::string(fam.name) + " seed " + std::to_string(seed) +
                                " (GRIDLOCK_TEST_SEED replays)\n" + text_of(inst);
-      ContinuousResult s = solve_continuous_general(inst, {}, PairEncoding::Auto, ContinuousEngine::SatNoShortcuts);
+      ContinuousResult s = solve_continuous_general(inst, {}, PairEncoding::Auto, engine);
       ContinuousResult z = solve_continuous_general(inst, {}, PairEncoding::Auto, ContinuousEngine::Z3);
       ASSERT_NE(s.status, Verdict::Unknown) << what;
       ASSERT_EQ(s.status, z.status) << what;
-      if (s.stats.engine == "sat") ++by_sat;
+      if (s.stats.engine == name) ++by_sat;
       z3_calls += s.stats.memo_hits;
       if (s.status == Verdict::Yes) {
         expect_collision_free(inst, s, what);
@@ -105,10 +107,16 @@ TEST(ContinuousSat, AgreesWithZ3AndTwin) {
   EXPECT_GT(yes, per_family / 4);
   EXPECT_GT(no, per_family / 4);
   EXPECT_GT(by_sat, per_family);  // the engine itself answered, not only its fallback
-  std::printf(
-      "sat engine: %d YES, %d NO, %d decided by the engine (%llu Z3 conjunction checks), %d also against "
-      "the twin\n",
-      yes, no, by_sat, static_cast<unsigned long long>(z3_calls), twin_checked);
+  std::printf("%s engine: %d YES, %d NO, %d decided by the engine (%llu Z3 calls), %d also against the twin\n",
+              name.c_str(), yes, no, by_sat, static_cast<unsigned long long>(z3_calls), twin_checked);
+}
+
+TEST(ContinuousSat, LazyLoopAgreesWithZ3AndTwin) { agrees_with_z3_and_twin(ContinuousEngine::SatNoShortcuts, "sat"); }
+
+// With every shortcut off, a model with an active linear rule escalates to
+// Z3 on everything (QF_LRA): stats.memo_hits counts the Z3 calls (1 or 2).
+TEST(ContinuousSat, DifferenceLogicAgreesWithZ3AndTwin) {
+  agrees_with_z3_and_twin(ContinuousEngine::DlNoShortcuts, "dl");
 }
 
 // The default (shortcuts, then the engine) answers as the Z3 path does.
@@ -126,24 +134,47 @@ TEST(ContinuousSat, DefaultAgreesWithZ3) {
   }
 }
 
-// A timeout or a node limit gives Unknown and no schedule, never a wrong answer.
+// A timeout or a node limit gives Unknown and no schedule, never a wrong
+// answer (both searches: the lazy loop and Z3's difference logic).
 TEST(ContinuousSat, LimitsGiveUnknown) {
   const uint64_t seed0 = test::base_seed(20261127);
-  int limited = 0;
-  for (int i = 0; i < test::scaled(120); ++i) {
-    Instance inst = random_instance(sat_families()[5].p, seed0 + static_cast<uint64_t>(i));
-    ContinuousResult full = solve_continuous_general(inst, {}, PairEncoding::Auto, ContinuousEngine::SatNoShortcuts);
-    SolveOptions o;
-    o.max_states = 1;
-    ContinuousResult lim = solve_continuous_general(inst, o, PairEncoding::Auto, ContinuousEngine::SatNoShortcuts);
-    if (lim.status == Verdict::Unknown) {
-      ++limited;
-      EXPECT_TRUE(lim.schedule.start.empty());
-    } else {
-      EXPECT_EQ(lim.status, full.status);
+  for (ContinuousEngine engine : {ContinuousEngine::SatNoShortcuts, ContinuousEngine::DlNoShortcuts}) {
+    int limited = 0;
+    for (int i = 0; i < test::scaled(120); ++i) {
+      Instance inst = random_instance(sat_families()[5].p, seed0 + static_cast<uint64_t>(i));
+      ContinuousResult full = solve_continuous_general(inst, {}, PairEncoding::Auto, engine);
+      SolveOptions o;
+      o.max_states = 1;
+      ContinuousResult lim = solve_continuous_general(inst, o, PairEncoding::Auto, engine);
+      if (lim.status == Verdict::Unknown) {
+        ++limited;
+        EXPECT_TRUE(lim.schedule.start.empty());
+      } else {
+        EXPECT_EQ(lim.status, full.status);
+      }
     }
+    EXPECT_GE(limited, 1);
   }
-  EXPECT_GE(limited, 1);
+}
+
+// A compiled unsatisfiable formula that needs thousands of Z3 conflicts:
+// --timeout and a node limit stop Z3 (a watcher thread interrupts it).
+TEST(ContinuousSat, DifferenceLogicHonoursTimeAndNodes) {
+  KSatParams p;
+  p.n = 15, p.m = 64, p.k = 3, p.seed = 1;
+  while (solve_sat(random_ksat(p)).status != Verdict::No) ++p.seed;
+  const Formula f = random_ksat(p);
+  const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous);
+  SolveOptions o;
+  o.seconds = 2.0;
+  ContinuousResult r = solve_continuous(c.instance, o);
+  EXPECT_EQ(r.status, Verdict::Unknown);
+  EXPECT_LT(r.stats.seconds, 10.0);  // not a speed assertion: an uninterrupted Z3 runs for 10-20 s
+  o = {};
+  o.max_states = 50;
+  r = solve_continuous(c.instance, o);
+  EXPECT_EQ(r.status, Verdict::Unknown);
+  EXPECT_LE(r.stats.refuted, 60u);
 }
 
 // Compiled formulas in-process, every shortcut off (SatNoShortcuts: the
@@ -160,12 +191,36 @@ TEST(ContinuousSat, CompiledFormulasWithoutShortcutsMatchCadical) {
     p.n = 3, p.m = 4 + s % 3, p.k = 3, p.seed = 20261125 + static_cast<uint64_t>(s);
     const Formula f = random_ksat(p);
     const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous);
-    ContinuousResult r = solve_continuous_general(c.instance, {}, PairEncoding::Auto, ContinuousEngine::SatNoShortcuts);
-    EXPECT_EQ(r.status, solve_sat(f).status) << "seed " << p.seed;
-    if (r.status == Verdict::Yes) expect_collision_free(c.instance, r, "seed " + std::to_string(p.seed));
-    z3_calls += r.stats.memo_hits;
+    for (ContinuousEngine engine : {ContinuousEngine::SatNoShortcuts, ContinuousEngine::DlNoShortcuts}) {
+      ContinuousResult r = solve_continuous_general(c.instance, {}, PairEncoding::Auto, engine);
+      EXPECT_EQ(r.status, solve_sat(f).status) << "seed " << p.seed;
+      if (r.status == Verdict::Yes) expect_collision_free(c.instance, r, "seed " + std::to_string(p.seed));
+      z3_calls += r.stats.memo_hits;
+    }
   }
-  std::printf("Z3 conjunction checks: %llu\n", static_cast<unsigned long long>(z3_calls));
+  std::printf("Z3 calls: %llu\n", static_cast<unsigned long long>(z3_calls));
+}
+
+// Unsatisfiable and satisfiable formulas of 4 to 7 variables at the
+// threshold, every shortcut off: Z3's difference logic decides each
+// compiled instance (the lazy loop does not reach these sizes) and the
+// answer equals CaDiCaL's.
+TEST(ContinuousSat, DifferenceLogicDecidesLargerCompiledFormulas) {
+  const int formulas = test::scaled(8);
+  int unsat = 0;
+  for (int s = 0; s < formulas; ++s) {
+    KSatParams p;
+    p.n = 4 + s % 4, p.k = 3, p.seed = 20261130 + static_cast<uint64_t>(s);
+    p.m = (p.n * 426 + 50) / 100;
+    const Formula f = random_ksat(p);
+    const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous);
+    ContinuousResult r = solve_continuous_general(c.instance, {}, PairEncoding::Auto, ContinuousEngine::DlNoShortcuts);
+    const Verdict expected = solve_sat(f).status;
+    EXPECT_EQ(r.status, expected) << "n " << p.n << " seed " << p.seed;
+    if (r.status == Verdict::Yes) expect_collision_free(c.instance, r, "seed " + std::to_string(p.seed));
+    unsat += expected == Verdict::No;
+  }
+  std::printf("%d of %d unsatisfiable\n", unsat, formulas);
 }
 
 // Compiled 3-SAT formulas (through to-lsat, continuous reduction): the
@@ -182,10 +237,12 @@ TEST(ContinuousSat, CompiledFormulasMatchCadical) {
     ASSERT_EQ(test::run_gridlock({"cnf", "to-lsat", cnf, "-o", lsat}).exit_code, 0);
     ASSERT_EQ(test::run_gridlock({"compile", lsat, "--model", "continuous", "-o", grid}).exit_code, 0);
     const int expected = test::run_gridlock({"cnf", "solve", cnf}).exit_code;
-    auto got = test::run_gridlock({"solve", grid, "--model", "continuous", "--engine", "sat"});
-    EXPECT_EQ(got.exit_code, expected) << "seed " << seed << "\n" << got.out;
-    if (expected == 20) {
-      EXPECT_NE(got.out.find("c engine sat"), std::string::npos) << got.out;
+    for (const char* engine : {"sat", "dl"}) {
+      auto got = test::run_gridlock({"solve", grid, "--model", "continuous", "--engine", engine});
+      EXPECT_EQ(got.exit_code, expected) << "seed " << seed << "\n" << got.out;
+      if (expected == 20) {
+        EXPECT_NE(got.out.find(std::string("c engine ") + engine), std::string::npos) << got.out;
+      }
     }
   }
 }

@@ -50,7 +50,7 @@ TEST(ContinuousModelCases, Case1TwoGrowthsNoInBothPaths) {
   EXPECT_EQ(solve_continuous(inst).status, Status::No);
   ContinuousResult g = solve_continuous_general(inst);
   EXPECT_EQ(g.status, Status::No);
-  EXPECT_EQ(g.stats.engine, "sat");
+  EXPECT_EQ(g.stats.engine, "dl");
   ContinuousResult z = solve_continuous_general(inst, {}, PairEncoding::Auto, ContinuousEngine::Z3);
   EXPECT_EQ(z.status, Status::No);
   EXPECT_EQ(z.stats.engine, "z3");
@@ -156,7 +156,7 @@ TEST(ContinuousLimits, TimeoutGivesUnknownNeverAWrongAnswer) {
   Instance inst = parse_instance(kMutualWait);
   ContinuousResult full = solve_continuous(inst);
   EXPECT_EQ(full.status, Status::No);
-  EXPECT_EQ(full.stats.engine, "sat");
+  EXPECT_EQ(full.stats.engine, "dl");
   EXPECT_EQ(solve_continuous(inst, {}, ContinuousEngine::Z3).status, Status::No);
   EXPECT_EQ(solve_continuous_general(inst, {}, PairEncoding::Segments).status, Status::No);
   EXPECT_EQ(test::reference_continuous(inst), std::optional<bool>(false));

@@ -127,8 +127,8 @@ po::options_description solve_options() {
       "discrete (one coupling at a time, an order) or continuous (start times, couplings may overlap)")(
       "engine", po::value<std::string>()->default_value("auto"),
       "search: auto (sat for horizontal-only instances, else pairs), states, precedence, sat, pairs; "
-      "continuous: auto or sat (the learning engine), z3 (Z3 on the whole component)")(
-      "json", "print one JSON object instead of c/s/v lines")(
+      "continuous: auto or dl (the learning engine in Z3's difference logic), sat (its lazy "
+      "CaDiCaL loop), z3 (Z3 on the clamped encoding)")("json", "print one JSON object instead of c/s/v lines")(
       "certificate", po::value<std::string>(),
       "with a NO, write a certificate to FILE that 'gridlock certify' checks (docs/certificates.md)");
   return opts;
@@ -177,9 +177,10 @@ int run_solve(const std::vector<std::string>& args) {
   ContinuousEngine cont_engine = ContinuousEngine::Auto;
   if (model == "continuous") {
     if (engine == "z3") cont_engine = ContinuousEngine::Z3;
+    else if (engine == "dl") cont_engine = ContinuousEngine::Dl;
     else if (engine == "sat") cont_engine = ContinuousEngine::Sat;
     else if (engine != "auto")
-      throw UserError("--engine with --model continuous must be auto, sat or z3, not '" + engine + "'");
+      throw UserError("--engine with --model continuous must be auto, dl, sat or z3, not '" + engine + "'");
   }
 
   const std::string path = vm["instance"].as<std::string>();

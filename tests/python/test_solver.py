@@ -201,7 +201,7 @@ def test_no_certificates_are_checked_and_mutations_refused(tmp_path):
 def test_continuous_engines_agree():
     for path in INSTANCES:
         inst = gridlock.Instance.read(str(path))
-        got = {e: gridlock.solve(inst, model="continuous", engine=e, timeout=60).status for e in ("sat", "z3")}
+        got = {e: gridlock.solve(inst, model="continuous", engine=e, timeout=60).status for e in ("dl", "sat", "z3")}
         assert len(set(got.values())) == 1, f"{path.name}: {got}"
     with pytest.raises(gridlock.Error, match="engine"):
         gridlock.solve(gridlock.Instance.read(str(INSTANCES[0])), model="continuous", engine="states")
