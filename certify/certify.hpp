@@ -9,6 +9,7 @@
 //   certificate_text.*  reading the text (names, cells, literals)
 //   geometry.*          displacements, cycle sums, gaps, gap inequalities
 //   order_proof.*       the forward RUP check of a lemma log
+//   pair_pattern.*      why an x line's clause holds (a colliding pair of regions)
 //   certify.cpp         which kind proves what
 #pragma once
 
@@ -24,8 +25,8 @@ struct CertifyResult {
   bool proved = false;        // true: the certificate proves that inst has no schedule
   std::string reason;         // not proved: what failed, "line N: ..." where a line is to blame
   std::string kind;           // breaker, gaps, final-gap or final-cycle (once read)
-  uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance
-  uint64_t lemmas = 0;        // gaps: lemma lines checked
+  uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance; pairs: x lines checked
+  uint64_t lemmas = 0;        // gaps: lemma lines checked; pairs: o and l lines
   uint64_t axioms = 0;        // gaps: order-closure clauses derived
 };
 
