@@ -89,8 +89,9 @@ void check_pairs_proof(const Instance& inst, const CertificateText& c, CertifyRe
     return void(r.reason = "the proof does not end with the empty clause (a line 'l' alone)");
   const CertifyGeometry geo(inst);
   OrderProof proof(inst.couplings().size(), {}, c.lemmas);
-  proof.start();
+  bool started = false;  // the order closure: after the leading x lines
   for (const CertificateLemma& lem : c.lemmas) {
+    if (lem.runner == kNone && !started) started = true, proof.start();
     if (lem.lits.empty() && !lem.cycle && lem.runner == kNone && &lem != &c.lemmas.back())
       return void(r.reason = at(lem.line, "the empty clause before the end of the proof"));
     if (lem.runner != kNone) {
@@ -103,6 +104,7 @@ void check_pairs_proof(const Instance& inst, const CertificateText& c, CertifyRe
     if (!e.empty()) return void(r.reason = at(lem.line, e));
     ++r.lemmas;
   }
+  r.axioms = proof.axioms();
   r.proved = proof.refuted();
   if (!r.proved) r.reason = "the empty clause was accepted but the clauses are not refuted";
 }

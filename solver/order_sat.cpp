@@ -81,7 +81,7 @@ bool OrderSat::add_order_clauses(const std::vector<std::pair<CouplingId, Couplin
     partners[p.lo].push_back({p.hi, p.var});
     partners[p.hi].push_back({p.lo, -p.var});
   }
-  if (!cycle_log_ && k_ <= kClosureLimit && !add_closure_clauses(forced, partners)) return false;
+  if (k_ <= kClosureLimit && !add_closure_clauses(forced, partners)) return false;
   add_triangle_clauses(partners);
   return true;
 }
@@ -134,8 +134,8 @@ void OrderSat::add_triangle_clauses(const std::vector<std::vector<std::pair<Coup
         auto it = var_of_pair_.find(key(a, c));  // a < c
         if (it == var_of_pair_.end()) continue;
         // a before x before c implies a before c; c before x before a implies c before a.
-        add_cycle_clause({la, -lc, it->second});
-        add_cycle_clause({-la, lc, -it->second});
+        sat_.add_clause({la, -lc, it->second});
+        sat_.add_clause({-la, lc, -it->second});
       }
     }
   }

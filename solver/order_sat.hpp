@@ -62,12 +62,11 @@ class OrderSat {
   size_t num_pairs() const { return pair_vars_.size(); }
 
   // Proof mode (NO certificates, docs/certificates.md kind pairs), set
-  // before the first clause: CaDiCaL writes its DRAT proof to `drat`, every
-  // clause this class adds (transitivity, cycles) is appended to `cycles`
-  // (each is "not all of the negated literals", a directed cycle), and
-  // add_order_clauses adds no forced-closure clauses (they are not cycles
-  // over existing pairs). Engines must then use no at_most (its counter
-  // variables have no order meaning).
+  // before the first clause: CaDiCaL writes its DRAT proof to `drat` and
+  // every lazy cycle clause is appended to `cycles` (its literals, as
+  // edges, are a directed cycle). The triangle and forced-closure clauses
+  // are not logged: the checker derives them itself. Engines must then use
+  // no at_most (its counter variables have no order meaning).
   void prove_to(std::FILE* drat, std::vector<std::vector<int>>* cycles);
   // The pair of variable var as "lo before hi" (var > 0 a pair variable).
   std::pair<CouplingId, CouplingId> pair_of(int var) const;

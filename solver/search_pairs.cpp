@@ -71,7 +71,10 @@ class PairSearch {
       return encode_gap_constraint(c, os_);
     }
     if (c.rel.size() > eager_limit_) {
-      for (size_t a = 0; a < c.rel.size(); ++a)
+      // Proof mode: a pair gets its variable from the first clause naming
+      // it, so that every variable is named in the certificate (the
+      // checker's order closure must cover the solver's).
+      for (size_t a = 0; a < c.rel.size() && !proof_; ++a)
         for (size_t b = a + 1; b < c.rel.size(); ++b) os_.before(c.rel[a], c.rel[b]);
       lazy_.push_back(ci);
       return true;
