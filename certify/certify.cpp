@@ -84,8 +84,7 @@ void check_gaps_proof(const Instance& inst, const CertificateText& c, CertifyRes
 // anyway; otherwise the tree positions are the positions, so the forms are
 // the regions' true faces.
 void check_pairs_proof(const Instance& inst, const CertificateText& c, CertifyResult& r) {
-  if (c.lemmas.empty() || !c.lemmas.back().lits.empty() || c.lemmas.back().cycle ||
-      c.lemmas.back().runner != kNone)
+  if (c.lemmas.empty() || !c.lemmas.back().lits.empty() || c.lemmas.back().cycle || c.lemmas.back().runner != kNone)
     return void(r.reason = "the proof does not end with the empty clause (a line 'l' alone)");
   const CertifyGeometry geo(inst);
   OrderProof proof(inst.couplings().size(), {}, c.lemmas);

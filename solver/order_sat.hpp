@@ -109,7 +109,7 @@ class OrderSat {
   std::vector<PairVar> pair_vars_;
   uint64_t counted_conflicts_ = 0;
   std::vector<std::vector<int>>* cycle_log_ = nullptr;  // proof mode
-  std::vector<uint32_t> pair_index_;                   // proof mode: variable -> pair_vars_ index + 1
+  std::vector<uint32_t> pair_index_;                    // proof mode: variable -> pair_vars_ index + 1
   void add_cycle_clause(const std::vector<int>& c) {
     if (cycle_log_) cycle_log_->push_back(c);
     sat_.add_clause(c);

@@ -157,14 +157,13 @@ struct PairsProof {
     std::vector<std::pair<CouplingId, CouplingId>> lits;  // the clause: one of them holds
   };
   std::vector<Axiom> axioms;
-  std::FILE* drat = nullptr;                                 // set by the caller: CaDiCaL writes here
+  std::FILE* drat = nullptr;                                // set by the caller: CaDiCaL writes here
   std::vector<std::pair<CouplingId, CouplingId>> var_pair;  // var_pair[v]: variable v true means first < second
 };
 
 // The pairs engine in proof mode: one-form constraints as pattern clauses
 // too (no counters), no forced-closure clauses, every clause recorded in
 // proof. Same verdicts as search_pairs; somewhat slower.
-SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
-                                 PairsProof& proof);
+SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, PairsProof& proof);
 
 }  // namespace gridlock

@@ -31,7 +31,11 @@ class PairSearch {
  public:
   PairSearch(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, size_t eager_limit,
              PairsProof* proof = nullptr)
-      : sys_(sys), budget_(budget), st_(st), eager_limit_(eager_limit), os_(sys.num_couplings, budget, st),
+      : sys_(sys),
+        budget_(budget),
+        st_(st),
+        eager_limit_(eager_limit),
+        os_(sys.num_couplings, budget, st),
         proof_(proof) {
     if (proof_) os_.prove_to(proof_->drat, &cycles_);
   }
@@ -246,7 +250,7 @@ class PairSearch {
   std::vector<char> collides_;
   std::vector<int> clause_;
   PairsProof* proof_;
-  uint32_t current_ = 0;                 // the constraint being encoded or replayed
+  uint32_t current_ = 0;                  // the constraint being encoded or replayed
   std::vector<std::vector<int>> cycles_;  // proof mode: OrderSat's cycle clauses
 };
 
@@ -257,8 +261,7 @@ SearchOutcome search_pairs(const ConstraintSystem& sys, SearchBudget& budget, So
   return s.run();
 }
 
-SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
-                                 PairsProof& proof) {
+SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, PairsProof& proof) {
   PairSearch s(sys, budget, st, kPairsEagerLimit, &proof);
   SearchOutcome out = s.run();
   s.finish_proof();

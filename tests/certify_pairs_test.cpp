@@ -190,9 +190,10 @@ TEST(CertifyPairs, RandomGeneralInstances) {
   const Instance other = random_instance(general_params(base + 99999), base + 99999);
   Counts n;
   for (int i = 0; i < count; ++i) check_one(base + static_cast<uint64_t>(i), other, n);
-  std::printf("certify pairs: %d NO (%d breaker, %d pairs), %d YES; %d of %d mutations rejected; %d of %d clause "
-              "drops rejected\n",
-              n.no, n.breakers, n.pairs, n.yes, n.rejected, n.mutations, n.drops_rejected, n.drops);
+  std::printf(
+      "certify pairs: %d NO (%d breaker, %d pairs), %d YES; %d of %d mutations rejected; %d of %d clause "
+      "drops rejected\n",
+      n.no, n.breakers, n.pairs, n.yes, n.rejected, n.mutations, n.drops_rejected, n.drops);
   EXPECT_GT(n.pairs, 1000);
   EXPECT_GT(n.yes, 1000);
   EXPECT_GT(n.drops_rejected, 0);
