@@ -1,5 +1,7 @@
 #include "certify/certificate_text.hpp"
 
+#include "lattice/motion.hpp"
+
 #include <charconv>
 #include <cstdio>
 
@@ -50,6 +52,21 @@ std::optional<std::string> literal(const Instance& inst, std::string_view w, Ord
   return std::nullopt;
 }
 
+// "x,y" -> that node's region; "+NAME" -> the region operation NAME inserts or grows.
+std::optional<std::string> region(const Instance& inst, const Regions& regions, std::string_view w, uint32_t& out) {
+  if (w.empty() || w[0] != '+') {
+    NodeId v = kNone;
+    if (auto e = cell_node(inst, w, v)) return e;
+    out = v;  // regions 0..n-1 are the nodes
+    return std::nullopt;
+  }
+  const OpId k = inst.find_op(std::string(w.substr(1)));
+  if (k == kNone) return "unknown operation '" + std::string(w.substr(1)) + "'";
+  out = regions.region_of_op[k];
+  if (out == kNone) return "operation '" + std::string(w.substr(1)) + "' inserts or grows no region";
+  return std::nullopt;
+}
+
 std::string at(size_t line, const std::string& what) { return "line " + std::to_string(line) + ": " + what; }
 
 // The "p" and "couplings" lines.
@@ -74,13 +91,23 @@ std::optional<std::string> header_line(const Instance& inst, const std::vector<s
   return std::nullopt;
 }
 
-std::optional<std::string> lemma_line(const Instance& inst, const std::vector<std::string_view>& w, size_t line,
-                                      CertificateText& out) {
-  if (out.kind != "gaps") return at(line, "lemma line outside a gaps proof");
+std::optional<std::string> lemma_line(const Instance& inst, const Regions& regions,
+                                      const std::vector<std::string_view>& w, size_t line, CertificateText& out) {
+  if (out.kind != "gaps" && out.kind != "pairs") return at(line, "lemma line outside a gaps or pairs proof");
   CertificateLemma lem;
   lem.line = line;
   lem.cycle = w[0] == "o";
-  for (size_t i = 1; i < w.size(); ++i) {
+  size_t first = 1;
+  if (w[0] == "x") {
+    if (out.kind != "pairs") return at(line, "an x line outside a pairs proof");
+    if (w.size() < 4) return at(line, "expected 'x REGION REGION COUPLING LITERALS'");
+    if (auto e = region(inst, regions, w[1], lem.region_a)) return at(line, *e);
+    if (auto e = region(inst, regions, w[2], lem.region_b)) return at(line, *e);
+    if (lem.region_a == lem.region_b) return at(line, "a region paired with itself");
+    if (auto e = coupling(inst, w[3], lem.runner)) return at(line, *e);
+    first = 4;
+  }
+  for (size_t i = first; i < w.size(); ++i) {
     OrderLiteral l;
     if (auto e = literal(inst, w[i], l)) return at(line, *e);
     lem.lits.push_back(l);
@@ -106,7 +133,7 @@ std::optional<std::string> evidence_line(const Instance& inst, const std::vector
     if (auto e = cell_node(inst, w[i], v)) return at(line, *e);
     out.nodes.push_back(v);
   }
-  if (out.kind == "gaps" && !out.nodes.empty()) return at(line, "gaps takes no cells");
+  if ((out.kind == "gaps" || out.kind == "pairs") && !out.nodes.empty()) return at(line, out.kind + " takes no cells");
   if (out.kind == "final-gap" && out.nodes.size() != 2) return at(line, "final-gap takes two cells");
   return std::nullopt;
 }
@@ -124,6 +151,7 @@ uint64_t certificate_digest(const Instance& inst) {
 std::optional<std::string> read_certificate(const Instance& inst, std::string_view text, CertificateText& out) {
   out = CertificateText{};
   bool digest_seen = false;
+  Regions regions;  // built at the first lemma line
   size_t line = 0;
   for (size_t pos = 0; pos < text.size();) {
     const size_t end = std::min(text.find('\n', pos), text.size());
@@ -135,9 +163,10 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
     if (w[0] == "p" || w[0] == "couplings") {
       e = header_line(inst, w, line, out);
       digest_seen |= w[0] == "couplings";
-    } else if (w[0] == "o" || w[0] == "l") {
-      e = lemma_line(inst, w, line, out);
-    } else if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "final-gap" || w[0] == "final-cycle") {
+    } else if (w[0] == "o" || w[0] == "l" || w[0] == "x") {
+      if (regions.size() == 0) regions = Regions::build(inst);
+      e = lemma_line(inst, regions, w, line, out);
+    } else if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "pairs" || w[0] == "final-gap" || w[0] == "final-cycle") {
       e = evidence_line(inst, w, line, out);
     } else {
       e = at(line, "unknown line kind '" + std::string(w[0]) + "'");
@@ -146,7 +175,7 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
   }
   if (out.model.empty()) return std::string("no 'p gridlock-no-certificate 1 MODEL' line");
   if (!digest_seen) return std::string("no 'couplings COUNT DIGEST' line");
-  if (out.kind.empty()) return std::string("no evidence (breaker, gaps, final-gap or final-cycle)");
+  if (out.kind.empty()) return std::string("no evidence (breaker, gaps, pairs, final-gap or final-cycle)");
   return std::nullopt;
 }
 

@@ -18,17 +18,21 @@ using OrderLiteral = std::pair<CouplingId, CouplingId>;  // (a, b): "a before b"
 
 struct CertificateLemma {
   size_t line = 0;
-  bool cycle = false;  // 'o': no total order has all of `lits`; 'l': one of `lits` holds
+  bool cycle = false;  // 'o': no total order has all of `lits`; 'l', 'x': one of `lits` holds
   std::vector<OrderLiteral> lits;
+  // 'x' (kind pairs): the step of `runner` makes regions region_a and
+  // region_b (lattice/motion.hpp numbering) collide whenever every literal is false.
+  CouplingId runner = kNone;
+  uint32_t region_a = kNone, region_b = kNone;
 };
 
 struct CertificateText {
   std::string model;  // discrete | continuous
-  std::string kind;   // breaker | gaps | final-gap | final-cycle
+  std::string kind;   // breaker | gaps | pairs | final-gap | final-cycle
   size_t kind_line = 0;
   CouplingId breaker = kNone;            // breaker
   std::vector<NodeId> nodes;             // breaker, final-cycle: a closed walk; final-gap: the two ends
-  std::vector<CertificateLemma> lemmas;  // gaps
+  std::vector<CertificateLemma> lemmas;  // gaps, pairs
 };
 
 // Parses text against inst. Returns the reason on failure ("line N: ...").

@@ -4,6 +4,7 @@
 #include "certify/certificate_text.hpp"
 #include "certify/geometry.hpp"
 #include "certify/order_proof.hpp"
+#include "certify/pair_pattern.hpp"
 
 namespace gridlock {
 namespace {
@@ -77,6 +78,36 @@ void check_gaps_proof(const Instance& inst, const CertificateText& c, CertifyRes
   if (!r.proved) r.reason = "the empty clause was accepted but the clauses are not refuted";
 }
 
+// pairs: clauses over order literals, each justified ("x": a colliding
+// pair pattern; "o": a cycle) or RUP ("l"), ending with the empty clause.
+// Sound for any instance: if some coupling breaks a cycle the answer is NO
+// anyway; otherwise the tree positions are the positions, so the forms are
+// the regions' true faces.
+void check_pairs_proof(const Instance& inst, const CertificateText& c, CertifyResult& r) {
+  if (c.lemmas.empty() || !c.lemmas.back().lits.empty() || c.lemmas.back().cycle || c.lemmas.back().runner != kNone)
+    return void(r.reason = "the proof does not end with the empty clause (a line 'l' alone)");
+  const CertifyGeometry geo(inst);
+  OrderProof proof(inst.couplings().size(), {}, c.lemmas);
+  bool started = false;  // the order closure: after the leading x lines
+  for (const CertificateLemma& lem : c.lemmas) {
+    if (lem.runner == kNone && !started) started = true, proof.start();
+    if (lem.lits.empty() && !lem.cycle && lem.runner == kNone && &lem != &c.lemmas.back())
+      return void(r.reason = at(lem.line, "the empty clause before the end of the proof"));
+    if (lem.runner != kNone) {
+      if (auto e = check_pair_pattern(inst, geo, lem)) return void(r.reason = at(lem.line, *e));
+      proof.add_axiom(lem);
+      ++r.inequalities;
+      continue;
+    }
+    std::string e = proof.check(lem);
+    if (!e.empty()) return void(r.reason = at(lem.line, e));
+    ++r.lemmas;
+  }
+  r.axioms = proof.axioms();
+  r.proved = proof.refuted();
+  if (!r.proved) r.reason = "the empty clause was accepted but the clauses are not refuted";
+}
+
 }  // namespace
 
 CertifyResult certify(const Instance& inst, std::string_view text, const std::string& model) {
@@ -94,6 +125,7 @@ CertifyResult certify(const Instance& inst, std::string_view text, const std::st
   const bool discrete = model == "discrete";
   if (c.kind == "breaker" && discrete) check_breaker(inst, c, r);
   else if (c.kind == "gaps" && discrete) check_gaps_proof(inst, c, r);
+  else if (c.kind == "pairs" && discrete) check_pairs_proof(inst, c, r);
   else if (c.kind == "final-gap" && !discrete) check_final_gap(inst, c, r);
   else if (c.kind == "final-cycle" && !discrete) check_final_cycle(inst, c, r);
   else r.reason = at(c.kind_line, c.kind + " does not prove NO in the " + model + " model");

@@ -4,11 +4,13 @@
 // certify() re-derives everything it needs from the instance with its own
 // code (the model's definitions in lattice/ are shared; nothing of solver/
 // is used): the displacement of every node, the gap inequalities of a
-// horizontal-only instance, and unit propagation over order literals. A
+// horizontal-only instance, the forms of any pair of regions, and unit
+// propagation over order literals. A
 // third party should be able to read certify/ in an afternoon:
 //   certificate_text.*  reading the text (names, cells, literals)
 //   geometry.*          displacements, cycle sums, gaps, gap inequalities
 //   order_proof.*       the forward RUP check of a lemma log
+//   pair_pattern.*      why an x line's clause holds (a colliding pair of regions)
 //   certify.cpp         which kind proves what
 #pragma once
 
@@ -23,9 +25,9 @@ namespace gridlock {
 struct CertifyResult {
   bool proved = false;        // true: the certificate proves that inst has no schedule
   std::string reason;         // not proved: what failed, "line N: ..." where a line is to blame
-  std::string kind;           // breaker, gaps, final-gap or final-cycle (once read)
-  uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance
-  uint64_t lemmas = 0;        // gaps: lemma lines checked
+  std::string kind;           // breaker, gaps, pairs, final-gap or final-cycle (once read)
+  uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance; pairs: x lines checked
+  uint64_t lemmas = 0;        // gaps: lemma lines checked; pairs: o and l lines
   uint64_t axioms = 0;        // gaps: order-closure clauses derived
 };
 

@@ -26,14 +26,15 @@ CertifyGeometry::CertifyGeometry(const Instance& inst)
     if (tree_.parent[w] != kNone) depth_[w] = depth_[tree_.parent[w]] + 1;
 }
 
-void CertifyGeometry::add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f) const {
+void CertifyGeometry::add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f, int axis) const {
   const auto& ops = inst_.ops();
   while (p != q) {
     // Step up from the deeper end: its tree edge lies on the path.
     const bool up_q = depth_[q] >= depth_[p];
     const NodeId w = up_q ? q : p;
     const OpId k = tree_.parent_op[w];
-    const int64_t dx = op_child_vector(inst_, tree_, w).x;
+    const Vec2 v = op_child_vector(inst_, tree_, w);
+    const int64_t dx = axis == 0 ? v.x : v.y;
     if (k != kNone && dx != 0) f.terms.push_back({ops[k].coupling, (up_q ? sign : -sign) * dx});
     (up_q ? q : p) = tree_.parent[w];
   }
@@ -72,6 +73,24 @@ CouplingForm CertifyGeometry::overlap_form(NodeId a, NodeId b) const {
     f.terms.push_back({ops[kb].coupling, 1});
   normalise(f);
   return f;
+}
+
+CouplingForm CertifyGeometry::face_difference(uint32_t a, int fa, uint32_t b, int fb) const {
+  const RegionShape &sa = regions_.shapes[a], &sb = regions_.shapes[b];
+  CouplingForm f;
+  f.base = sa.base[fa] - sb.base[fb];
+  add_path(sb.ref[fb], sa.ref[fa], 1, f, fa / 2);
+  const auto& ops = inst_.ops();
+  if (sa.grow_op != kNone && sa.grow_face == fa) f.terms.push_back({ops[sa.grow_op].coupling, sa.grow_sign});
+  if (sb.grow_op != kNone && sb.grow_face == fb) f.terms.push_back({ops[sb.grow_op].coupling, -sb.grow_sign});
+  normalise(f);
+  return f;
+}
+
+std::vector<CouplingForm> CertifyGeometry::region_forms(uint32_t ra, uint32_t rb) const {
+  return {face_difference(ra, 1, rb, 0), face_difference(rb, 1, ra, 0), face_difference(ra, 3, rb, 2),
+          face_difference(rb, 3, ra, 2), face_difference(ra, 1, ra, 0), face_difference(rb, 1, rb, 0),
+          face_difference(ra, 3, ra, 2), face_difference(rb, 3, rb, 2)};
 }
 
 bool CertifyGeometry::row_neighbours(NodeId a, NodeId b) const {

@@ -47,14 +47,24 @@ class CertifyGeometry {
   // True iff a and b are in the same row, a left of b, no node between.
   bool row_neighbours(NodeId a, NodeId b) const;
 
+  // The eight forms of regions ra and rb (lattice/motion.hpp), in the
+  // order A.xhi - B.xlo, B.xhi - A.xlo, A.yhi - B.ylo, B.yhi - A.ylo, then
+  // the widths A.x, B.x, A.y, B.y: the two overlap with positive area iff
+  // all eight are > 0. Each face is its base plus the displacement of the
+  // node it follows along its axis (plus the progress of a growth for a
+  // grown region's far face). O(tree path lengths).
+  std::vector<CouplingForm> region_forms(uint32_t ra, uint32_t rb) const;
+
   // Every gap inequality of a horizontal-only instance: for each pair of
   // row neighbours and each coupling t that narrows their gap, the gap is
   // <= 0 right after t (docs/certificates.md, "Gap inequalities").
   std::vector<GapInequality> gap_inequalities() const;
 
  private:
-  // x-displacement of node q minus that of node p.
-  void add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f) const;
+  // Displacement of node q minus that of node p along axis (0: x, 1: y), times sign.
+  void add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f, int axis = 0) const;
+  // Face fa of region a minus face fb of region b (faces 0..3: xlo, xhi, ylo, yhi; same axis).
+  CouplingForm face_difference(uint32_t a, int fa, uint32_t b, int fb) const;
   const Instance& inst_;
   SpanningTree tree_;
   Regions regions_;

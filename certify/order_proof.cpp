@@ -220,6 +220,12 @@ bool OrderProof::add_closure() {
   return propagate();
 }
 
+void OrderProof::add_axiom(const CertificateLemma& lemma) {
+  std::vector<Lit> c;
+  for (const OrderLiteral& l : lemma.lits) c.push_back(lit(l));
+  if (!refuted_ && !add_clause(c)) refuted_ = true;
+}
+
 std::string OrderProof::check(const CertificateLemma& lemma) {
   std::vector<Lit> c;
   for (const OrderLiteral& l : lemma.lits) c.push_back(lit(l));

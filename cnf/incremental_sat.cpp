@@ -53,4 +53,12 @@ bool IncrementalSat::value(int var) const { return impl_->solver.val(var) > 0; }
 
 uint64_t IncrementalSat::conflicts() const { return impl_->conflicts; }
 
+void IncrementalSat::trace_proof(std::FILE* file) {
+  impl_->solver.set("binary", 0);
+  impl_->solver.set("elim", 0);
+  if (!impl_->solver.trace_proof(file, "<proof>")) throw std::logic_error("IncrementalSat: cannot trace a proof now");
+}
+
+void IncrementalSat::flush_proof() { impl_->solver.flush_proof_trace(); }
+
 }  // namespace gridlock

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -35,6 +36,14 @@ class IncrementalSat {
   // The value the search tries first for lit's variable (lit true). O(1).
   void set_phase(int lit);
   uint64_t conflicts() const;  // over all solve calls
+  // Writes CaDiCaL's DRAT proof as text to `file` (which outlives this
+  // object) from now on. Only before the first clause: it must see every
+  // derivation. Also turns off the inprocessing that restores eliminated
+  // clauses between incremental calls (variable elimination), so that
+  // every added line is a RUP lemma (docs/certificates.md, kind pairs).
+  void trace_proof(std::FILE* file);
+  // Flushes the proof written so far.
+  void flush_proof();
 
  private:
   struct Impl;

@@ -1,8 +1,10 @@
 #include "solver/no_certificate.hpp"
 
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 
+#include "solver/constraints.hpp"
 #include "solver/gaps.hpp"
 #include "solver/search.hpp"
 
@@ -36,7 +38,7 @@ std::string breaker_text(const PreparedInstance& prep, CouplingId q) {
 // Appends one lemma line ("o" or "l") of order literals.
 void append_lemma(std::string& out, char kind, const Instance& inst,
                   const std::vector<std::pair<CouplingId, CouplingId>>& lits) {
-  out += kind;
+  if (kind != '\0') out += kind;
   for (auto [a, b] : lits) {
     out += ' ';
     out += inst.couplings()[a].name;
@@ -44,6 +46,80 @@ void append_lemma(std::string& out, char kind, const Instance& inst,
     out += inst.couplings()[b].name;
   }
   out += '\n';
+}
+
+std::string region_text(const Instance& inst, const Regions& regions, uint32_t r) {
+  const RegionShape& sh = regions.shapes[r];
+  return sh.kind == RegionKind::Node ? cell_text(inst, sh.id) : "+" + inst.ops()[sh.id].name;
+}
+
+// One DRAT line ("1 -2 0"; "d ..." deletions are skipped: a forward RUP
+// check only gets stricter with fewer clauses, and never needs them) as an
+// "l" line of order literals.
+void append_drat_line(std::string& out, const Instance& inst, const PairsProof& proof, const std::string& line) {
+  if (line.empty() || line[0] == 'd') return;
+  std::vector<std::pair<CouplingId, CouplingId>> lits;
+  size_t pos = 0;
+  while (pos < line.size()) {
+    size_t used = 0;
+    const long long l = std::stoll(line.substr(pos), &used);
+    pos += used;
+    while (pos < line.size() && line[pos] == ' ') ++pos;
+    if (l == 0) break;
+    const auto v = static_cast<size_t>(l > 0 ? l : -l);
+    if (v >= proof.var_pair.size()) throw std::logic_error("NO certificate: a proof variable that is no pair");
+    const auto [lo, hi] = proof.var_pair[v];
+    lits.push_back(l > 0 ? std::make_pair(lo, hi) : std::make_pair(hi, lo));
+  }
+  append_lemma(out, 'l', inst, lits);
+}
+
+// The pairs engine in proof mode: "pairs", its clauses with their reasons
+// ("o" cycles, "x" colliding pair patterns), then CaDiCaL's lemmas. Empty
+// with why set when a limit is reached.
+std::string pairs_certificate(const PreparedInstance& prep, const SolveOptions& opt, std::string& why) {
+  const Instance& inst = prep.inst;
+  SearchBudget budget(opt);
+  SolveStats st;
+  PairsProof proof;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> drat(std::tmpfile(), &std::fclose);
+  if (!drat) throw std::runtime_error("NO certificate: cannot open a temporary file for the proof");
+  proof.drat = drat.get();
+  SearchOutcome out;
+  try {
+    const ConstraintSystem sys = build_pair_constraints(prep, &budget.deadline());
+    out = search_pairs_proof(sys, budget, st, proof);
+    if (out.status != Verdict::No)
+      throw std::logic_error("NO certificate: the pairs engine in proof mode finds an order");
+    std::string text = "pairs\n";
+    for (const PairsProof::Axiom& a : proof.axioms) {
+      if (a.constraint == kNone) {  // the literals, as edges, are a directed cycle
+        append_lemma(text, 'o', inst, a.lits);
+        continue;
+      }
+      const CollisionConstraint& c = sys.constraints[a.constraint];
+      text += "x " + region_text(inst, prep.regions, c.region_a) + " " + region_text(inst, prep.regions, c.region_b) +
+              " " + inst.couplings()[a.runner].name;
+      append_lemma(text, '\0', inst, a.lits);
+    }
+    std::rewind(drat.get());
+    std::string line;
+    bool empty_clause = false;
+    for (int ch; !empty_clause && (ch = std::fgetc(drat.get())) != EOF;) {
+      if (ch != '\n') {
+        line += static_cast<char>(ch);
+        continue;
+      }
+      empty_clause = line == "0";  // CaDiCaL may repeat it: the proof ends there
+      append_drat_line(text, inst, proof, line);
+      line.clear();
+    }
+    if (!empty_clause) text += "l\n";
+    return text;
+  } catch (const LimitReached&) {
+    why = "limit reached while the pairs engine wrote the certificate";
+    return {};
+  }
 }
 
 // Runs the precedence engine with a log of its cycles and nogoods.
@@ -82,7 +158,8 @@ CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const Solv
     return out;
   }
   if (!horizontal) {
-    out.why_none = "no NO certificate for instances with vertical operations yet (only for cycle breakers)";
+    const std::string proof = pairs_certificate(prep, opt, out.why_none);
+    if (!proof.empty()) out.certificate = header(inst, "discrete") + proof;
     return out;
   }
   if (!logged) {

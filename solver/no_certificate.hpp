@@ -5,7 +5,9 @@
 // Discrete: a coupling that breaks a cycle (its face walk), or, for
 // horizontal-only instances, the learning precedence engine's log: every
 // cycle of order literals it met ("o" lines) and every nogood it learned
-// ("l" lines), ending with the empty clause. Continuous, horizontal-only:
+// ("l" lines), ending with the empty clause; for other instances the pairs
+// engine's clauses ("x" colliding pair patterns, "o" cycles) and CaDiCaL's
+// lemmas ("l"). Continuous, horizontal-only:
 // running everything at once collides (paper, linear-time theorem): the
 // final configuration has a negative gap or a cycle that does not close.
 #pragma once
@@ -32,8 +34,10 @@ struct CertifiedSolve {
 // written: always for a cycle breaker; for a horizontal-only instance from
 // the precedence engine (engine Auto runs it instead of the SAT engine, so
 // the search runs once; after a NO of another engine it runs again, with
-// the same limits, to write the log). A NO of a non-horizontal instance
-// without a cycle breaker has none yet (why_none). Same exceptions as
+// the same limits, to write the log); for any other instance from the pairs
+// engine in proof mode (kind pairs: its clauses with their reasons and
+// CaDiCaL's DRAT proof), run again after the NO with the same limits.
+// why_none says why there is none (a limit reached). Same exceptions as
 // solve_discrete; std::logic_error if the second run disagrees.
 CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt,
                                         Simulator* replay = nullptr);

@@ -14,8 +14,26 @@ int OrderSat::before(CouplingId a, CouplingId b) {
   if (fresh) {
     it->second = sat_.new_var();
     pair_vars_.push_back({it->second, lo, hi});
+    if (cycle_log_) {
+      pair_index_.resize(static_cast<size_t>(it->second) + 1, 0);
+      pair_index_[static_cast<size_t>(it->second)] = static_cast<uint32_t>(pair_vars_.size());
+    }
   }
   return a == lo ? it->second : -it->second;
+}
+
+void OrderSat::prove_to(std::FILE* drat, std::vector<std::vector<int>>* cycles) {
+  if (!pair_vars_.empty()) throw std::logic_error("OrderSat: proof mode after the first variable");
+  sat_.trace_proof(drat);
+  cycle_log_ = cycles;
+}
+
+std::pair<CouplingId, CouplingId> OrderSat::pair_of(int var) const {
+  const auto v = static_cast<size_t>(var);
+  if (var <= 0 || v >= pair_index_.size() || pair_index_[v] == 0)
+    throw std::logic_error("OrderSat: a proof variable that is no pair");
+  const PairVar& p = pair_vars_[pair_index_[v] - 1];
+  return {p.lo, p.hi};
 }
 
 bool OrderSat::has_pair(CouplingId a, CouplingId b) const {
@@ -25,6 +43,7 @@ bool OrderSat::has_pair(CouplingId a, CouplingId b) const {
 // reg[j-1] of literal i means "the literals up to i weigh at least j"; only
 // the implications toward larger sums are needed.
 bool OrderSat::at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t bound) {
+  if (cycle_log_) throw std::logic_error("OrderSat: a counter in proof mode");
   if (bound < 0) return false;
   std::vector<std::pair<int, int64_t>> kept;
   int64_t total = 0;
@@ -275,7 +294,7 @@ void OrderSat::add_cycle_clauses(const Orientation& g, const Components& cc) {
         clause.push_back(-before(parent[v], v));
         covered[v] = 1;
       }
-      sat_.add_clause(clause);
+      add_cycle_clause(clause);
       ++st_.propagations;
     }
     if ((++stamp & 63) == 0) budget_.check(st_);

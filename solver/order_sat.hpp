@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <unordered_map>
 #include <utility>
@@ -60,6 +61,17 @@ class OrderSat {
 
   size_t num_pairs() const { return pair_vars_.size(); }
 
+  // Proof mode (NO certificates, docs/certificates.md kind pairs), set
+  // before the first clause: CaDiCaL writes its DRAT proof to `drat` and
+  // every lazy cycle clause is appended to `cycles` (its literals, as
+  // edges, are a directed cycle). The triangle and forced-closure clauses
+  // are not logged: the checker derives them itself. Engines must then use
+  // no at_most (its counter variables have no order meaning).
+  void prove_to(std::FILE* drat, std::vector<std::vector<int>>* cycles);
+  // The pair of variable var as "lo before hi" (var > 0 a pair variable).
+  std::pair<CouplingId, CouplingId> pair_of(int var) const;
+  void flush_proof() { sat_.flush_proof(); }
+
   // Above this many couplings the forced closure (k^2 / 8 bytes) is skipped.
   static constexpr size_t kClosureLimit = 40000;
 
@@ -96,6 +108,12 @@ class OrderSat {
   std::unordered_map<uint64_t, int> var_of_pair_;
   std::vector<PairVar> pair_vars_;
   uint64_t counted_conflicts_ = 0;
+  std::vector<std::vector<int>>* cycle_log_ = nullptr;  // proof mode
+  std::vector<uint32_t> pair_index_;                    // proof mode: variable -> pair_vars_ index + 1
+  void add_cycle_clause(const std::vector<int>& c) {
+    if (cycle_log_) cycle_log_->push_back(c);
+    sat_.add_clause(c);
+  }
 };
 
 // A one-form constraint (a gap, or a pair of regions with one changing

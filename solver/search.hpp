@@ -159,4 +159,25 @@ constexpr size_t kPairsEagerLimit = 8;
 SearchOutcome search_pairs(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
                            size_t eager_limit = kPairsEagerLimit);
 
+// What a NO of the pairs engine rests on: every clause it gave CaDiCaL,
+// over order literals (a, b) = "a before b", with its reason, and
+// CaDiCaL's DRAT proof of their unsatisfiability (text, over the variables
+// of var_pair). solver/no_certificate.cpp writes it as a certificate of
+// kind pairs (docs/certificates.md).
+struct PairsProof {
+  struct Axiom {
+    uint32_t constraint = kNone;  // kNone: a cycle clause; else the pair constraint that collides
+    CouplingId runner = kNone;    // the coupling whose step collides (pair constraints)
+    std::vector<std::pair<CouplingId, CouplingId>> lits;  // the clause: one of them holds
+  };
+  std::vector<Axiom> axioms;
+  std::FILE* drat = nullptr;                                // set by the caller: CaDiCaL writes here
+  std::vector<std::pair<CouplingId, CouplingId>> var_pair;  // var_pair[v]: variable v true means first < second
+};
+
+// The pairs engine in proof mode: one-form constraints as pattern clauses
+// too (no counters), no forced-closure clauses, every clause recorded in
+// proof. Same verdicts as search_pairs; somewhat slower.
+SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, PairsProof& proof);
+
 }  // namespace gridlock

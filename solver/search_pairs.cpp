@@ -29,8 +29,28 @@ namespace {
 
 class PairSearch {
  public:
-  PairSearch(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, size_t eager_limit)
-      : sys_(sys), budget_(budget), st_(st), eager_limit_(eager_limit), os_(sys.num_couplings, budget, st) {}
+  PairSearch(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, size_t eager_limit,
+             PairsProof* proof = nullptr)
+      : sys_(sys),
+        budget_(budget),
+        st_(st),
+        eager_limit_(eager_limit),
+        os_(sys.num_couplings, budget, st),
+        proof_(proof) {
+    if (proof_) os_.prove_to(proof_->drat, &cycles_);
+  }
+
+  // Proof mode: the cycle clauses and the variables' pairs into proof_.
+  void finish_proof() {
+    for (const std::vector<int>& c : cycles_) {
+      PairsProof::Axiom a;
+      for (int l : c) a.lits.push_back(order_lit(l));
+      proof_->axioms.push_back(std::move(a));
+    }
+    proof_->var_pair.assign(1, {kNone, kNone});
+    for (int v = 1; v <= static_cast<int>(os_.num_pairs()); ++v) proof_->var_pair.push_back(os_.pair_of(v));
+    os_.flush_proof();
+  }
 
   SearchOutcome run() {
     SearchOutcome out;
@@ -48,13 +68,17 @@ class PairSearch {
   // alone proves that no order exists.
   bool encode(uint32_t ci) {
     const CollisionConstraint& c = sys_.constraints[ci];
-    if (c.num_forms == 1) {
+    current_ = ci;
+    if (c.num_forms == 1 && !proof_) {
       if (c.base[0] > 0) return false;  // overlapping from the start: the first step of c collides
       gap_forced_relations(c, forced_);
       return encode_gap_constraint(c, os_);
     }
     if (c.rel.size() > eager_limit_) {
-      for (size_t a = 0; a < c.rel.size(); ++a)
+      // Proof mode: a pair gets its variable from the first clause naming
+      // it, so that every variable is named in the certificate (the
+      // checker's order closure must cover the solver's).
+      for (size_t a = 0; a < c.rel.size() && !proof_; ++a)
         for (size_t b = a + 1; b < c.rel.size(); ++b) os_.before(c.rel[a], c.rel[b]);
       lazy_.push_back(ci);
       return true;
@@ -130,6 +154,7 @@ class PairSearch {
       const CouplingId q = c.rel[others_[b]];
       clause_.push_back(((mask >> b) & 1) != 0 ? -os_.before(q, run) : -os_.before(run, q));
     }
+    record(run);
     if (clause_.empty()) return false;
     if (clause_.size() == 1) {  // a relation every solution has: feeds the forced closure
       const size_t b = static_cast<size_t>(__builtin_ctzll(fixed));
@@ -150,6 +175,7 @@ class PairSearch {
     std::vector<int64_t> cur;
     for (uint32_t ci : lazy_) {
       budget_.poll();
+      current_ = ci;
       const CollisionConstraint& c = sys_.constraints[ci];
       idx.resize(c.rel.size());
       for (uint32_t j = 0; j < idx.size(); ++j) idx[j] = j;
@@ -189,8 +215,25 @@ class PairSearch {
       if ((done && lowers) || (!done && raises)) continue;
       clause_.push_back(done ? -os_.before(q, run) : -os_.before(run, q));
     }
+    record(run);
     os_.add_clause(clause_);
     ++st_.propagations;
+  }
+
+  // The order literal of a variable's literal (proof mode: every variable is a pair).
+  std::pair<CouplingId, CouplingId> order_lit(int l) const {
+    const auto [lo, hi] = os_.pair_of(l > 0 ? l : -l);
+    return l > 0 ? std::make_pair(lo, hi) : std::make_pair(hi, lo);
+  }
+
+  // Proof mode: clause_ is a pattern clause of constraint current_ with runner run.
+  void record(CouplingId run) {
+    if (!proof_) return;
+    PairsProof::Axiom a;
+    a.constraint = current_;
+    a.runner = run;
+    for (int l : clause_) a.lits.push_back(order_lit(l));
+    proof_->axioms.push_back(std::move(a));
   }
 
   const ConstraintSystem& sys_;
@@ -206,6 +249,9 @@ class PairSearch {
   std::vector<int64_t> values_;
   std::vector<char> collides_;
   std::vector<int> clause_;
+  PairsProof* proof_;
+  uint32_t current_ = 0;                  // the constraint being encoded or replayed
+  std::vector<std::vector<int>> cycles_;  // proof mode: OrderSat's cycle clauses
 };
 
 }  // namespace
@@ -213,6 +259,13 @@ class PairSearch {
 SearchOutcome search_pairs(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, size_t eager_limit) {
   PairSearch s(sys, budget, st, std::min<size_t>(eager_limit, 20));
   return s.run();
+}
+
+SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, PairsProof& proof) {
+  PairSearch s(sys, budget, st, kPairsEagerLimit, &proof);
+  SearchOutcome out = s.run();
+  s.finish_proof();
+  return out;
 }
 
 }  // namespace gridlock
