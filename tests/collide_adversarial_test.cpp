@@ -1,0 +1,142 @@
+// The adversarial serpentines (collide/adversarial.hpp) against the
+// brute-force twins (tests/support/reference_collide) and the methods
+// against each other; and the two properties the bench relies on: with
+// expansions only the answer is NO, and the distance filter passes most
+// pairs.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <string>
+
+#include "collide/adversarial.hpp"
+#include "collide/collide.hpp"
+#include "collide/collide_tree.hpp"
+#include "common/random.hpp"
+#include "support/reference_collide.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+std::string describe(uint64_t seed, const SerpentineParams& p) {
+  return "seed " + std::to_string(seed) + " (columns " + std::to_string(p.columns) + ", height " +
+         std::to_string(p.height) + ", coupling size " + std::to_string(p.coupling_size) + ", " +
+         (p.couplings == SerpentineCouplings::Mixed ? "mixed" : "columns") + ", contract " +
+         std::to_string(p.contract_percent) + "%); replay with GRIDLOCK_TEST_SEED";
+}
+
+SerpentineParams small_params(Rng& rng) {
+  SerpentineParams p;
+  p.columns = 1 + static_cast<uint32_t>(rng.below(4));
+  p.height = 2 + static_cast<uint32_t>(rng.below(5));
+  p.coupling_size = 1 + static_cast<uint32_t>(rng.below(4));
+  p.couplings = rng.below(2) == 0 ? SerpentineCouplings::Mixed : SerpentineCouplings::Columns;
+  p.contract_percent = static_cast<uint32_t>(rng.below(3)) * 30;
+  return p;
+}
+
+// Auto and Pairwise (and the tree methods without couplings) must all say
+// `expect`; find_collision itself checks every YES witness in the simulator.
+void check_methods(const Instance& inst, TimeModel model, bool expect) {
+  bool singletons = true;
+  for (const auto& c : inst.couplings()) singletons = singletons && c.ops.size() == 1;
+  std::vector<CollideMethod> methods{CollideMethod::Auto, CollideMethod::Pairwise};
+  if (singletons) methods.push_back(CollideMethod::Tree), methods.push_back(CollideMethod::TreePairwise);
+  for (CollideMethod m : methods) {
+    CollideResult r = find_collision(inst, model, m);
+    ASSERT_EQ(r.collides, expect) << "method " << static_cast<int>(m) << " (" << r.algorithm << "), "
+                                  << (model == TimeModel::Continuous ? "continuous" : "discrete");
+  }
+}
+
+// Small serpentines (expansions and contractions, both groupings) against
+// every order (discrete) and every order + per-pair vertex enumeration
+// (continuous).
+TEST(CollideAdversarial, SmallSerpentinesAgainstBruteForce) {
+  int compared_d = 0, compared_c = 0, yes_d = 0, yes_c = 0;
+  for (int i = 0; i < test::scaled(1500); ++i) {
+    uint64_t seed = test::base_seed(61000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 6151 + 3);
+    SerpentineParams p = small_params(rng);
+    Instance inst = serpentine_instance(p, seed);
+    SCOPED_TRACE(describe(seed, p));
+    if (inst.couplings().empty()) continue;
+    if (inst.couplings().size() <= 5) {
+      bool d = test::brute_discrete(inst).collides;
+      check_methods(inst, TimeModel::Discrete, d);
+      ++compared_d, yes_d += d;
+    }
+    if (inst.couplings().size() <= 4) {
+      bool c = test::brute_continuous(inst).collides;
+      check_methods(inst, TimeModel::Continuous, c);
+      ++compared_c, yes_c += c;
+    }
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[collide] serpentines vs brute force: discrete " << compared_d << " (" << yes_d << " YES), continuous "
+            << compared_c << " (" << yes_c << " YES)\n";
+  EXPECT_GT(compared_d, test::scaled(1500) / 2);
+  EXPECT_GT(yes_d, 0);
+  EXPECT_LT(yes_d, compared_d);
+}
+
+// Medium serpentines: the two models and the methods against each other
+// (discrete YES implies continuous YES; Auto = Pairwise; without couplings
+// the centroid algorithm and its twins agree), and with expansions only
+// both models answer NO (the argument in collide/adversarial.hpp).
+TEST(CollideAdversarial, MediumSerpentinesMethodsAgree) {
+  int yes = 0, no = 0;
+  for (int i = 0; i < test::scaled(150); ++i) {
+    uint64_t seed = test::base_seed(62000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 7349 + 11);
+    SerpentineParams p;
+    p.columns = 2 + static_cast<uint32_t>(rng.below(6));
+    p.height = 4 + static_cast<uint32_t>(rng.below(6));
+    p.coupling_size = static_cast<uint32_t>(rng.below(5));  // 0: sqrt
+    p.couplings = rng.below(2) == 0 ? SerpentineCouplings::Mixed : SerpentineCouplings::Columns;
+    p.contract_percent = rng.below(2) == 0 ? 0 : 10 + static_cast<uint32_t>(rng.below(30));
+    Instance inst = serpentine_instance(p, seed);
+    SCOPED_TRACE(describe(seed, p));
+    CollideResult c = find_collision(inst, TimeModel::Continuous, CollideMethod::Pairwise);
+    CollideResult d = find_collision(inst, TimeModel::Discrete, CollideMethod::Pairwise);
+    if (p.contract_percent == 0) {
+      ASSERT_FALSE(c.collides);
+      ASSERT_FALSE(d.collides);
+    }
+    if (d.collides) {
+      ASSERT_TRUE(c.collides);
+    }
+    check_methods(inst, TimeModel::Continuous, c.collides);
+    check_methods(inst, TimeModel::Discrete, d.collides);
+    if (inst.couplings().size() <= 5) {
+      ASSERT_EQ(d.collides, test::brute_discrete(inst).collides);
+    }
+    (d.collides ? yes : no)++;
+  }
+  std::cout << "[collide] medium serpentines: discrete " << yes << " YES, " << no << " NO\n";
+}
+
+// What makes the family adversarial: on a square serpentine the distance
+// filter passes most pairs, and the paths carry many couplings.
+TEST(CollideAdversarial, FilterPassesMostPairs) {
+  for (SerpentineCouplings how : {SerpentineCouplings::Mixed, SerpentineCouplings::Columns}) {
+    Instance inst = serpentine_instance(square_serpentine(256, 3, how), 1);
+    ASSERT_EQ(inst.num_nodes(), 256u);
+    CollideResult r = find_collision(inst, TimeModel::Continuous, CollideMethod::Pairwise);
+    ASSERT_FALSE(r.collides);
+    EXPECT_GT(r.stats.full_tests * 4, r.stats.pairs * 3) << r.stats.full_tests << " of " << r.stats.pairs;
+  }
+}
+
+TEST(CollideAdversarial, BadParametersThrow) {
+  SerpentineParams p;
+  p.columns = 0;
+  EXPECT_THROW(serpentine_instance(p, 1), std::invalid_argument);
+  p.columns = 2, p.height = 1;
+  EXPECT_THROW(serpentine_instance(p, 1), std::invalid_argument);
+  p.height = 4, p.contract_percent = 101;
+  EXPECT_THROW(serpentine_instance(p, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace gridlock
