@@ -12,6 +12,8 @@
 #include "collide/collide.hpp"
 #include "collide/collide_tree.hpp"
 #include "common/random.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
 
@@ -126,6 +128,70 @@ TEST(CollideAdversarial, FilterPassesMostPairs) {
     ASSERT_FALSE(r.collides);
     EXPECT_GT(r.stats.full_tests * 4, r.stats.pairs * 3) << r.stats.full_tests << " of " << r.stats.pairs;
   }
+}
+
+// The incremental support values (ZonotopeTest::Incremental) against the
+// per-pair rebuild (PerPair): with Both, every pair that passes the filter
+// is decided both ways and a disagreement throws; the first colliding pair
+// found must be the same. Random instances with couplings and serpentines.
+void incremental_twin(const Instance& inst, uint64_t& pairs_compared) {
+  Simulator sim(inst);
+  for (char b : sim.faces().coupling_breaks_cycle)
+    if (b) return;  // the cycle step answers; no pairwise run
+  PairwiseStats st;
+  auto both = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, &st, nullptr,
+                                 ZonotopeTest::Both);
+  auto fast = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, nullptr, nullptr,
+                                 ZonotopeTest::Incremental);
+  auto slow = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, nullptr, nullptr,
+                                 ZonotopeTest::PerPair);
+  ASSERT_EQ(fast.has_value(), slow.has_value());
+  ASSERT_EQ(both.has_value(), slow.has_value());
+  if (fast) {
+    EXPECT_EQ(fast->a, slow->a);
+    EXPECT_EQ(fast->b, slow->b);
+  }
+  pairs_compared += st.full_tests;
+}
+
+TEST(CollideAdversarial, IncrementalSupportsAgainstPerPair) {
+  uint64_t pairs = 0;
+  int instances = 0;
+  for (int i = 0; i < test::scaled(2000); ++i) {
+    uint64_t seed = test::base_seed(63000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 3571 + 5);
+    RandomInstanceParams p;
+    p.nodes = 4 + static_cast<uint32_t>(rng.below(60));
+    p.ops = 2 + static_cast<uint32_t>(rng.below(p.nodes / 2 + 1));
+    p.max_coupling = 2 + static_cast<uint32_t>(rng.below(6));
+    p.extra_edge_percent = rng.below(4) == 0 ? 30 : 0;
+    p.horizontal_only = rng.below(8) == 0;
+    p.path_shape = rng.below(4) == 0;
+    p.spread = static_cast<uint32_t>(rng.below(3));
+    Instance inst = random_instance(p, seed);
+    SCOPED_TRACE("random instance seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    incremental_twin(inst, pairs);
+    ++instances;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  for (int i = 0; i < test::scaled(500); ++i) {
+    uint64_t seed = test::base_seed(64000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 1223 + 9);
+    SerpentineParams p;
+    p.columns = 2 + static_cast<uint32_t>(rng.below(8));
+    p.height = 3 + static_cast<uint32_t>(rng.below(8));
+    p.coupling_size = static_cast<uint32_t>(rng.below(6));
+    p.couplings = rng.below(2) == 0 ? SerpentineCouplings::Mixed : SerpentineCouplings::Columns;
+    p.contract_percent = rng.below(2) == 0 ? 0 : static_cast<uint32_t>(rng.below(20));
+    Instance inst = serpentine_instance(p, seed);
+    SCOPED_TRACE(describe(seed, p));
+    incremental_twin(inst, pairs);
+    ++instances;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[collide] incremental vs per-pair zonotope: " << instances << " instances, " << pairs
+            << " pairs decided both ways\n";
+  EXPECT_GT(pairs, 10000u);
 }
 
 TEST(CollideAdversarial, BadParametersThrow) {
