@@ -276,6 +276,7 @@ std::vector<Lin> projected_constraints(const PairSystem& S, const Normals& N) {
   Bound Ux, Lx, Uy, Ly;
   rect_bounds(S, Ux, Lx, Uy, Ly);
   std::vector<Lin> cons;
+  cons.reserve(N.u.size() + 10);
   for (size_t k = 0; k < N.u.size(); ++k) {
     Bound inf = inf_rect(N.u[k], Ux, Lx, Uy, Ly);
     Lin L;
@@ -651,6 +652,7 @@ struct SupportTable {
     N.u = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     N.h.assign(h_axis, h_axis + 4);
     for (const auto& [key, line] : lines) {
+      if (line.count == 0) continue;
       N.u.push_back({-key.second, key.first}), N.h.push_back(line.h_plus);
       N.u.push_back({key.second, -key.first}), N.h.push_back(line.h_minus);
     }
@@ -697,8 +699,7 @@ struct PathNetTracker {
     table.contribute(w, -1);
     if (on_axis(w)) return;
     Vec2 d = line_direction(w);
-    auto it = table.lines.find({d.x, d.y});
-    if (--it->second.count == 0) table.lines.erase(it);
+    --table.lines.find({d.x, d.y})->second.count;  // kept at 0: no O(K) rebuild when it returns
   }
   // Adds q's new net w to the table; a new line gets its supports over the
   // other active nets first.
