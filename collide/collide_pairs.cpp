@@ -634,6 +634,7 @@ struct SupportTable {
   };
   i128 h_axis[4] = {0, 0, 0, 0};                      // on (1,0), (-1,0), (0,1), (0,-1)
   std::map<std::pair<int64_t, int64_t>, Line> lines;  // by line direction, axis lines excluded
+  size_t empty_lines = 0;                             // lines with count 0
 
   static i128 pos(i128 v) { return v > 0 ? v : 0; }
   static i128 dot_plus(Vec2 d, Vec2 w) { return static_cast<i128>(-d.y) * w.x + static_cast<i128>(d.x) * w.y; }
@@ -674,6 +675,7 @@ struct PathNetTracker {
   int64_t reach_x = 0, reach_y = 0;
   bool supports = false;
   SupportTable table;
+  uint64_t purges = 0;
 
   explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
   void apply(CouplingId q, Vec2 v) {
@@ -694,12 +696,17 @@ struct PathNetTracker {
     }
     if (supports && now) learn_line(q, w);
   }
+  size_t live_lines() const { return table.lines.size() - table.empty_lines; }
   // Removes net w (about to change) from the table.
   void forget_line(Vec2 w) {
     table.contribute(w, -1);
     if (on_axis(w)) return;
     Vec2 d = line_direction(w);
-    --table.lines.find({d.x, d.y})->second.count;  // kept at 0: no O(K) rebuild when it returns
+    // Kept at count 0 (no O(K) rebuild when it returns) until the empty
+    // lines outnumber twice the live ones; then all empty ones go at once
+    // (amortised O(1) per forget), so steps and pairs cost O(live lines).
+    if (--table.lines.find({d.x, d.y})->second.count == 0 && ++table.empty_lines > 2 * live_lines() + 8)
+      std::erase_if(table.lines, [](const auto& kv) { return kv.second.count == 0; }), table.empty_lines = 0, ++purges;
   }
   // Adds q's new net w to the table; a new line gets its supports over the
   // other active nets first.
@@ -707,6 +714,7 @@ struct PathNetTracker {
     if (!on_axis(w)) {
       Vec2 d = line_direction(w);
       auto [it, fresh] = table.lines.try_emplace({d.x, d.y});
+      if (!fresh && it->second.count == 0) --table.empty_lines;
       if (fresh)
         for (CouplingId r : active) {
           if (r == q) continue;
@@ -834,6 +842,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
       stack.pop_back();
     }
   }
+  st.line_purges = path.purges;
   if (stats) *stats = st;
   return found;
 }

@@ -80,8 +80,9 @@ bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& 
 enum class TimeModel { Continuous, Discrete };
 
 struct PairwiseStats {
-  uint64_t pairs = 0;       // region pairs considered
-  uint64_t full_tests = 0;  // pairs that passed the quick filter
+  uint64_t pairs = 0;        // region pairs considered
+  uint64_t full_tests = 0;   // pairs that passed the quick filter
+  uint64_t line_purges = 0;  // continuous, incremental: times the empty lines were dropped
 };
 
 struct PairCollision {
