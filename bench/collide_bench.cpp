@@ -178,6 +178,15 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  // n = 6 400 with couplings of 3 (mixed and axis): about the 60 s limit.
+  benchmark::RegisterBenchmark("BM_SerpentineZonotopeMixed", BM_SerpentineZonotopeMixed)
+      ->Args({6400, 3})
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_SerpentineZonotopeColumns", BM_SerpentineZonotopeColumns)
+      ->Args({6400, 3})
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
   for (int64_t n : {576, 1024, 1600}) {  // the per-pair rebuild: n^3, 1600 takes ~20 s each
     for (int64_t c : {3, 0})
       benchmark::RegisterBenchmark("BM_SerpentinePerPairMixed", BM_SerpentinePerPairMixed)
