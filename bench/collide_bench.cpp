@@ -18,6 +18,7 @@
 #include <string>
 
 #include "bench_families.hpp"
+#include "collide/adversarial.hpp"
 #include "collide/collide.hpp"
 #include "collide/collide_tree.hpp"
 #include "lattice/random_instance.hpp"
@@ -64,6 +65,30 @@ void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
   state.counters["full_tests"] = static_cast<double>(r.stats.full_tests);
 }
 
+// Adversarial serpentines (collide/adversarial.hpp): a square serpentine of
+// about n nodes, couplings of range(1) operations (0: sqrt of the number of
+// operations), Mixed or Columns grouping, seed 1. NO instances: every pair
+// is examined. The pairwise method itself (pairwise_collision, as
+// find_collision's Pairwise step calls it), continuous with the incremental
+// supports or the per-pair rebuild (the method before them), or discrete.
+void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeModel model, ZonotopeTest ztest) {
+  SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(state.range(1)), how);
+  Instance inst = serpentine_instance(p, 1);
+  Simulator sim(inst);
+  bool yes = false;
+  PairwiseStats st;
+  for (auto _ : state) {
+    auto r = pairwise_collision(inst, sim.tree(), sim.regions(), model, &st, nullptr, ztest);
+    yes = r.has_value();
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["couplings"] = static_cast<double>(inst.couplings().size());
+  state.counters["yes"] = yes;
+  state.counters["pairs"] = static_cast<double>(st.pairs);
+  state.counters["full_tests"] = static_cast<double>(st.full_tests);
+}
+
 void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
 void BM_TreeCentroidComb(benchmark::State& s) { tree_bench(s, "comb", false); }
 void BM_TreeCentroidRandom(benchmark::State& s) { tree_bench(s, "random", false); }
@@ -74,6 +99,21 @@ void BM_ZonotopeAxis(benchmark::State& s) { coupled_bench(s, false, TimeModel::C
 void BM_ZonotopeMixed(benchmark::State& s) { coupled_bench(s, true, TimeModel::Continuous); }
 void BM_SubsetSumAxis(benchmark::State& s) { coupled_bench(s, false, TimeModel::Discrete); }
 void BM_SubsetSumMixed(benchmark::State& s) { coupled_bench(s, true, TimeModel::Discrete); }
+void BM_SerpentineZonotopeMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Continuous, ZonotopeTest::Incremental);
+}
+void BM_SerpentineZonotopeColumns(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::Incremental);
+}
+void BM_SerpentinePerPairMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Continuous, ZonotopeTest::PerPair);
+}
+void BM_SerpentinePerPairColumns(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::PerPair);
+}
+void BM_SerpentineSubsetSumMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Discrete, ZonotopeTest::Incremental);
+}
 
 #define TREE_SIZES ->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond)
 #define PAIR_SIZES ->RangeMultiplier(2)->Range(1000, 8000)->Unit(benchmark::kMillisecond)
@@ -87,6 +127,11 @@ BENCHMARK(BM_ZonotopeAxis)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark
 BENCHMARK(BM_ZonotopeMixed)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumAxis)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumMixed)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineZonotopeMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineZonotopeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentinePerPairMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentinePerPairColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3}})->Unit(benchmark::kMillisecond);
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
 // (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
@@ -122,6 +167,42 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  for (int64_t n : {576, 1024, 1600, 2304, 4096}) {
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_SerpentineZonotopeMixed", BM_SerpentineZonotopeMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SerpentineZonotopeColumns", BM_SerpentineZonotopeColumns)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
+  // n = 6 400 with couplings of 3 (mixed and axis): about the 60 s limit.
+  benchmark::RegisterBenchmark("BM_SerpentineZonotopeMixed", BM_SerpentineZonotopeMixed)
+      ->Args({6400, 3})
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_SerpentineZonotopeColumns", BM_SerpentineZonotopeColumns)
+      ->Args({6400, 3})
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {576, 1024, 1600}) {  // the per-pair rebuild: n^3, 1600 takes ~20 s each
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_SerpentinePerPairMixed", BM_SerpentinePerPairMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SerpentinePerPairColumns", BM_SerpentinePerPairColumns)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {144, 196, 256})
+    benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

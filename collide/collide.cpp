@@ -91,7 +91,7 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
   res.stats.full_tests = ps.full_tests;
   if (model == TimeModel::Continuous) {
     res.algorithm = "pairwise-zonotope";
-    res.complexity = "O(n^2 d^2) for d distinct coupling directions per path";
+    res.complexity = "O(n^2 D + P D^2) for D directions in the support table, P close pairs";
   } else {
     res.algorithm = "pairwise-subset-sum";
     res.complexity = "O(n^2 c L^3) for c distinct vectors and L operations per path";

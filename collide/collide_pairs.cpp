@@ -4,6 +4,7 @@
 #include <map>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 #include "common/assert.hpp"
 #include "common/int_math.hpp"
@@ -211,19 +212,21 @@ struct Normals {
   std::vector<i128> h;
 };
 
+// The line direction of w != 0: primitive, with x > 0 or (x == 0, y > 0).
+Vec2 line_direction(Vec2 w) {
+  int64_t gg = std::gcd(w.x < 0 ? -w.x : w.x, w.y < 0 ? -w.y : w.y);
+  Vec2 d{w.x / gg, w.y / gg};
+  if (d.x < 0 || (d.x == 0 && d.y < 0)) d = Vec2{-d.x, -d.y};
+  return d;
+}
+
 Normals normals_of(const std::vector<std::pair<CouplingId, Vec2>>& gens) {
   Normals N;
   // Group by line direction; the zonotope's edge normals are the normals of
   // the distinct lines (plus the axes, for the rectangle).
   std::vector<Vec2> dirs;
-  for (const auto& g : gens) {
-    Vec2 w = g.second;
-    int64_t gg = std::gcd(w.x < 0 ? -w.x : w.x, w.y < 0 ? -w.y : w.y);
-    if (gg == 0) continue;
-    Vec2 d{w.x / gg, w.y / gg};
-    if (d.x < 0 || (d.x == 0 && d.y < 0)) d = Vec2{-d.x, -d.y};
-    dirs.push_back(d);
-  }
+  for (const auto& g : gens)
+    if (!g.second.is_zero()) dirs.push_back(line_direction(g.second));
   std::sort(dirs.begin(), dirs.end(), [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   dirs.erase(std::unique(dirs.begin(), dirs.end()), dirs.end());
   N.u = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -273,6 +276,7 @@ std::vector<Lin> projected_constraints(const PairSystem& S, const Normals& N) {
   Bound Ux, Lx, Uy, Ly;
   rect_bounds(S, Ux, Lx, Uy, Ly);
   std::vector<Lin> cons;
+  cons.reserve(N.u.size() + 10);
   for (size_t k = 0; k < N.u.size(); ++k) {
     Bound inf = inf_rect(N.u[k], Ux, Lx, Uy, Ly);
     Lin L;
@@ -367,13 +371,28 @@ bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& 
          b[3] > b[2];
 }
 
+namespace {
+
+// Is the projected system on the own progresses feasible? N must hold the
+// support of the zonotope of S.gens on a set of normals that contains the
+// axis normals and both normals of every direction among S.gens (a larger
+// set is harmless: the extra conditions hold whenever 0 lies in the open
+// polygon Z' - R).
+bool projected_feasible(const PairSystem& S, const Normals& N) {
+  std::vector<Lin> cons = projected_constraints(S, N);
+  std::vector<Lin> one = S.nv == 2 ? eliminate_v1(cons) : cons;
+  return !interval_of(one).empty;
+}
+
+}  // namespace
+
 bool continuous_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets, PairWitness* want) {
   PairSystem S = build_system(A, B, nets);
   Normals N = normals_of(S.gens);
+  if (!projected_feasible(S, N)) return false;
+  if (!want) return true;
   std::vector<Lin> cons = projected_constraints(S, N);
   std::vector<Lin> one = S.nv == 2 ? eliminate_v1(cons) : cons;
-  if (interval_of(one).empty) return false;
-  if (!want) return true;
 
   // Witness: v0, then v1, then every other coupling in turn, each a multiple
   // of 2^-20 inside the (open) feasible interval given the earlier choices.
@@ -605,21 +624,65 @@ std::vector<std::vector<TreeArc>> tree_adjacency(const Instance& inst, const Spa
   return adj;
 }
 
+// The support values of the zonotope of the path's non-zero nets, kept as
+// the path changes: on the four axis normals, and on both normals of every
+// line direction present among the nets (with how many nets have it).
+struct SupportTable {
+  struct Line {
+    uint32_t count = 0;            // active nets on this line
+    i128 h_plus = 0, h_minus = 0;  // support on (-d.y, d.x) and on (d.y, -d.x)
+  };
+  i128 h_axis[4] = {0, 0, 0, 0};                      // on (1,0), (-1,0), (0,1), (0,-1)
+  std::map<std::pair<int64_t, int64_t>, Line> lines;  // by line direction, axis lines excluded
+  size_t empty_lines = 0;                             // lines with count 0
+
+  static i128 pos(i128 v) { return v > 0 ? v : 0; }
+  static i128 dot_plus(Vec2 d, Vec2 w) { return static_cast<i128>(-d.y) * w.x + static_cast<i128>(d.x) * w.y; }
+  // Adds (sign +1) or removes (-1) the contribution of a net w: O(lines).
+  void contribute(Vec2 w, int sign) {
+    h_axis[0] += sign * pos(w.x), h_axis[1] += sign * pos(-w.x);
+    h_axis[2] += sign * pos(w.y), h_axis[3] += sign * pos(-w.y);
+    for (auto& [key, line] : lines) {
+      i128 t = dot_plus(Vec2{key.first, key.second}, w);
+      line.h_plus += sign * pos(t), line.h_minus += sign * pos(-t);
+    }
+  }
+  // The table as normals and supports (the order of normals_of's axes first).
+  Normals normals() const {
+    Normals N;
+    N.u = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    N.h.assign(h_axis, h_axis + 4);
+    for (const auto& [key, line] : lines) {
+      if (line.count == 0) continue;
+      N.u.push_back({-key.second, key.first}), N.h.push_back(line.h_plus);
+      N.u.push_back({key.second, -key.first}), N.h.push_back(line.h_minus);
+    }
+    return N;
+  }
+};
+
+bool on_axis(Vec2 w) { return w.x == 0 || w.y == 0; }
+
 // The net vector of each coupling along a tree path that grows and shrinks
 // one arc at a time: net[q]; active, the couplings with a non-zero net
 // (pos[q] their place there, kNone if absent); reach_x / reach_y, the sums
-// of |net| per axis. O(1) per apply().
+// of |net| per axis. O(1) per apply(); with `supports` on, also the
+// SupportTable: O(lines) per apply(), plus O(active) when a new line appears.
 struct PathNetTracker {
   std::vector<Vec2> net;
   std::vector<uint32_t> pos;
   std::vector<CouplingId> active;
   int64_t reach_x = 0, reach_y = 0;
+  bool supports = false;
+  SupportTable table;
+  uint64_t purges = 0;
 
   explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
   void apply(CouplingId q, Vec2 v) {
     Vec2& w = net[q];
     reach_x -= std::abs(w.x), reach_y -= std::abs(w.y);
     bool was = !w.is_zero();
+    if (supports && was) forget_line(w);
     w += v;
     reach_x += std::abs(w.x), reach_y += std::abs(w.y);
     bool now = !w.is_zero();
@@ -631,6 +694,36 @@ struct PathNetTracker {
       active.pop_back();
       pos[q] = kNone;
     }
+    if (supports && now) learn_line(q, w);
+  }
+  size_t live_lines() const { return table.lines.size() - table.empty_lines; }
+  // Removes net w (about to change) from the table.
+  void forget_line(Vec2 w) {
+    table.contribute(w, -1);
+    if (on_axis(w)) return;
+    Vec2 d = line_direction(w);
+    // Kept at count 0 (no O(K) rebuild when it returns) until the empty
+    // lines outnumber twice the live ones; then all empty ones go at once
+    // (amortised O(1) per forget), so steps and pairs cost O(live lines).
+    if (--table.lines.find({d.x, d.y})->second.count == 0 && ++table.empty_lines > 2 * live_lines() + 8)
+      std::erase_if(table.lines, [](const auto& kv) { return kv.second.count == 0; }), table.empty_lines = 0, ++purges;
+  }
+  // Adds q's new net w to the table; a new line gets its supports over the
+  // other active nets first.
+  void learn_line(CouplingId q, Vec2 w) {
+    if (!on_axis(w)) {
+      Vec2 d = line_direction(w);
+      auto [it, fresh] = table.lines.try_emplace({d.x, d.y});
+      if (!fresh && it->second.count == 0) --table.empty_lines;
+      if (fresh)
+        for (CouplingId r : active) {
+          if (r == q) continue;
+          i128 t = SupportTable::dot_plus(d, net[r]);
+          it->second.h_plus += SupportTable::pos(t), it->second.h_minus += SupportTable::pos(-t);
+        }
+      ++it->second.count;
+    }
+    table.contribute(w, +1);
   }
   // The non-zero nets, as the pair tests take them.
   PathNets nets() const {
@@ -641,39 +734,69 @@ struct PathNetTracker {
   }
 };
 
+// The continuous test from the tracker's supports: only the own couplings'
+// nets are taken out of the zonotope. Same answer as
+// continuous_pair_collides(A, B, path.nets()).
+bool continuous_pair_collides_supported(const RegionForm& A, const RegionForm& B, const PathNetTracker& path) {
+  PathNets own;
+  for (CouplingId q : {A.own, B.own})
+    if (q != kNone && !path.net[q].is_zero() && (own.empty() || own.front().first != q))
+      own.push_back({q, path.net[q]});
+  PairSystem S = build_system(A, B, own);
+  Normals N = path.table.normals();
+  for (const auto& [q, w] : own)
+    for (size_t k = 0; k < N.u.size(); ++k)
+      N.h[k] -= SupportTable::pos(static_cast<i128>(N.u[k].x) * w.x + static_cast<i128>(N.u[k].y) * w.y);
+  return projected_feasible(S, N);
+}
+
+bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b, const PathNetTracker& path,
+                         ZonotopeTest ztest) {
+  if (ztest == ZonotopeTest::PerPair) return continuous_pair_collides(forms[a], forms[b], path.nets());
+  bool fast = continuous_pair_collides_supported(forms[a], forms[b], path);
+  if (ztest == ZonotopeTest::Both && fast != continuous_pair_collides(forms[a], forms[b], path.nets()))
+    throw std::logic_error("collide: incremental and per-pair zonotope tests disagree on regions " + std::to_string(a) +
+                           ", " + std::to_string(b));
+  return fast;
+}
+
 // Regions a and b with the path's nets between their reference nodes: the
 // reach filter, then the exact test of the model, counted in st; on a
 // meeting, the collision with its witness.
 std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b,
-                                       const PathNetTracker& path, TimeModel model, PairwiseStats& st) {
+                                       const PathNetTracker& path, TimeModel model, ZonotopeTest ztest,
+                                       PairwiseStats& st) {
   ++st.pairs;
   if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
   ++st.full_tests;
-  PathNets nets = path.nets();
-  bool hit = model == TimeModel::Continuous ? continuous_pair_collides(forms[a], forms[b], nets)
-                                            : discrete_pair_collides(forms[a], forms[b], nets);
+  bool hit = model == TimeModel::Continuous ? continuous_decision(forms, a, b, path, ztest)
+                                            : discrete_pair_collides(forms[a], forms[b], path.nets());
   if (!hit) return std::nullopt;
   PairCollision pc;
   pc.a = a, pc.b = b;
-  if (model == TimeModel::Continuous) continuous_pair_collides(forms[a], forms[b], nets, &pc.witness);
-  else discrete_pair_collides(forms[a], forms[b], nets, &pc.witness);
+  PathNets nets = path.nets();
+  bool again = model == TimeModel::Continuous ? continuous_pair_collides(forms[a], forms[b], nets, &pc.witness)
+                                              : discrete_pair_collides(forms[a], forms[b], nets, &pc.witness);
+  if (!again) throw std::logic_error("collide: the pair test gave no witness for a meeting it found");
   return pc;
 }
 
 }  // namespace
 
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
-                                                TimeModel model, PairwiseStats* stats, const Deadline* deadline) {
+                                                TimeModel model, PairwiseStats* stats, const Deadline* deadline,
+                                                ZonotopeTest ztest) {
   const size_t n = inst.num_nodes(), nq = inst.couplings().size();
   std::vector<RegionForm> forms = region_forms(inst, regions);
   std::vector<std::vector<uint32_t>> regs_of(n);
   for (uint32_t r = 0; r < forms.size(); ++r) regs_of[forms[r].ref].push_back(r);
   const std::vector<std::vector<TreeArc>> adj = tree_adjacency(inst, tree);
   PathNetTracker path(nq);
+  path.supports = model == TimeModel::Continuous && ztest != ZonotopeTest::PerPair;
   PairwiseStats st;
   std::optional<PairCollision> found;
   auto test = [&](uint32_t a, uint32_t b) {
-    found = test_pair(forms, a, b, path, model, st);
+    found = test_pair(forms, a, b, path, model, ztest, st);
     return found.has_value();
   };
   struct Frame {
@@ -719,6 +842,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
       stack.pop_back();
     }
   }
+  st.line_purges = path.purges;
   if (stats) *stats = st;
   return found;
 }

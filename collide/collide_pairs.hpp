@@ -80,8 +80,9 @@ bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& 
 enum class TimeModel { Continuous, Discrete };
 
 struct PairwiseStats {
-  uint64_t pairs = 0;       // region pairs considered
-  uint64_t full_tests = 0;  // pairs that passed the quick filter
+  uint64_t pairs = 0;        // region pairs considered
+  uint64_t full_tests = 0;   // pairs that passed the quick filter
+  uint64_t line_purges = 0;  // continuous, incremental: times the empty lines were dropped
 };
 
 struct PairCollision {
@@ -89,15 +90,33 @@ struct PairCollision {
   PairWitness witness;
 };
 
+// How pairwise_collision decides a pair in the continuous model (the
+// answer is the same; docs/collide.md, "Incremental support values"):
+enum class ZonotopeTest {
+  // The traversal keeps, next to the nets, the support value of the path's
+  // zonotope on the axis normals and on both normals of every direction
+  // present among the non-zero nets (D of them): O(D) per traversal step
+  // (O(K) more when a direction first appears), and per pair only the own
+  // couplings' nets are subtracted: O(D) plus Fourier-Motzkin.
+  Incremental,
+  // Per pair, normals and supports rebuilt from the path's nets: O(K + d K).
+  PerPair,
+  // Both on every pair; std::logic_error if they ever disagree (the twin).
+  Both,
+};
+
 // The O(n^2)-pairs method for any instance in which no coupling breaks a
 // cycle: a traversal of the spanning tree from every node keeps the net
 // vector of every coupling on the path (the paper's T(v, w), here a plain
 // array with a list of non-zero entries), and every pair of regions is tested
-// as above. Returns the first colliding pair found (with its witness).
+// as above. Returns the first colliding pair found (with its witness; a
+// continuous witness always comes from the per-pair method).
 // deadline (optional) is checked once per source node and every 4096
-// steps of the traversal: LimitReached when it has passed.
+// steps of the traversal: LimitReached when it has passed. ztest: see above
+// (ignored in the discrete model).
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats = nullptr,
-                                                const Deadline* deadline = nullptr);
+                                                const Deadline* deadline = nullptr,
+                                                ZonotopeTest ztest = ZonotopeTest::Incremental);
 
 }  // namespace gridlock

@@ -1,0 +1,87 @@
+#include "collide/adversarial.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/random.hpp"
+
+namespace gridlock {
+
+namespace {
+
+void must(const std::optional<std::string>& e) {
+  if (e) throw std::logic_error("serpentine_instance: " + *e);
+}
+
+// The cell of the k-th node (in walking order) of column i.
+Vec2 serpentine_cell(int64_t i, int64_t k, int64_t H) { return {i, i % 2 == 0 ? k : H - 1 - k}; }
+
+// Groups `ops` (shuffled) into couplings of `size`; a group of one stays a
+// singleton.
+void add_groups(InstanceBuilder& b, std::vector<std::string> ops, size_t size, Rng& rng) {
+  rng.shuffle(ops);
+  for (size_t i = 0; i < ops.size(); i += size) {
+    std::vector<std::string> g;
+    for (size_t j = i; j < ops.size() && j < i + size; ++j) g.push_back(ops[j]);
+    if (g.size() > 1) must(b.add_coupling("Q" + std::to_string(i / size), g));
+  }
+}
+
+}  // namespace
+
+Instance serpentine_instance(const SerpentineParams& p, uint64_t seed) {
+  if (p.columns == 0 || p.height < 2 || p.contract_percent > 100)
+    throw std::invalid_argument("serpentine_instance: needs columns >= 1, height >= 2, contract_percent <= 100");
+  const int64_t C = p.columns, H = p.height;
+  Rng rng(seed);
+  InstanceBuilder b;
+  for (int64_t i = 0; i < C; ++i)
+    for (int64_t k = 0; k < H; ++k) must(b.add_node(serpentine_cell(i, k, H)));
+  for (int64_t i = 0; i < C; ++i) {
+    for (int64_t k = 0; k + 1 < H; ++k) must(b.add_edge(serpentine_cell(i, k, H), serpentine_cell(i, k + 1, H)));
+    if (i + 1 < C) must(b.add_edge(serpentine_cell(i, H - 1, H), serpentine_cell(i + 1, 0, H)));
+  }
+  auto kind = [&] { return rng.below(100) < p.contract_percent ? OpKind::Contract : OpKind::Expand; };
+  std::vector<std::string> connectors, column_ops;
+  for (int64_t i = 0; i + 1 < C; ++i) {
+    std::string name = "x" + std::to_string(i);
+    must(b.add_op(name, kind(), serpentine_cell(i, H - 1, H), Dir::PosX));
+    connectors.push_back(name);
+  }
+  for (int64_t i = 0; i < C; ++i)
+    for (int64_t k = 1; k + 2 < H; k += 2) {
+      std::string name = "y" + std::to_string(i) + "_" + std::to_string(k);
+      must(b.add_op(name, kind(), serpentine_cell(i, k, H), i % 2 == 0 ? Dir::PosY : Dir::NegY));
+      column_ops.push_back(name);
+    }
+  size_t size = p.coupling_size;
+  if (size == 0) {
+    size_t total = connectors.size() + column_ops.size();
+    size = static_cast<size_t>(std::ceil(std::sqrt(static_cast<double>(total))));
+  }
+  if (size > 1) {
+    if (p.couplings == SerpentineCouplings::Mixed)
+      column_ops.insert(column_ops.end(), connectors.begin(), connectors.end());
+    add_groups(b, column_ops, size, rng);
+  }
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::logic_error("serpentine_instance: " + e->message);
+  return inst;
+}
+
+SerpentineParams square_serpentine(int64_t n, uint32_t coupling_size, SerpentineCouplings couplings) {
+  int64_t side = static_cast<int64_t>(std::llround(std::sqrt(static_cast<double>(std::max<int64_t>(n, 16)))));
+  side += side % 2;
+  SerpentineParams p;
+  p.columns = static_cast<uint32_t>(side);
+  p.height = static_cast<uint32_t>(side);
+  p.coupling_size = coupling_size;
+  p.couplings = couplings;
+  return p;
+}
+
+}  // namespace gridlock

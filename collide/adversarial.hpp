@@ -1,0 +1,65 @@
+// Adversarial instance families for Colliding Schedule with couplings
+// (docs/collide.md, "Adversarial families"; bench/collide_bench.cpp).
+//
+// The benchmark combs are easy for the pairwise methods: few operations per
+// path, so the O(1) distance filter (pair_may_meet) rejects almost every
+// pair. The serpentine defeats it on purpose:
+//
+//   columns x = 0 .. C-1 of H nodes each, walked as one path: column i goes
+//   up when i is even and down when it is odd; a connector edge joins the
+//   top (i even) or the bottom (i odd) of column i to column i+1.
+//   Operations: an expansion along +x on every connector, and an expansion
+//   along the walking direction on every other edge inside a column
+//   (edges k -> k+1 for odd k, so no node is in two operations).
+//
+// Every pair of regions in columns i < j has the j - i connectors on its
+// tree path, all +x, so the filter's x reach equals the x distance and it
+// passes; the column expansions on the path give a y reach of the order of
+// (j - i) H / 2, so it passes in y for all but nearby columns. The paths
+// are long (up to n) and carry Theta(min(n, couplings)) couplings with a
+// non-zero net. Couplings: the operations (Mixed: all of them; Columns:
+// only the column ones, connectors stay singletons) are shuffled with the
+// seed and cut into groups of `coupling_size`: Mixed couplings combine +x
+// connector steps with +-y column steps, so nets point in many directions;
+// Columns couplings give axis-only nets.
+//
+// Answer with expansions only: NO in both models (every configuration keeps
+// column j at least one unit right of column i < j: x_j - x_i = j - i + sum
+// of connector progresses; inside a column, expansions only push apart;
+// inserted nodes lie between their two ends). So every pairwise method runs
+// to the end. With contract_percent > 0 each operation is a contraction
+// instead (same edge, same direction) with that chance: a contracting
+// connector pulls column i+1 into column i and the instance usually
+// collides; these are for the twins in tests/collide_adversarial_test.cpp.
+#pragma once
+
+#include <cstdint>
+
+#include "lattice/instance.hpp"
+
+namespace gridlock {
+
+enum class SerpentineCouplings {
+  Mixed,    // connectors and column operations shuffled together
+  Columns,  // only column operations grouped; connectors are singletons
+};
+
+struct SerpentineParams {
+  uint32_t columns = 4;        // C >= 1
+  uint32_t height = 8;         // H >= 2 nodes per column
+  uint32_t coupling_size = 3;  // operations per coupling (>= 1); 0: ceil(sqrt(operations))
+  SerpentineCouplings couplings = SerpentineCouplings::Mixed;
+  uint32_t contract_percent = 0;  // 0..100: chance that an operation contracts
+};
+
+// n = C H nodes, C - 1 connector operations and (C) * floor((H - 2) / 2)
+// column operations. Deterministic in (params, seed) on every machine.
+// O(n). Throws std::invalid_argument on C == 0, H < 2 or
+// contract_percent > 100.
+Instance serpentine_instance(const SerpentineParams& p, uint64_t seed);
+
+// A square serpentine of about n nodes (C = H = the even number nearest
+// sqrt(n), at least 4) with the given couplings. O(1).
+SerpentineParams square_serpentine(int64_t n, uint32_t coupling_size, SerpentineCouplings couplings);
+
+}  // namespace gridlock
