@@ -246,6 +246,9 @@ struct Simulator::Scratch {
   // stays as large as the distinct pairs, not S times that (a row of 25 000
   // expansions all running at once: 30 GB before).
   std::unordered_set<uint64_t> pairs_taken;
+  // Per moving index j, the last two i of pairs (i, j) already taken: most
+  // repeats are the same neighbours, so these spare most set look-ups.
+  std::vector<std::array<uint32_t, 2>> recent_partners;
   bool dedupe_pairs = false;
   // Moving regions by cell in one sub-step, for cells of the dense box: the
   // latest hit of each cell, and per hit its moving index and the previous hit.
@@ -540,7 +543,15 @@ int64_t Simulator::Scratch::moving_against_static(int64_t span) {
 // Moving regions i < j share a cell in some sub-step: a candidate pair.
 void Simulator::Scratch::add_moving_pair(uint32_t i, uint32_t j) {
   const uint64_t ij = (static_cast<uint64_t>(i) << 32) | j;
-  if (!dedupe_pairs || pairs_taken.insert(ij).second) moving_pairs.push_back(ij);
+  if (!dedupe_pairs) {
+    moving_pairs.push_back(ij);
+    return;
+  }
+  std::array<uint32_t, 2>& recent = recent_partners[j];
+  if (recent[0] == i || recent[1] == i) return;
+  recent[1] = recent[0];
+  recent[0] = i;
+  if (pairs_taken.insert(ij).second) moving_pairs.push_back(ij);
 }
 
 // Moving region i enters dense cell d in this sub-step: pair it with every
@@ -570,7 +581,10 @@ void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
     return;
   }
   dedupe_pairs = S > 1;
-  pairs_taken.clear();
+  if (dedupe_pairs) {
+    pairs_taken.clear();
+    recent_partners.assign(moving.size(), {kNone, kNone});
+  }
   const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
   auto floor128 = [](__int128 a, __int128 b) -> __int128 {
     if (a >= INT64_MIN && a <= INT64_MAX && b > 0 && b <= INT64_MAX)  // the usual case: a 64-bit division
