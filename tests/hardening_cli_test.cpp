@@ -284,6 +284,19 @@ TEST(HardeningCli, HeaderCountsAreCheckedBeforeAllocating) {
                 "model), more than the "
                 ".grid format's limit of 33554432\n");
   EXPECT_FALSE(fs::exists(dir + "/w.grid"));
+  // Inside the discrete limit, 1 node over it in the continuous model (the
+  // campaign's `internal:` midway): refused at reading by every command.
+  std::string edge = test::write_file(dir + "/edge.cnf", "p cnf 780334 1\n1 2 3 4 5 6 7 8 9 10 11 12 13 0\n");
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"compile", edge, "-o", dir + "/e.grid"},
+                                               {"verify", edge, "--model", "continuous"},
+                                               {"verify", edge}}) {
+    SCOPED_TRACE(args[0] + " " + args.back());
+    auto e = run_gridlock(args);
+    EXPECT_EQ(e.exit_code, 1);
+    EXPECT_EQ(e.err, "gridlock: error: " + edge +
+                         ":1: the compiled instance would have 33554431 nodes (43n + 5L + 15m - 11; 33554433 in the "
+                         "continuous model), more than the .grid format's limit of 33554432\n");
+  }
   // Just inside both limits: accepted (to-lsat passes it through).
   std::string ok = test::write_file(dir + "/ok.cnf", "p cnf 1048577 1\n1 0\n");
   EXPECT_EQ(run_gridlock({"cnf", "to-lsat", ok, "-o", dir + "/ok-l.cnf"}).exit_code, 0);
