@@ -967,6 +967,12 @@ TEST(HardeningCli, OutOfMemoryIsSaidOnlyWhenMemoryRanOut) {
   r = run_gridlock_within({"compile", huge, "-o", dir + "/huge.grid"}, 400);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "gridlock: error: " + huge + ": out of memory while compiling the formula\n");
+  // Every command on an instance names it (before: collide said only "out
+  // of memory"): the 25 000-expansion row under 60 MB.
+  const std::string row = expansion_row(dir + "/row.grid", 25000);
+  r = run_gridlock_within({"collide", row}, 60);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("gridlock: error: " + row + ": out of memory while ", 0), 0u) << r.err;
   // The same command within reach: no stale context, no memory message.
   std::string small = test::write_file(dir + "/small.cnf", "p cnf 3 1\n1 0\n");
   r = run_gridlock_within({"compile", small, "-o", dir + "/small.grid"}, 400);
