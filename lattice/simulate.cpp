@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
+#include <unordered_set>
 
 #include "common/int_math.hpp"
 
@@ -240,6 +241,15 @@ struct Simulator::Scratch {
   std::vector<std::pair<uint32_t, Vec2>> vel_stack;
   std::vector<std::pair<uint64_t, uint32_t>> cell_hits;  // (cell, moving index) in one sub-step
   std::vector<uint64_t> moving_pairs;                    // (i << 32) | j, i < j
+  // With sub-steps (S > 1) the same neighbours share a cell in step after
+  // step: moving_pairs takes each pair once (the set of those taken), so it
+  // stays as large as the distinct pairs, not S times that (a row of 25 000
+  // expansions all running at once: 30 GB before).
+  std::unordered_set<uint64_t> pairs_taken;
+  // Per moving index j, the last two i of pairs (i, j) already taken: most
+  // repeats are the same neighbours, so these spare most set look-ups.
+  std::vector<std::array<uint32_t, 2>> recent_partners;
+  bool dedupe_pairs = false;
   // Moving regions by cell in one sub-step, for cells of the dense box: the
   // latest hit of each cell, and per hit its moving index and the previous hit.
   std::vector<uint32_t> hit_head, hit_index, hit_prev;
@@ -307,6 +317,7 @@ struct Simulator::Scratch {
   int64_t moving_against_static(int64_t span);
   void moving_against_moving(int64_t span, int64_t S);
   void pairs_in_dense_cell(size_t d, uint32_t i);
+  void add_moving_pair(uint32_t i, uint32_t j);
   void advance(int64_t span);
   SimResult cycle_result() const;
   SimResult node_result(int64_t now) const;
@@ -529,11 +540,24 @@ int64_t Simulator::Scratch::moving_against_static(int64_t span) {
   return vmax;
 }
 
+// Moving regions i < j share a cell in some sub-step: a candidate pair.
+void Simulator::Scratch::add_moving_pair(uint32_t i, uint32_t j) {
+  const uint64_t ij = (static_cast<uint64_t>(i) << 32) | j;
+  if (!dedupe_pairs) {
+    moving_pairs.push_back(ij);
+    return;
+  }
+  std::array<uint32_t, 2>& recent = recent_partners[j];
+  if (recent[0] == i || recent[1] == i) return;
+  recent[1] = recent[0];
+  recent[0] = i;
+  if (pairs_taken.insert(ij).second) moving_pairs.push_back(ij);
+}
+
 // Moving region i enters dense cell d in this sub-step: pair it with every
 // earlier region of the cell (all of smaller index).
 void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
-  for (uint32_t h = hit_head[d]; h != kNone; h = hit_prev[h])
-    moving_pairs.push_back((static_cast<uint64_t>(hit_index[h]) << 32) | i);
+  for (uint32_t h = hit_head[d]; h != kNone; h = hit_prev[h]) add_moving_pair(hit_index[h], i);
   if (hit_head[d] == kNone) hit_cells.push_back(d);
   hit_prev.push_back(hit_head[d]);
   hit_index.push_back(i);
@@ -556,6 +580,11 @@ void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
         if (boxes_overlap(swept[i], swept[j])) test_pair(moving[i], moving[j], true, span);
     return;
   }
+  dedupe_pairs = S > 1;
+  if (dedupe_pairs) {
+    pairs_taken.clear();
+    recent_partners.assign(moving.size(), {kNone, kNone});
+  }
   const __int128 unit = static_cast<__int128>(D) * S;  // one cell, in sub-step units
   auto floor128 = [](__int128 a, __int128 b) -> __int128 {
     if (a >= INT64_MIN && a <= INT64_MAX && b > 0 && b <= INT64_MAX)  // the usual case: a 64-bit division
@@ -563,6 +592,7 @@ void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
     return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
   };
   for (int64_t step = 0; step < S; ++step) {
+    if (deadline && step % 64 == 63) deadline->check();  // S sub-steps of all moving regions: long
     cell_hits.clear();
     for (size_t i = 0; i < moving.size(); ++i) {
       int64_t c[4];  // cells x0, x1, y0, y1 of the sub-step's swept box
@@ -601,8 +631,7 @@ void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
       size_t y = x + 1;
       while (y < cell_hits.size() && cell_hits[y].first == cell_hits[x].first) ++y;
       for (size_t a = x; a < y; ++a)
-        for (size_t b = a + 1; b < y; ++b)
-          moving_pairs.push_back((static_cast<uint64_t>(cell_hits[a].second) << 32) | cell_hits[b].second);
+        for (size_t b = a + 1; b < y; ++b) add_moving_pair(cell_hits[a].second, cell_hits[b].second);
       x = y;
     }
   }

@@ -47,6 +47,7 @@ int run_animate(const std::vector<std::string>& args) {
   cli::refuse_overwriting_input(out, {path});
   const double timeout = cli::seconds_arg(vm, "timeout");
   Instance inst = cli::load_instance(path);
+  cli::Activity act(path, "animating the schedule");  // out of memory names the file
   std::string what = vm.count("times")        ? "start times " + vm["times"].as<std::string>()
                      : vm.count("order-file") ? "order " + vm["order-file"].as<std::string>()
                                               : "the given order";

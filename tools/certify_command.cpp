@@ -40,6 +40,7 @@ int run_certify(const std::vector<std::string>& args) {
     throw UserError("--model must be discrete or continuous, not '" + model + "'");
   const std::string path = vm["instance"].as<std::string>(), cert_path = vm["certificate"].as<std::string>();
   const Instance inst = cli::load_instance(path);
+  cli::Activity act(path, "checking the certificate");  // out of memory names the file
   std::ifstream in(cert_path, std::ios::binary);
   if (!in) throw UserError(Diagnostic{cert_path, 0, "cannot read file"});
   std::stringstream text;

@@ -36,6 +36,7 @@ int run_check(const std::vector<std::string>& args) {
   const std::string path = vm["instance"].as<std::string>();
   if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
   Instance inst = cli::load_instance(path);
+  cli::Activity act(path, "checking the schedule");              // out of memory names the file
   const Schedule sched = *cli::schedule_from_options(vm, inst);  // exactly one was given
   const std::string model = vm.count("times") ? "continuous" : "discrete";
   Answer ans("check", vm.count("json") > 0);

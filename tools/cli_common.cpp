@@ -1,6 +1,8 @@
 #include "tools/cli_common.hpp"
 
 #include <signal.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -289,30 +291,63 @@ int interrupted_exit_code() { return 128 + stop_signal().load(); }
 
 namespace {
 Activity* g_activity = nullptr;
-std::string g_unwound;  // the innermost activity an exception left, "FILE: out of memory while WHAT"
+// The innermost activity the exception in flight left (file, what), recorded
+// as the stack unwinds; cleared when a new activity starts (the exception
+// that left it was handled).
+std::string g_unwound_file, g_unwound_what;
+bool g_unwound = false;
+
+// "FILE: PROBLEM while WHAT[: DETAIL]" for the activity an exception left or
+// the one alive; "PROBLEM[: DETAIL]" when none.
+std::string in_context(const std::string& problem, const std::string& detail) {
+  const std::string tail = detail.empty() ? "" : ": " + detail;
+  if (g_unwound) return Diagnostic{g_unwound_file, 0, problem + " while " + g_unwound_what + tail}.str();
+  if (g_activity) return Diagnostic{g_activity->file(), 0, problem + " while " + g_activity->what() + tail}.str();
+  return problem + tail;
+}
 }  // namespace
 
 Activity::Activity(std::string file, std::string what)
     : file_(std::move(file)), what_(std::move(what)), outer_(g_activity), uncaught_(std::uncaught_exceptions()) {
   g_activity = this;
+  if (outer_ == nullptr) g_unwound = false;
 }
 
 Activity::~Activity() {
   g_activity = outer_;
   // Unwinding: main's handler runs after every destructor, so the innermost
   // activity (the first destroyed) is remembered here.
-  if (std::uncaught_exceptions() > uncaught_ && g_unwound.empty()) {
+  if (std::uncaught_exceptions() > uncaught_ && !g_unwound) {
     try {
-      g_unwound = Diagnostic{file_, 0, "out of memory while " + what_}.str();
-    } catch (...) {  // no memory left even for the message: main says "out of memory"
+      g_unwound_file = file_;
+      g_unwound_what = what_;
+      g_unwound = true;
+    } catch (...) {  // no memory left even for the copy: main says "out of memory"
     }
   }
 }
 
-std::string Activity::out_of_memory_message() {
-  if (!g_unwound.empty()) return g_unwound;
-  if (!g_activity) return "out of memory";
-  return Diagnostic{g_activity->file_, 0, "out of memory while " + g_activity->what_}.str();
+std::string Activity::out_of_memory_message() { return in_context("out of memory", ""); }
+
+std::string Activity::too_large_message(const std::string& detail) { return in_context("too large", detail); }
+
+void refuse_beyond_memory(const std::string& subject, unsigned __int128 bytes, const std::string& what) {
+  unsigned __int128 limit = static_cast<unsigned __int128>(sysconf(_SC_PHYS_PAGES)) *
+                            static_cast<unsigned __int128>(sysconf(_SC_PAGE_SIZE));
+  std::string why = "physical memory";
+  struct rlimit as {};
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY && as.rlim_cur < limit) {
+    limit = as.rlim_cur;
+    why = "address-space limit (ulimit -v)";
+  }
+  if (bytes <= limit) return;
+  auto mb = [](unsigned __int128 b) {
+    const unsigned __int128 m = b >> 20;
+    return std::to_string(m > UINT64_MAX ? UINT64_MAX : static_cast<uint64_t>(m));
+  };
+  throw UserError(Diagnostic{subject, 0,
+                             "too large: " + what + " would need about " + mb(bytes) + " MB of memory, more than the " +
+                                 mb(limit) + " MB available (" + why + ")"});
 }
 
 }  // namespace gridlock::cli

@@ -114,8 +114,19 @@ void install_stop_handlers();
 int interrupted_exit_code();
 
 // --- Out of memory ----------------------------------------------------------
-// While an Activity is alive, an std::bad_alloc that reaches main is reported
-// as "FILE: out of memory while WHAT" (innermost activity):
+// Work that cannot fit is refused before it starts: throws UserError
+// "SUBJECT: too large: WHAT would need about X MB of memory, more than the
+// Y MB available" when `bytes` (an estimate of the peak) exceeds the memory
+// this process can have: the smaller of the physical memory and the
+// address-space limit (RLIMIT_AS, `ulimit -v`). O(1).
+void refuse_beyond_memory(const std::string& subject, unsigned __int128 bytes, const std::string& what);
+
+// While an Activity is alive, an exception that reaches main is reported
+// with its context (innermost activity): an std::bad_alloc as "FILE: out of
+// memory while WHAT", an std::length_error (a size beyond what a container
+// can hold) as "FILE: too large while WHAT: DETAIL". Only a real bad_alloc
+// says "out of memory"; bad_array_new_length (a size that overflowed) and
+// every other exception keep their own message.
 //   cli::Activity act(path, "compiling the formula");
 class Activity {
  public:
@@ -127,6 +138,11 @@ class Activity {
   // alive when the exception was thrown (recorded as the stack unwinds), or
   // "out of memory" when none was.
   static std::string out_of_memory_message();
+  // "FILE: too large while WHAT: DETAIL" (the same context), or
+  // "too large: DETAIL".
+  static std::string too_large_message(const std::string& detail);
+  const std::string& file() const { return file_; }
+  const std::string& what() const { return what_; }
 
  private:
   std::string file_, what_;

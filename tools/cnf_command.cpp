@@ -147,6 +147,17 @@ int run_check(const std::vector<std::string>& args) {
 }
 
 // ---------------------------------------------------------------- gen
+// Refuses (UserError) a formula of m clauses of at most len literals over n
+// variables that cannot fit in memory: about 64 bytes a clause and 24 a
+// literal (the clause vectors and the DIMACS text), 16 a variable.
+void refuse_formula_beyond_memory(const std::string& kind, int n, int m, int len) {
+  using U = unsigned __int128;
+  const U bytes = U{64} * static_cast<U>(m) + U{24} * static_cast<U>(m) * static_cast<U>(len) +
+                  U{16} * static_cast<U>(n);
+  cli::refuse_beyond_memory("cnf gen " + kind, bytes,
+                            "a formula of " + std::to_string(m) + " clauses and " + std::to_string(n) + " variables");
+}
+
 int run_gen(const std::vector<std::string>& args) {
   po::options_description opts("options");
   opts.add_options()("help,h", "show this help")("n", po::value<std::string>(), "number of variables (required)")(
@@ -177,6 +188,9 @@ int run_gen(const std::vector<std::string>& args) {
   Formula f;
   try {
     const int m = vm.count("m") ? cli::int_arg(vm, "m", 0, INT_MAX) : clauses_for_ratio(n, vm["ratio"].as<double>());
+    refuse_formula_beyond_memory(
+        kind, n, m,
+        kind == "lsat" || kind == "lsat-le3" ? (vm.count("max-len") ? cli::int_arg(vm, "max-len", 1, INT_MAX) : 3) : k);
     if (kind == "ksat") {
       f = random_ksat({n, m, k, seed});
     } else if (kind == "planted") {

@@ -97,6 +97,7 @@ int run_collide(const std::vector<std::string>& args) {
   if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
   const double seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
   Instance inst = cli::load_instance(path);
+  cli::Activity act(path, "finding a colliding schedule");  // out of memory names the file
   const Deadline deadline(seconds > 0 ? std::max(seconds - since_start.elapsed(), 1e-6) : 0);
   Answer ans("collide", vm.count("json") > 0);
   ans.comment("gridlock collide " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +

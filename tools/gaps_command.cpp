@@ -24,6 +24,7 @@ int run_gaps(const std::vector<std::string>& args) {
     return 0;
   const std::string path = vm["instance"].as<std::string>();
   Instance inst = cli::load_instance(path);
+  cli::Activity act(path, "checking the gaps");  // out of memory names the file
   if (!inst.horizontal_only()) {
     for (const Operation& op : inst.ops())
       if (!is_horizontal(op.dir))

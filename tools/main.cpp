@@ -4,6 +4,8 @@
 // "gridlock: error: <what>" on stderr and exit code 1.
 #include <exception>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -67,9 +69,20 @@ int main(int argc, char** argv) {
     std::cout.flush();
     std::cerr << "gridlock: error: " << gridlock::cli::printable(e.what()) << '\n';
     return 1;
+  } catch (const std::bad_array_new_length& e) {
+    // A size that overflowed, not memory exhausted (it derives from bad_alloc).
+    std::cout.flush();
+    std::cerr << "gridlock: error: " << gridlock::cli::Activity::too_large_message(e.what()) << '\n';
+    return 1;
   } catch (const std::bad_alloc&) {
     std::cout.flush();
     std::cerr << "gridlock: error: " << gridlock::cli::Activity::out_of_memory_message() << '\n';
+    return 1;
+  } catch (const std::length_error& e) {
+    // A size beyond what a container can hold: "too large", never "out of memory".
+    std::cout.flush();
+    std::cerr << "gridlock: error: " << gridlock::cli::printable(gridlock::cli::Activity::too_large_message(e.what()))
+              << '\n';
     return 1;
   } catch (const std::exception& e) {
     // Not a user error: a bug or a limit of ours. Still no crash, still exit 1.
