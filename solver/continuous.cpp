@@ -396,13 +396,22 @@ ComponentOutcome solve_component_z3(z3::context& ctx, const Component& comp, con
   return out;
 }
 
-void check_witness(const Instance& inst, const Schedule& sched) {
+// Runs a YES through the simulator within dl (nullptr: no limit): false if
+// the limit (or a stop request) came first, so the answer is UNKNOWN.
+bool check_witness(const Instance& inst, const Schedule& sched, const Deadline* dl) {
   if (auto e = check_schedule_bounds(inst, sched)) throw std::logic_error("solver schedule out of bounds: " + *e);
   Simulator sim(inst);
-  SimResult check = sim.run(sched);
+  sim.set_deadline(dl);
+  SimResult check;
+  try {
+    check = sim.run(sched);
+  } catch (const LimitReached&) {
+    return false;
+  }
   if (check.collision)
     throw std::logic_error("continuous solver returned a schedule that collides in the simulator: " +
                            describe(inst, sim.regions(), *check.collision));
+  return true;
 }
 
 }  // namespace
@@ -420,7 +429,13 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt,
     if (v.collision_free) {
       res.status = Verdict::Yes;
       res.schedule.start.assign(k, Rational(0));
-      check_witness(inst, res.schedule);
+      // The final check is inside --timeout too (a row of 25 000 expansions
+      // all at once takes minutes to simulate).
+      const Deadline dl(opt.seconds > 0 ? std::max(opt.seconds - elapsed(), 1e-6) : 0);
+      if (!check_witness(inst, res.schedule, &dl)) {
+        res.status = Verdict::Unknown;
+        res.schedule.start.clear();
+      }
     } else {
       res.status = Verdict::No;
     }
@@ -577,8 +592,9 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   res.stats.engine = run.used_dl ? "dl" : run.used_sat ? "sat" : run.used_z3 ? "z3" : "trivial";
   if (v == Verdict::Yes && check_schedule_bounds(inst, res.schedule)) v = Verdict::Unknown;  // see the header
   res.status = v;
-  if (v == Verdict::Yes) check_witness(inst, res.schedule);
-  else res.schedule.start.clear();
+  if (v == Verdict::Yes && !check_witness(inst, res.schedule, &run.budget.deadline())) v = Verdict::Unknown;
+  res.status = v;
+  if (v != Verdict::Yes) res.schedule.start.clear();
   res.stats.seconds = run.budget.elapsed();
   return res;
 }

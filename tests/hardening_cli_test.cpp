@@ -929,6 +929,14 @@ TEST(HardeningCli, WorkThatCannotFitInMemoryIsRefusedOrBounded) {
   }
   r = run_gridlock_within({"render", row, "-o", dir + "/row.svg"}, 200);
   EXPECT_EQ(r.exit_code, 0) << r.err;
+  // The continuous final check (all 6 000 at once: about 10 s to simulate)
+  // is inside --timeout: UNKNOWN, not a run to the end.
+  const std::string long_row = expansion_row(dir + "/long.grid", 6000);
+  const auto t0 = std::chrono::steady_clock::now();
+  r = run_gridlock({"solve", long_row, "--model", "continuous", "--timeout", "1"});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("s UNKNOWN"), std::string::npos) << r.out;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 8.0);  // ran to the end
 
   r = run_gridlock_within({"cnf", "gen", "lsat-le3", "--n", "1000000000", "--m", "800000000", "-o", dir + "/g.cnf"},
                           200);

@@ -285,8 +285,10 @@ namespace gridlock {
 namespace {
 
 // gen-instances --model both: every continuous YES label is confirmed by its
-// start times through `gridlock check --times`, every NO by `cnf solve`; the
-// continuous instance differs from the discrete one by the separation gadget.
+// start times through `gridlock check --times`, every NO by `cnf solve` and
+// by the exact continuous solver (manifest "solver_check", and again here
+// through `solve --model continuous`); the continuous instance differs from
+// the discrete one by the separation gadget.
 TEST(GenInstancesContinuousCli, LabelsAreConfirmed) {
   std::string dir = test::temp_dir();
   auto r = run_gridlock({"gen-instances", "-o", dir, "--model", "both", "--vars", "5", "--threshold", "3", "--lsat",
@@ -295,7 +297,7 @@ TEST(GenInstancesContinuousCli, LabelsAreConfirmed) {
   auto m = nlohmann::json::parse(test::read_file(dir + "/manifest.json"));
   EXPECT_EQ(m["model"], "both");
   ASSERT_EQ(m["instances"].size(), 10u);  // 5 formulas, 2 models
-  int continuous = 0;
+  int continuous = 0, continuous_no = 0;
   for (const auto& e : m["instances"]) {
     const std::string name = e["name"];
     SCOPED_TRACE(name);
@@ -309,9 +311,13 @@ TEST(GenInstancesContinuousCli, LabelsAreConfirmed) {
       EXPECT_EQ(c.exit_code, 10) << c.out;
     } else {
       EXPECT_EQ(run_gridlock({"cnf", "solve", dir + "/" + e["formula"].get<std::string>()}).exit_code, 20);
+      EXPECT_EQ(e["solver_check"]["answer"], "NO") << e.dump();
+      EXPECT_EQ(run_gridlock({"solve", inst, "--model", "continuous"}).exit_code, 20);
+      ++continuous_no;
     }
   }
   EXPECT_EQ(continuous, 5);
+  EXPECT_GE(continuous_no, 1);
 }
 
 }  // namespace

@@ -70,7 +70,9 @@ const char* const kGenInstancesDescription =
     "count and the formula in progress. SIGINT/SIGTERM stop between formulas: the finished\n"
     "ones stay, with a manifest marked \"interrupted\": true; exit 130/143.\n"
     "--model continuous: instances of Continuous Collision-free Schedule (compile --model\n"
-    "continuous); YES certified by start times (NAME.times, for 'gridlock check --times').";
+    "continuous); YES certified by start times (NAME.times, for 'gridlock check --times'),\n"
+    "NO also proved by the exact continuous solver within 60 s (manifest field\n"
+    "solver_check; continuous NO certificates do not exist yet).";
 
 InstanceSetPlan read_plan(const po::variables_map& vm, std::string& model_name) {
   InstanceSetPlan plan;
@@ -129,6 +131,8 @@ nlohmann::json entry_json(const SetInstance& e) {
       j["no_certificate"] = {{"kind", "NO certificate (docs/certificates.md)"},
                              {"file", e.no_certificate_file},
                              {"checked_by", "gridlock certify"}};
+    if (!e.solver_check.empty())
+      j["solver_check"] = {{"solver", "gridlock solve --model continuous"}, {"answer", e.solver_check}};
   }
   return j;
 }

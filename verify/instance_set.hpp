@@ -74,6 +74,7 @@ struct SetInstance {
   bool yes = false;
   std::string certificate_file;     // YES: the witness (NAME.schedule or NAME.times); NO: ""
   std::string no_certificate_file;  // discrete NO: NAME.nocert, checked by certify/; "" if none
+  std::string solver_check;         // continuous NO: "NO" (the continuous solver proved it) or "UNKNOWN"
 };
 
 struct InstanceSetTally {
