@@ -5,7 +5,8 @@
 # gap checker, certificates checked: witnesses of every YES, a NO
 # certificate of every discrete NO), one NO certificate through
 # `gridlock certify`, the continuous reduction on the small
-# ones and the uf20 samples (CaDiCaL vs the exact continuous solver), then writes pictures of the small
+# ones, the uf20 samples and an unsatisfiable random 15-variable formula
+# (CaDiCaL vs the exact continuous solver), then writes pictures of the small
 # compiled instances and their witness schedules (or a collision) to out/,
 # each with an animation beside it (NAME.html: open it in a browser).
 #   MAIN_JOB_TIMEOUT  seconds the exact solver may spend per formula (default 60)
@@ -16,8 +17,8 @@ mkdir -p out
 echo "== gridlock verify examples/formulas"
 build/gridlock verify examples/formulas --timeout "${MAIN_JOB_TIMEOUT:-60}" \
   --pictures out/pictures --reproducers out/verify-failures
-echo "== the continuous reduction (separation gadget), exact continuous solver: small formulas and SATLIB uf20"
-build/gridlock verify examples/formulas/{tiny-sat,tiny-unsat,lsat-sat,unsat-3cnf,uf20-01,uf20-02,uf20-03}.cnf \
+echo "== the continuous reduction (separation gadget), exact continuous solver: small formulas, SATLIB uf20, random-unsat-15"
+build/gridlock verify examples/formulas/{tiny-sat,tiny-unsat,lsat-sat,unsat-3cnf,uf20-01,uf20-02,uf20-03,random-unsat-15}.cnf \
   --model continuous \
   --timeout "${MAIN_JOB_TIMEOUT:-60}" --reproducers out/verify-failures-continuous
 echo "== a NO certificate of an UNSAT formula's instance, checked without the solvers (docs/certificates.md)"
