@@ -208,8 +208,8 @@ TEST(CertifyPairs, RandomGeneralInstances) {
       "certify pairs: %d NO (%d breaker, %d pairs, %d with o lines), %d YES; %d of %d mutations rejected; %d of %d "
       "clause drops rejected\n",
       n.no, n.breakers, n.pairs, n.with_o, n.yes, n.rejected, n.mutations, n.drops_rejected, n.drops);
-  EXPECT_GT(n.pairs, 1000);
-  EXPECT_GT(n.yes, 1000);
+  EXPECT_GT(n.pairs, count / 6);  // about 1/5 of the instances (1 291 of 6 000 at scale 1)
+  EXPECT_GT(n.yes, count / 6);
   EXPECT_GT(n.drops_rejected, 0);
 }
 
@@ -220,7 +220,8 @@ TEST(CertifyPairs, RandomGeneralInstances) {
 TEST(CertifyPairs, CompiledContinuousReductionInDiscreteTime) {
   const uint64_t base = test::base_seed(8500);
   int no = 0;
-  for (int i = 0; i < test::scaled(40); ++i) {
+  const int formulas = test::scaled(40);
+  for (int i = 0; i < formulas; ++i) {
     const uint64_t seed = base + static_cast<uint64_t>(i);
     const int vars = 5 + static_cast<int>(seed % 4);
     const Formula f = random_ksat({vars, vars * 5, 3, seed});
@@ -238,7 +239,7 @@ TEST(CertifyPairs, CompiledContinuousReductionInDiscreteTime) {
     EXPECT_EQ(r.kind, "pairs") << "seed " << seed;
   }
   std::printf("compiled (continuous reduction, discrete time): %d NO certified\n", no);
-  EXPECT_GT(no, 5);
+  EXPECT_GE(no, formulas / 8);  // 14 of 40 at scale 1
 }
 
 // The real binary: a random tree instance with vertical operations (NO,
