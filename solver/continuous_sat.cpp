@@ -1,7 +1,6 @@
 #include "solver/continuous_sat.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -112,12 +111,7 @@ class Engine {
       if (v == Verdict::Unknown) throw LimitReached{};
       std::vector<Rational> t;
       if (!check_model(t)) continue;
-      out.verdict = Verdict::Yes;
-      Rational lo = *std::min_element(t.begin(), t.end());
-      for (Rational& x : t) x = x - lo;
-      verify(t);
-      out.start = std::move(t);
-      return out;
+      return answer_yes(std::move(t));
     }
   }
 
@@ -595,57 +589,70 @@ class Engine {
         with_linear = true;
         continue;
       }
-      out.verdict = Verdict::Yes;
-      Rational lo = *std::min_element(t.begin(), t.end());
-      for (Rational& x : t) x = x - lo;
-      verify(t);
-      out.start = std::move(t);
-      return out;
+      return answer_yes(std::move(t));
     }
   }
+
+  // A YES of either search: times shifted so the earliest is 0, checked pair
+  // by pair (verify).
+  ContinuousSatOutcome answer_yes(std::vector<Rational> t) const {
+    const Rational lo = *std::min_element(t.begin(), t.end());
+    for (Rational& x : t) x = x - lo;
+    verify(t);
+    ContinuousSatOutcome out;
+    out.verdict = Verdict::Yes;
+    out.start = std::move(t);
+    return out;
+  }
+
+  // While alive, a thread that every 20 ms interrupts Z3 if the budget is
+  // exhausted and otherwise draws the progress line; the destructor stops
+  // and joins it.
+  class Z3Watcher {
+   public:
+    explicit Z3Watcher(Engine& e) : thread_([this, &e] { watch(e); }) {}
+    Z3Watcher(const Z3Watcher&) = delete;
+    Z3Watcher& operator=(const Z3Watcher&) = delete;
+    ~Z3Watcher() {
+      {
+        std::lock_guard<std::mutex> lock(m_);
+        done_ = true;
+      }
+      cv_.notify_all();
+      thread_.join();
+    }
+
+   private:
+    void watch(Engine& e) {
+      std::unique_lock<std::mutex> lock(m_);
+      while (!cv_.wait_for(lock, std::chrono::milliseconds(20), [this] { return done_; })) {
+        if (e.budget_.exhausted(e.stats_)) {
+          e.z3ctx_->interrupt();
+          return;
+        }
+        e.budget_.show_activity("continuous difference-logic engine (Z3)");
+      }
+    }
+    std::mutex m_;
+    std::condition_variable cv_;
+    bool done_ = false;   // guarded by m_
+    std::thread thread_;  // last: starts after the members it uses exist
+  };
 
   // z3s_->check() while a watcher thread interrupts Z3 when the budget is
   // exhausted (time, stop request, nodes: Z3's conflicts count as nodes)
   // and draws the progress line. Z3's decisions and conflicts go to stats.
   z3::check_result check_interruptible() {
     budget_.check(stats_);
-    std::atomic<bool> done{false};
-    std::mutex m;
-    std::condition_variable cv;
-    std::thread watcher([&] {
-      std::unique_lock<std::mutex> lock(m);
-      while (!done) {
-        cv.wait_for(lock, std::chrono::milliseconds(20));
-        if (done) break;
-        if (budget_.exhausted(stats_)) {
-          z3ctx_->interrupt();
-          break;
-        }
-        budget_.show_activity("continuous difference-logic engine (Z3)");
-      }
-    });
     if (budget_.max_states() != 0) {
       const uint64_t left = budget_.max_states() - stats_.states;  // > 0: checked above
       z3s_->set("max_conflicts", static_cast<unsigned>(std::min<uint64_t>(left, UINT32_MAX)));
     }
     z3::check_result cr = z3::unknown;
-    try {
-      cr = z3s_->check();
-    } catch (...) {
-      {
-        std::lock_guard<std::mutex> lock(m);
-        done = true;
-      }
-      cv.notify_all();
-      watcher.join();
-      throw;
-    }
     {
-      std::lock_guard<std::mutex> lock(m);
-      done = true;
+      Z3Watcher watcher(*this);  // stops and joins its thread however check() ends
+      cr = z3s_->check();
     }
-    cv.notify_all();
-    watcher.join();
     const z3::stats st = z3s_->statistics();
     for (unsigned i = 0; i < st.size(); ++i) {
       if (!st.is_uint(i)) continue;
