@@ -1,6 +1,9 @@
 // solve (discrete and continuous), collide and gaps (solver/, collide/).
 // Results are dicts with the fields of the command line's --json (exact
 // times as Fractions); python/gridlock/__init__.py wraps them in dataclasses.
+#include <optional>
+#include <string>
+
 #include "certify/certify.hpp"
 #include "collide/collide.hpp"
 #include "common/limits.hpp"
@@ -37,11 +40,8 @@ SolveOptions::Engine engine_arg(const std::string& engine) {
 
 // The continuous model's engines (as `gridlock solve --model continuous --engine`).
 ContinuousEngine continuous_engine_arg(const std::string& engine) {
-  if (engine == "auto") return ContinuousEngine::Auto;
-  if (engine == "dl") return ContinuousEngine::Dl;
-  if (engine == "sat") return ContinuousEngine::Sat;
-  if (engine == "z3") return ContinuousEngine::Z3;
-  raise("engine with model='continuous' must be auto, dl, sat or z3, not '" + engine + "'");
+  if (const std::optional<ContinuousEngine> named = continuous_engine_named(engine)) return *named;
+  raise(std::string("engine with model='continuous' must be ") + kContinuousEngineNames + ", not '" + engine + "'");
 }
 
 SolveOptions solve_options(const std::string& model, const std::string& engine, const py::object& timeout,

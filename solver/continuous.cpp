@@ -416,6 +416,14 @@ bool check_witness(const Instance& inst, const Schedule& sched, const Deadline* 
 
 }  // namespace
 
+std::optional<ContinuousEngine> continuous_engine_named(const std::string& name) {
+  if (name == "auto") return ContinuousEngine::Auto;
+  if (name == "dl") return ContinuousEngine::Dl;
+  if (name == "sat") return ContinuousEngine::Sat;
+  if (name == "z3") return ContinuousEngine::Z3;
+  return std::nullopt;
+}
+
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt, ContinuousEngine engine) {
   if (!inst.horizontal_only()) return solve_continuous_general(inst, opt, PairEncoding::Auto, engine);
   const auto start = std::chrono::steady_clock::now();
@@ -591,7 +599,6 @@ ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptio
   run.budget.clear_progress();
   res.stats.engine = run.used_dl ? "dl" : run.used_sat ? "sat" : run.used_z3 ? "z3" : "trivial";
   if (v == Verdict::Yes && check_schedule_bounds(inst, res.schedule)) v = Verdict::Unknown;  // see the header
-  res.status = v;
   if (v == Verdict::Yes && !check_witness(inst, res.schedule, &run.budget.deadline())) v = Verdict::Unknown;
   res.status = v;
   if (v != Verdict::Yes) res.schedule.start.clear();

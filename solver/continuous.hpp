@@ -74,6 +74,9 @@
 // Requirements: inst is a valid Instance (InstanceBuilder guarantees it).
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "lattice/instance.hpp"
 #include "lattice/schedule.hpp"
 #include "solver/solve.hpp"
@@ -107,6 +110,12 @@ struct ContinuousResult {
 // an active linear rule goes to Z3 on everything (not only those whose
 // times break one).
 enum class ContinuousEngine { Auto, Dl, Sat, Z3, DlNoShortcuts, SatNoShortcuts };
+
+// The engine a user names (`gridlock solve --engine`, Python `engine=`):
+// "auto", "dl", "sat" or "z3" (kContinuousEngineNames, for messages);
+// nullopt for any other name (the test-only engines have no name).
+std::optional<ContinuousEngine> continuous_engine_named(const std::string& name);
+inline constexpr const char* kContinuousEngineNames = "auto, dl, sat or z3";
 
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt = {},
                                   ContinuousEngine engine = ContinuousEngine::Auto);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include "common/limits.hpp"
 #include "solver/continuous.hpp"
@@ -176,11 +177,11 @@ int run_solve(const std::vector<std::string>& args) {
     throw UserError("--model must be discrete or continuous, not '" + model + "'");
   ContinuousEngine cont_engine = ContinuousEngine::Auto;
   if (model == "continuous") {
-    if (engine == "z3") cont_engine = ContinuousEngine::Z3;
-    else if (engine == "dl") cont_engine = ContinuousEngine::Dl;
-    else if (engine == "sat") cont_engine = ContinuousEngine::Sat;
-    else if (engine != "auto")
-      throw UserError("--engine with --model continuous must be auto, dl, sat or z3, not '" + engine + "'");
+    const std::optional<ContinuousEngine> named = continuous_engine_named(engine);
+    if (!named)
+      throw UserError(std::string("--engine with --model continuous must be ") + kContinuousEngineNames + ", not '" +
+                      engine + "'");
+    cont_engine = *named;
   }
 
   const std::string path = vm["instance"].as<std::string>();
