@@ -20,25 +20,13 @@
 #include "solver/no_certificate.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
+#include "support/text_lines.hpp"
 
 namespace gridlock {
 namespace {
 
-std::vector<std::string> lines_of(const std::string& s) {
-  std::vector<std::string> out;
-  size_t pos = 0;
-  while (pos < s.size()) {
-    const size_t end = s.find('\n', pos);
-    out.push_back(s.substr(pos, end - pos));
-    pos = end + 1;
-  }
-  return out;
-}
-std::string join(const std::vector<std::string>& ls) {
-  std::string s;
-  for (const auto& l : ls) s += l + "\n";
-  return s;
-}
+using test::join_lines;
+using test::lines_of;
 
 RandomInstanceParams horizontal_params(uint64_t seed) {
   RandomInstanceParams p;
@@ -69,19 +57,19 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
   // The empty clause dropped.
   std::vector<std::string> m = ls;
   m.pop_back();
-  expect_rejected(join(m), "no empty clause", "does not end with the empty clause");
+  expect_rejected(join_lines(m), "no empty clause", "does not end with the empty clause");
   // Every lemma dropped, when propagation alone does not refute.
   m.clear();
   for (const auto& l : ls)
     if (l[0] != 'l' && l[0] != 'o') m.push_back(l);
   m.push_back("l");
-  if (!certify(inst, join(m), "discrete").proved && ls.size() > 5) {
+  if (!certify(inst, join_lines(m), "discrete").proved && ls.size() > 5) {
     // Each single lemma dropped in turn: rejected, or still a proof (the checker
     // propagates more than the engine did); a rejection names a line.
     for (size_t i = 4; i + 1 < ls.size(); ++i) {
       std::vector<std::string> d = ls;
       d.erase(d.begin() + static_cast<long>(i));
-      const CertifyResult r = certify(inst, join(d), "discrete");
+      const CertifyResult r = certify(inst, join_lines(d), "discrete");
       if (!r.proved) {
         EXPECT_EQ(r.reason.rfind("line ", 0), 0u) << r.reason;
       }
@@ -93,7 +81,7 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
     if (lt == std::string::npos) continue;
     m = ls;
     m[i].insert(lt, "_nosuch");
-    expect_rejected(join(m), "unknown coupling", "unknown coupling");
+    expect_rejected(join_lines(m), "unknown coupling", "unknown coupling");
     break;
   }
   // An 'o' line with one edge turned round: a simple cycle becomes acyclic.
@@ -108,7 +96,7 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
     flipped += a;
     flipped += m[i].substr(sp);
     m[i] = flipped;
-    expect_rejected(join(m), "flipped cycle edge", "contain no cycle");
+    expect_rejected(join_lines(m), "flipped cycle edge", "contain no cycle");
     break;
   }
   // The certificate checked against another instance.
@@ -185,7 +173,7 @@ std::string rehead(const Instance& inst, const std::string& cert) {
   std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(coupling_digest(inst)));
   for (auto& l : ls)
     if (l.rfind("couplings ", 0) == 0) l = "couplings " + std::to_string(inst.couplings().size()) + " " + digest;
-  return join(ls);
+  return join_lines(ls);
 }
 
 // Compiled random 3-SAT formulas (the paper's reduction): long lemma logs.
@@ -224,7 +212,7 @@ TEST(CertifyChecker, CompiledFormulas) {
     for (size_t i2 = 4; i2 + 1 < ls.size(); i2 += step) {
       std::vector<std::string> d = ls;
       d.erase(d.begin() + static_cast<long>(i2));
-      const CertifyResult rd = certify(inst, join(d), "discrete");
+      const CertifyResult rd = certify(inst, join_lines(d), "discrete");
       ++drops;
       if (rd.proved) continue;
       ++drops_rejected;
@@ -243,7 +231,7 @@ TEST(CertifyChecker, CompiledFormulas) {
       flipped += a;
       if (sp != std::string::npos) flipped += d[i2].substr(sp);
       d[i2] = flipped;
-      const CertifyResult rf = certify(inst, join(d), "discrete");
+      const CertifyResult rf = certify(inst, join_lines(d), "discrete");
       ++flips;
       if (rf.proved) continue;
       ++flips_rejected;

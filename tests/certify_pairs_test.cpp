@@ -22,24 +22,13 @@
 #include "support/cli.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
+#include "support/text_lines.hpp"
 
 namespace gridlock {
 namespace {
 
-std::vector<std::string> lines_of(const std::string& s) {
-  std::vector<std::string> out;
-  for (size_t pos = 0; pos < s.size();) {
-    const size_t end = s.find('\n', pos);
-    out.push_back(s.substr(pos, end - pos));
-    pos = end + 1;
-  }
-  return out;
-}
-std::string join(const std::vector<std::string>& ls) {
-  std::string s;
-  for (const auto& l : ls) s += l + "\n";
-  return s;
-}
+using test::join_lines;
+using test::lines_of;
 
 // Small instances with operations in all four directions (at most 6
 // couplings, so that the all-orders reference labels them).
@@ -93,8 +82,8 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
   const std::vector<std::string> ls = lines_of(cert);
   auto expect_rejected = [&](const std::vector<std::string>& m, const std::string& what, const std::string& words) {
     ++n.mutations;
-    const CertifyResult r = certify(inst, join(m), "discrete");
-    EXPECT_FALSE(r.proved) << "seed " << seed << ": " << what << " accepted\n" << join(m);
+    const CertifyResult r = certify(inst, join_lines(m), "discrete");
+    EXPECT_FALSE(r.proved) << "seed " << seed << ": " << what << " accepted\n" << join_lines(m);
     if (!r.proved) ++n.rejected;
     EXPECT_NE(r.reason.find(words), std::string::npos) << "seed " << seed << ": " << what << ": " << r.reason;
   };
@@ -107,7 +96,7 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
     if (ls[i][0] != 'x' && ls[i][0] != 'o') continue;
     m = ls;
     m.erase(m.begin() + static_cast<long>(i));
-    const CertifyResult r = certify(inst, join(m), "discrete");
+    const CertifyResult r = certify(inst, join_lines(m), "discrete");
     ++n.drops;
     if (r.proved) continue;
     ++n.drops_rejected;
@@ -119,7 +108,7 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
   if (const size_t i = first_line(ls, 'x')) {
     m = ls;
     m[i] = turned(ls[i], 4);
-    const CertifyResult r = certify(inst, join(m), "discrete");
+    const CertifyResult r = certify(inst, join_lines(m), "discrete");
     ++n.mutations;
     if (!r.proved) {
       ++n.rejected;
@@ -145,7 +134,7 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
     const std::string a = ls[i].substr(start, lt - start), b = ls[i].substr(lt + 1, end - lt - 1);
     m = ls;
     m.insert(m.end() - 1, "o " + a + "<" + b + " " + b + "<" + a);
-    const CertifyResult r = certify(inst, join(m), "discrete");
+    const CertifyResult r = certify(inst, join_lines(m), "discrete");
     EXPECT_TRUE(r.proved) << "seed " << seed << ": a 2-cycle refused: " << r.reason;
     m = ls;
     m.insert(m.end() - 1, "o " + a + "<" + b);
@@ -157,7 +146,7 @@ void check_mutations(const Instance& inst, const std::string& cert, const Instan
     if (ls[i][0] != 'l' || ls[i].size() < 3) continue;
     m = ls;
     m[i] = turned(ls[i], 1);
-    const CertifyResult r = certify(inst, join(m), "discrete");
+    const CertifyResult r = certify(inst, join_lines(m), "discrete");
     ++n.mutations;
     if (!r.proved) {
       ++n.rejected;
@@ -263,7 +252,7 @@ TEST(CertifyPairs, CommandLineEndToEnd) {
   const size_t i = first_line(ls, 'x');
   ASSERT_NE(i, 0u);
   ls[i] = x_head(ls[i]);
-  test::write_file(bad, join(ls));
+  test::write_file(bad, join_lines(ls));
   const auto b = run_gridlock({"certify", grid, bad});
   EXPECT_EQ(b.exit_code, 1) << b.out << b.err;
   EXPECT_NE(b.err.find("bad.nocert:" + std::to_string(i + 1) + ": certificate rejected: the step of "),
@@ -272,7 +261,7 @@ TEST(CertifyPairs, CommandLineEndToEnd) {
   // Truncated: the empty clause gone.
   ls = lines_of(text);
   ls.pop_back();
-  test::write_file(bad, join(ls));
+  test::write_file(bad, join_lines(ls));
   const auto t = run_gridlock({"certify", grid, bad});
   EXPECT_EQ(t.exit_code, 1);
   EXPECT_NE(t.err.find("does not end with the empty clause"), std::string::npos) << t.err;
