@@ -133,12 +133,22 @@ std::optional<std::string> evidence_line(const Instance& inst, const std::vector
     if (auto e = cell_node(inst, w[i], v)) return at(line, *e);
     out.nodes.push_back(v);
   }
-  if ((out.kind == "gaps" || out.kind == "pairs") && !out.nodes.empty()) return at(line, out.kind + " takes no cells");
+  if ((out.kind == "gaps" || out.kind == "pairs" || out.kind == "bounds") && !out.nodes.empty())
+    return at(line, out.kind + " takes no cells");
   if (out.kind == "final-gap" && out.nodes.size() != 2) return at(line, "final-gap takes two cells");
   return std::nullopt;
 }
 
 }  // namespace
+
+std::optional<std::string> read_coupling(const Instance& inst, std::string_view w, CouplingId& out) {
+  return coupling(inst, w, out);
+}
+
+std::optional<std::string> read_region(const Instance& inst, const Regions& regions, std::string_view w,
+                                       uint32_t& out) {
+  return region(inst, regions, w, out);
+}
 
 uint64_t certificate_digest(const Instance& inst) {
   uint64_t h = 14695981039346656037ull;
@@ -163,10 +173,14 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
     if (w[0] == "p" || w[0] == "couplings") {
       e = header_line(inst, w, line, out);
       digest_seen |= w[0] == "couplings";
+    } else if (out.kind == "bounds" && w[0].size() == 1 &&
+               std::string_view("asietlgf").find(w[0][0]) != std::string_view::npos) {
+      out.body.emplace_back(line, std::vector<std::string>(w.begin(), w.end()));
     } else if (w[0] == "o" || w[0] == "l" || w[0] == "x") {
       if (regions.size() == 0) regions = Regions::build(inst);
       e = lemma_line(inst, regions, w, line, out);
-    } else if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "pairs" || w[0] == "final-gap" || w[0] == "final-cycle") {
+    } else if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "pairs" || w[0] == "final-gap" || w[0] == "final-cycle" ||
+               w[0] == "bounds") {
       e = evidence_line(inst, w, line, out);
     } else {
       e = at(line, "unknown line kind '" + std::string(w[0]) + "'");
@@ -175,7 +189,7 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
   }
   if (out.model.empty()) return std::string("no 'p gridlock-no-certificate 1 MODEL' line");
   if (!digest_seen) return std::string("no 'couplings COUNT DIGEST' line");
-  if (out.kind.empty()) return std::string("no evidence (breaker, gaps, pairs, final-gap or final-cycle)");
+  if (out.kind.empty()) return std::string("no evidence (breaker, gaps, pairs, final-gap, final-cycle or bounds)");
   return std::nullopt;
 }
 

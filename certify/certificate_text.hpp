@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lattice/instance.hpp"
+#include "lattice/motion.hpp"
 
 namespace gridlock {
 
@@ -28,15 +29,23 @@ struct CertificateLemma {
 
 struct CertificateText {
   std::string model;  // discrete | continuous
-  std::string kind;   // breaker | gaps | pairs | final-gap | final-cycle
+  std::string kind;   // breaker | gaps | pairs | final-gap | final-cycle | bounds
   size_t kind_line = 0;
   CouplingId breaker = kNone;            // breaker
   std::vector<NodeId> nodes;             // breaker, final-cycle: a closed walk; final-gap: the two ends
   std::vector<CertificateLemma> lemmas;  // gaps, pairs
+  // bounds: the lines after the kind line, as words (read by bounds_proof.cpp)
+  std::vector<std::pair<size_t, std::vector<std::string>>> body;
 };
 
 // Parses text against inst. Returns the reason on failure ("line N: ...").
 std::optional<std::string> read_certificate(const Instance& inst, std::string_view text, CertificateText& out);
+
+// A coupling by name, and a region as the certificate writes it ("x,y":
+// the node in that cell; "+NAME": the region operation NAME inserts or
+// grows): the reason if there is none.
+std::optional<std::string> read_coupling(const Instance& inst, std::string_view w, CouplingId& out);
+std::optional<std::string> read_region(const Instance& inst, const Regions& regions, std::string_view w, uint32_t& out);
 
 // FNV-1a (64 bits) of the coupling names in instance order, each followed
 // by '\n' (the "couplings" line).

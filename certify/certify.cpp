@@ -1,6 +1,7 @@
 // Which evidence proves what (docs/certificates.md, "Why each kind proves NO").
 #include "certify/certify.hpp"
 
+#include "certify/bounds_proof.hpp"
 #include "certify/certificate_text.hpp"
 #include "certify/geometry.hpp"
 #include "certify/order_proof.hpp"
@@ -128,6 +129,7 @@ CertifyResult certify(const Instance& inst, std::string_view text, const std::st
   else if (c.kind == "pairs" && discrete) check_pairs_proof(inst, c, r);
   else if (c.kind == "final-gap" && !discrete) check_final_gap(inst, c, r);
   else if (c.kind == "final-cycle" && !discrete) check_final_cycle(inst, c, r);
+  else if (c.kind == "bounds" && !discrete) check_bounds_proof(inst, c, r);
   else r.reason = at(c.kind_line, c.kind + " does not prove NO in the " + model + " model");
   return r;
 }

@@ -55,6 +55,8 @@ class CertifyGeometry {
   // grown region's far face). O(tree path lengths).
   std::vector<CouplingForm> region_forms(uint32_t ra, uint32_t rb) const;
 
+  const Regions& regions() const { return regions_; }
+
   // Every gap inequality of a horizontal-only instance: for each pair of
   // row neighbours and each coupling t that narrows their gap, the gap is
   // <= 0 right after t (docs/certificates.md, "Gap inequalities").

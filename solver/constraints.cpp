@@ -48,10 +48,13 @@ LinForm operator-(const LinForm& a, const LinForm& b) {
 // collide (some form is never positive).
 bool make_constraint(std::vector<LinForm> forms, uint32_t ra, uint32_t rb, CollisionConstraint& out) {
   std::vector<LinForm> kept;
-  for (auto& f : forms) {
+  std::vector<uint8_t> index;
+  for (size_t i = 0; i < forms.size(); ++i) {
+    LinForm& f = forms[i];
     if (f.max_value() <= 0) return false;  // never positive: the pair never overlaps
     if (f.terms.empty()) continue;         // constant and positive: no information
     kept.push_back(std::move(f));
+    index.push_back(static_cast<uint8_t>(i));
   }
   if (kept.empty()) {
     // Every form constant and positive: the two would overlap from the start,
@@ -63,6 +66,7 @@ bool make_constraint(std::vector<LinForm> forms, uint32_t ra, uint32_t rb, Colli
   out.region_a = ra;
   out.region_b = rb;
   out.num_forms = static_cast<uint32_t>(kept.size());
+  out.form_index = std::move(index);
   for (auto& f : kept) {
     out.base.push_back(f.base);
     for (auto& t : f.terms) out.rel.push_back(t.first);

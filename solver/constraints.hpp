@@ -44,6 +44,7 @@ struct CollisionConstraint {
   std::vector<int64_t> base;                    // per form: value with no coupling done
   std::vector<CouplingId> rel;                  // couplings with a non-zero coefficient, increasing
   std::vector<int64_t> coef;                    // rel.size() * num_forms: coef[j * num_forms + i]
+  std::vector<uint8_t> form_index;              // per form: its place among the eight above (0..7; gaps: 0)
   const int64_t* coef_of(size_t j) const { return coef.data() + j * num_forms; }
 };
 

@@ -509,6 +509,7 @@ struct GeneralRun {
   bool tried_discrete = false;
   std::vector<Rational> discrete_times;
   bool used_z3 = false, used_sat = false, used_dl = false;
+  ContinuousProof* proof = nullptr;  // solve_continuous_proved
 };
 
 bool no_shortcuts(ContinuousEngine e) {
@@ -537,7 +538,8 @@ Verdict solve_hard_component(GeneralRun& run, const Component& comp, const Const
     ContinuousSatOptions o;
     o.difference_logic = run.engine != ContinuousEngine::Sat && run.engine != ContinuousEngine::SatNoShortcuts;
     o.z3_for_linear = no_shortcuts(run.engine);
-    (o.difference_logic ? run.used_dl : run.used_sat) = true;
+    o.proof = run.proof;
+    (o.difference_logic || o.proof ? run.used_dl : run.used_sat) = true;
     ContinuousSatOutcome got = solve_component_sat(sys, comp.couplings, comp.pairs, run.offsets_cache, run.budget,
                                                    run.res.stats, o);
     for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
@@ -546,6 +548,12 @@ Verdict solve_hard_component(GeneralRun& run, const Component& comp, const Const
   run.used_z3 = true;
   ComponentOutcome got = solve_component_z3(ctx, comp, sys, faces, var_of, run.encoding, run.offsets_cache, run.opt,
                                             run.budget.elapsed(), conflicts, run.res.stats);
+  if (run.proof && got.verdict == Verdict::No) {
+    *run.proof = {};
+    const auto why = continuous_sat_unsupported(sys, comp.pairs, comp.faces.size());
+    run.proof->why_none = "decided by Z3 on the clamped encoding" + (why ? " (" + *why + ")" : std::string()) +
+                          ", which writes no proof";
+  }
   for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
   return got.verdict;
 }
@@ -586,9 +594,16 @@ Verdict solve_general_within(GeneralRun& run) {
 
 }  // namespace
 
+ContinuousResult solve_continuous_proved(const Instance& inst, const SolveOptions& opt, ContinuousEngine engine,
+                                         ContinuousProof& proof) {
+  proof = {};
+  proof.why_none = "no NO";
+  return solve_continuous_general(inst, opt, PairEncoding::Auto, engine, &proof);
+}
+
 ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt, PairEncoding encoding,
-                                          ContinuousEngine engine) {
-  GeneralRun run{inst, opt, encoding, engine, SearchBudget(opt), {}, {}, false, {}, false, false, false};
+                                          ContinuousEngine engine, ContinuousProof* proof) {
+  GeneralRun run{inst, opt, encoding, engine, SearchBudget(opt), {}, {}, false, {}, false, false, false, proof};
   ContinuousResult& res = run.res;
   Verdict v = Verdict::Unknown;
   try {

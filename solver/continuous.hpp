@@ -83,6 +83,8 @@
 
 namespace gridlock {
 
+struct ContinuousProof;  // solver/continuous_sat.hpp
+
 struct ContinuousResult {
   Verdict status = Verdict::Unknown;
   Schedule schedule;  // Yes: a start time per coupling (exact rationals), accepted by the Simulator
@@ -131,9 +133,20 @@ enum class PairEncoding { Auto, Segments };
 
 // Steps 2-6 alone, on any instance (horizontal-only ones too, where tests
 // and benchmarks compare it with check_gaps). Same contract.
-// Segments implies the Z3 engine.
+// Segments implies the Z3 engine. proof: see solve_continuous_proved.
 ContinuousResult solve_continuous_general(const Instance& inst, const SolveOptions& opt = {},
                                           PairEncoding encoding = PairEncoding::Auto,
-                                          ContinuousEngine engine = ContinuousEngine::Auto);
+                                          ContinuousEngine engine = ContinuousEngine::Auto,
+                                          ContinuousProof* proof = nullptr);
+
+// solve_continuous_general with the learning engine in proof mode
+// (ContinuousSatOptions::proof; engine Sat becomes Dl): with a NO that the
+// learning engine found, `proof` is the proof for the component that has
+// no schedule (proof.complete); otherwise proof.why_none says why there is
+// none (a component decided by Z3 on the clamped encoding, a limit, ...).
+// For certificates of instances that are not horizontal-only
+// (solver/no_certificate.hpp).
+ContinuousResult solve_continuous_proved(const Instance& inst, const SolveOptions& opt, ContinuousEngine engine,
+                                         ContinuousProof& proof);
 
 }  // namespace gridlock

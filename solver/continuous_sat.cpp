@@ -14,6 +14,7 @@
 #include <z3++.h>
 
 #include "cnf/incremental_sat.hpp"
+#include "solver/z3_lemmas.hpp"
 
 namespace gridlock {
 
@@ -35,10 +36,26 @@ struct Bound {
   bool strict = false;
 };
 
-// A difference bound that holds whenever every literal of guard is true.
+// A difference bound that holds whenever every literal of guard is true:
+// what the event t_runner + delta of pair constraint `constraint` asks.
 struct DiffRule {
   std::vector<int> guard;
   Bound b;
+  uint32_t constraint = 0, runner = 0;
+  int delta = 0;
+};
+
+// Why a clause holds (proof mode): see ContinuousProof.
+struct ClauseReason {
+  ContinuousProof::Reason reason = ContinuousProof::Reason::Theory;
+  uint32_t constraint = 0, runner = 0;  // runner: local coupling index
+  int delta = 0;
+};
+
+// A two-coupling pair's interval of free offsets t_b - t_a (proof mode).
+struct SelectorInfo {
+  uint32_t constraint = 0, a = 0, b = 0;  // a, b: local coupling indices
+  OffsetInterval iv;
 };
 
 // K + sum over terms (q, c) of c * (t_r + delta - t_q) <= 0 whenever every
@@ -82,17 +99,21 @@ class Engine {
     for (uint32_t j = 0; j < couplings.size(); ++j) local_.emplace(couplings[j], j);
   }
 
-  bool z3_for_linear = false;     // see solve_component_sat
-  bool difference_logic = false;  // see solve_component_sat
+  bool z3_for_linear = false;         // see solve_component_sat
+  bool difference_logic = false;      // see solve_component_sat
+  ContinuousProof* proof_ = nullptr;  // see ContinuousSatOptions::proof
 
   ContinuousSatOutcome run() {
     ContinuousSatOutcome out;
     if (!encode()) {
+      if (proof_) proof_of_failed_pair();
       out.verdict = Verdict::No;
       return out;
     }
     compute_scale();
-    if (!propagate_static()) {
+    // Proof mode leaves the static unit clauses to Z3 (they would need
+    // their own theory lemmas; Z3 derives them).
+    if (!proof_ && !propagate_static()) {
       out.verdict = Verdict::No;
       return out;
     }
@@ -118,9 +139,11 @@ class Engine {
  private:
   int lit_of(bool value, int var) const { return value ? var : -var; }
 
-  // Every clause goes to CaDiCaL and is kept for the difference-logic mode.
+  // Every clause goes to CaDiCaL and is kept for the difference-logic mode
+  // (and, in proof mode, with reason_ as its reason).
   void add_clause(const std::vector<int>& c) {
     clauses_.push_back(c);
+    if (proof_) reasons_.push_back(reason_);
     sat_.add_clause(c);
   }
 
@@ -138,7 +161,12 @@ class Engine {
       // not (D <= c): t_b - t_a < -c; not (D < c): t_b - t_a <= -c.
       m.when_false = {b, a, Rational(-kThreshold[i]), !kStrict[i]};
       meaning_.push_back(m);
-      if (i > 0) add_clause({-(v - 1), v});  // the chain D <= -1 -> D < 0 -> D <= 0 -> D < 1
+      if (i > 0) {  // the chain D <= -1 -> D < 0 -> D <= 0 -> D < 1
+        const ClauseReason outer = reason_;
+        reason_ = {};
+        add_clause({-(v - 1), v});
+        reason_ = outer;
+      }
     }
     atom_base_.emplace(key, first);
     return first;
@@ -161,6 +189,8 @@ class Engine {
     for (uint32_t ci : pairs_) {
       budget_.poll();
       const CollisionConstraint& c = sys_.constraints[ci];
+      failed_ = ci;
+      reason_ = {ContinuousProof::Reason::Interval, ci, 0, 0};
       if (c.rel.size() == 1) {
         if (!pair_free_at_offset(c, Rational(0))) return false;
       } else if (c.rel.size() == 2) {
@@ -172,8 +202,10 @@ class Engine {
         for (uint32_t i = 0; i < c.num_forms; ++i) {
           int g = new_var({});
           some.push_back(g);
+          if (proof_) guards_.emplace(g, std::make_pair(ci, i));
           encode_gap(c, i, g);
         }
+        reason_ = {ContinuousProof::Reason::Forms, ci, 0, 0};
         add_clause(some);
       }
     }
@@ -194,9 +226,11 @@ class Engine {
       if (iv.size() == 1) {
         if (m.has1) static_.push_back(m.when_true);
         if (m.has2) static_.push_back(m.when_true2);
+        if (proof_) static_selectors_.push_back({reason_.constraint, a, b, x});
         return true;
       }
       some.push_back(new_var(m));
+      if (proof_) selectors_.emplace(some.back(), SelectorInfo{reason_.constraint, a, b, x});
     }
     add_clause(some);
     return true;
@@ -212,7 +246,10 @@ class Engine {
       if (c.coef_of(j)[i] != 0) qs.push_back(local_.at(c.rel[j])), cs.push_back(c.coef_of(j)[i]);
     if (c.base[i] > 0) {
       if (g == 0) return false;
+      const ClauseReason outer = reason_;
+      reason_ = {ContinuousProof::Reason::Event, outer.constraint, kNone, 0};  // before every start
       add_clause({-g});
+      reason_ = outer;
       return true;
     }
     for (size_t j = 0; j < qs.size(); ++j)
@@ -268,7 +305,10 @@ class Engine {
     if (violated) {
       std::vector<int> clause(guard.size());
       std::transform(guard.begin(), guard.end(), clause.begin(), [](int l) { return -l; });
+      const ClauseReason outer = reason_;
+      reason_ = {ContinuousProof::Reason::Event, outer.constraint, r, delta};
       add_clause(clause);
+      reason_ = outer;
       return;
     }
     if (holds) return;
@@ -279,6 +319,7 @@ class Engine {
       rule.guard = guard;
       if (cq > 0) rule.b = {r, q, Rational(-k - cq * delta, cq), false};
       else rule.b = {q, r, Rational(k + cq * delta, cq), false};
+      rule.constraint = reason_.constraint, rule.runner = r, rule.delta = delta;
       diff_rules_.push_back(std::move(rule));
       return;
     }
@@ -574,6 +615,7 @@ class Engine {
       const z3::check_result cr = check_interruptible();
       if (cr == z3::unknown) throw LimitReached{};
       if (cr == z3::unsat) {
+        if (proof_) write_proof(with_linear);
         out.verdict = Verdict::No;
         return out;
       }
@@ -591,6 +633,122 @@ class Engine {
       }
       return answer_yes(std::move(t));
     }
+  }
+
+  // Proof mode: the canonical variable of bound b (local indices) as a
+  // literal; t_x - t_y <= v with x > y is the negation of t_y - t_x < -v.
+  // Creates the variable (kind bound) if it is new.
+  int bound_lit(const Bound& b) {
+    const bool flip = b.x > b.y;
+    const Bound c = flip ? Bound{b.y, b.x, Rational(0) - b.v, !b.strict} : b;
+    const auto key = std::make_tuple(c.x, c.y, c.v.num(), c.v.den(), c.strict);
+    auto it = bound_var_.find(key);
+    if (it == bound_var_.end()) {
+      ContinuousProof::Var v;
+      v.x = couplings_[c.x], v.y = couplings_[c.y], v.v = c.v, v.strict = c.strict;
+      proof_->vars.push_back(v);
+      it = bound_var_.emplace(key, static_cast<int>(proof_->vars.size())).first;
+    }
+    return flip ? -it->second : it->second;
+  }
+
+  // Proof mode: clause c for the proof, with its reason.
+  void proof_clause(const ClauseReason& why, std::vector<int> lits, const std::vector<uint32_t>* movers = nullptr) {
+    ContinuousProof::Clause cl;
+    cl.reason = why.reason;
+    if (why.reason == ContinuousProof::Reason::Interval || why.reason == ContinuousProof::Reason::Event ||
+        why.reason == ContinuousProof::Reason::Forms) {
+      const CollisionConstraint& c = sys_.constraints[why.constraint];
+      cl.region_a = c.region_a, cl.region_b = c.region_b;
+      if (why.reason == ContinuousProof::Reason::Event)
+        cl.runner = why.runner == kNone ? kNone : couplings_[why.runner], cl.delta = why.delta;
+      else if (movers)
+        for (uint32_t q : *movers) cl.movers.push_back(couplings_[q]);
+      else if (why.reason == ContinuousProof::Reason::Interval) cl.movers = c.rel;
+    }
+    cl.lits = std::move(lits);
+    proof_->clauses.push_back(std::move(cl));
+  }
+
+  // Proof mode: a selector variable for interval s (v: its SAT variable, or
+  // 0 for a new one) and the clauses that define it.
+  int proof_selector(const SelectorInfo& s, int v) {
+    ContinuousProof::Var var;
+    var.selector = true, var.x = couplings_[s.a], var.y = couplings_[s.b], var.lo = s.iv.lo, var.hi = s.iv.hi;
+    if (v == 0) {
+      proof_->vars.push_back(var);
+      v = static_cast<int>(proof_->vars.size());
+    } else {
+      proof_->vars[static_cast<size_t>(v - 1)] = var;
+    }
+    const ClauseReason def{ContinuousProof::Reason::Definition, 0, 0, 0};
+    // lo <= t_b - t_a: t_a - t_b <= -lo; t_b - t_a <= hi.
+    if (s.iv.lo) proof_clause(def, {-v, bound_lit({s.a, s.b, Rational(0) - *s.iv.lo, false})});
+    if (s.iv.hi) proof_clause(def, {-v, bound_lit({s.b, s.a, *s.iv.hi, false})});
+    return v;
+  }
+
+  // Proof mode, after Z3's NO: the encoding's clauses with their reasons,
+  // the difference rules as event clauses, the static intervals as
+  // selectors, and the theory lemmas of Z3's proof.
+  void write_proof(bool with_linear) {
+    ContinuousProof& p = *proof_;
+    p = {};
+    if (with_linear)
+      return void(
+          p.why_none = "the NO needed the linear rules (two couplings part-way at an event): not certified yet");
+    p.vars.resize(meaning_.size());
+    for (auto [key, first] : atom_base_)
+      for (int i = 0; i < 4; ++i) {
+        const VarMeaning& m = meaning_[static_cast<size_t>(first + i - 1)];
+        ContinuousProof::Var& v = p.vars[static_cast<size_t>(first + i - 1)];
+        v.x = couplings_[m.when_true.x], v.y = couplings_[m.when_true.y], v.v = m.when_true.v,
+        v.strict = m.when_true.strict;
+        bound_var_.emplace(
+            std::make_tuple(m.when_true.x, m.when_true.y, m.when_true.v.num(), m.when_true.v.den(), m.when_true.strict),
+            first + i);
+      }
+    for (const auto& [v, info] : selectors_) proof_selector(info, v);
+    for (const auto& [v, cf] : guards_) {
+      const CollisionConstraint& c = sys_.constraints[cf.first];
+      ContinuousProof::Var& var = p.vars[static_cast<size_t>(v - 1)];
+      var.guard = true, var.form = c.form_index.at(cf.second), var.region_a = c.region_a, var.region_b = c.region_b;
+    }
+    for (size_t i = 0; i < clauses_.size(); ++i) proof_clause(reasons_[i], clauses_[i]);
+    for (const SelectorInfo& s : static_selectors_) {
+      const int v = proof_selector(s, 0);
+      const std::vector<uint32_t> movers{s.a, s.b};
+      proof_clause({ContinuousProof::Reason::Interval, s.constraint, 0, 0}, {v}, &movers);
+    }
+    for (const DiffRule& r : diff_rules_) {
+      std::vector<int> lits;
+      for (int l : r.guard) lits.push_back(-l);
+      lits.push_back(bound_lit(r.b));
+      proof_clause({ContinuousProof::Reason::Event, r.constraint, r.runner, r.delta}, std::move(lits));
+    }
+    try {
+      for (const std::vector<DiffLiteral>& lemma : z3_theory_lemmas(z3s_->proof())) {
+        std::vector<int> lits;
+        lits.reserve(lemma.size());
+        for (const DiffLiteral& d : lemma) lits.push_back(bound_lit({d.x, d.y, d.v, d.strict}));
+        proof_clause({}, std::move(lits));
+      }
+    } catch (const std::runtime_error& e) {
+      p = {};
+      return void(p.why_none = e.what());
+    }
+    p.complete = true;
+  }
+
+  // Proof mode, when a pair can never be free (encode() failed): one
+  // interval clause without literals, or no proof for a gap.
+  void proof_of_failed_pair() {
+    ContinuousProof& p = *proof_;
+    p = {};
+    const CollisionConstraint& c = sys_.constraints[failed_];
+    if (c.rel.size() > 2) return void(p.why_none = "a gap that is open before anything starts (not certified yet)");
+    proof_clause({ContinuousProof::Reason::Interval, failed_, 0, 0}, {});
+    p.complete = true;
   }
 
   // A YES of either search: times shifted so the earliest is 0, checked pair
@@ -708,7 +866,11 @@ class Engine {
     zt_.clear();
     zb_.clear();
     z3s_.reset();
-    z3ctx_ = std::make_unique<z3::context>();
+    {
+      z3::config cfg;
+      if (proof_) cfg.set("proof", true);
+      z3ctx_ = std::make_unique<z3::context>(cfg);
+    }
     if (with_linear) {
       z3s_ = std::make_unique<z3::solver>(*z3ctx_, "QF_LRA");
     } else {
@@ -798,6 +960,14 @@ class Engine {
   std::vector<uint64_t> seen_;
   std::vector<std::vector<uint32_t>> rev_;
   std::vector<std::vector<int>> clauses_;  // every clause given to sat_
+  // Proof mode (proof_ set):
+  std::vector<ClauseReason> reasons_;  // per clause of clauses_
+  ClauseReason reason_;                // of the clauses being added
+  uint32_t failed_ = 0;                // the pair being encoded (encode() false: the one that is never free)
+  std::map<int, std::pair<uint32_t, uint32_t>> guards_;  // guard variable: (pair constraint, form)
+  std::map<int, SelectorInfo> selectors_;
+  std::vector<SelectorInfo> static_selectors_;
+  std::map<std::tuple<uint32_t, uint32_t, int64_t, int64_t, bool>, int> bound_var_;
   uint64_t stamp_ = 0;
   // Created on first use: most components never need Z3.
   std::unique_ptr<z3::context> z3ctx_;
@@ -826,7 +996,8 @@ ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std:
                                          SearchBudget& budget, SolveStats& stats, ContinuousSatOptions options) {
   Engine engine(sys, couplings, pairs, cache, budget, stats);
   engine.z3_for_linear = options.z3_for_linear;
-  engine.difference_logic = options.difference_logic;
+  engine.difference_logic = options.difference_logic || options.proof != nullptr;
+  engine.proof_ = options.proof;
   return engine.run();
 }
 

@@ -74,6 +74,51 @@ struct ContinuousSatOutcome {
   std::vector<Rational> start;  // Yes: per coupling of the component (its order), the earliest at 0
 };
 
+// The proof of a NO of the learning engine (difference-logic mode), from
+// which solver/no_certificate.hpp writes a continuous NO certificate (kind
+// bounds, docs/certificates.md) that certify/ checks. Variables are
+// numbered 1..vars.size(); a clause is a list of signed variables. Every
+// clause holds in every collision-free schedule:
+//  Interval: the pair of regions (moved only by movers: one or two
+//    couplings) collides unless the offset t_b - t_a lies in one of the
+//    clause's selectors' intervals (no literal: it always collides);
+//  Event: at the instant t_runner + delta (runner kNone: before every
+//    start) the pair collides whenever every literal is false (each false
+//    literal is a difference bound); with a guard's literal negated in it,
+//    the guard's form is positive then instead;
+//  Forms: one of the guards holds (a pair of several forms that no two can
+//    be <= 0 together: the one <= 0 at any moment is <= 0 at every moment);
+//  Theory: the literals' negations, difference bounds, are contradictory
+//    (the atom chains and Z3's theory lemmas);
+//  Definition: a selector implies the bounds of its interval.
+// They are unsatisfiable together (the writer asks CaDiCaL for the DRAT
+// proof).
+struct ContinuousProof {
+  struct Var {
+    bool selector = false;
+    bool guard = false;  // form `form` (0..7, CollisionConstraint::form_index) of the pair is <= 0 at every moment
+    uint8_t form = 0;
+    uint32_t region_a = kNone, region_b = kNone;  // guard
+    CouplingId x = kNone, y = kNone;              // bound: t_x - t_y; selector: a = x, b = y
+    Rational v;                                   // bound: t_x - t_y <= v (< v if strict)
+    bool strict = false;
+    std::optional<Rational> lo, hi;  // selector: lo <= t_b - t_a <= hi
+  };
+  enum class Reason { Interval, Event, Theory, Definition, Forms };
+  struct Clause {
+    Reason reason = Reason::Theory;
+    uint32_t region_a = kNone, region_b = kNone;  // Interval, Event, Forms (lattice/motion.hpp Regions numbering)
+    CouplingId runner = kNone;                    // Event: the instant t_runner + delta
+    int delta = 0;
+    std::vector<CouplingId> movers;  // Interval: a (and b)
+    std::vector<int> lits;
+  };
+  std::vector<Var> vars;  // vars[v - 1] for variable v
+  std::vector<Clause> clauses;
+  bool complete = false;  // true: the clauses are a proof; else why_none says why there is none
+  std::string why_none;
+};
+
 // How solve_component_sat searches the encoding (the atoms, clauses and
 // rules above are the same).
 //  difference_logic (the default): Z3 (its SMT kernel with the
@@ -89,9 +134,13 @@ struct ContinuousSatOutcome {
 //  z3_for_linear (tests): a model with an active linear rule always goes to
 //    Z3 on everything, even when it meets every rule (so tests reach that
 //    path).
+//  proof (certificates): with a NO, the encoding's clauses with their
+//    reasons and the theory lemmas of Z3's proof (Z3 runs with proofs on,
+//    about 2.5x slower) go to *proof; forces the difference-logic mode.
 struct ContinuousSatOptions {
   bool difference_logic = true;
   bool z3_for_linear = false;
+  ContinuousProof* proof = nullptr;
 };
 
 // Decides the component (couplings: its couplings, pairs: its pair

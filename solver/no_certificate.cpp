@@ -4,7 +4,9 @@
 #include <memory>
 #include <stdexcept>
 
+#include "cnf/incremental_sat.hpp"
 #include "solver/constraints.hpp"
+#include "solver/continuous_sat.hpp"
 #include "solver/gaps.hpp"
 #include "solver/search.hpp"
 
@@ -122,6 +124,77 @@ std::string pairs_certificate(const PreparedInstance& prep, const SolveOptions& 
   }
 }
 
+std::string literals_text(const std::vector<int>& lits) {
+  std::string s;
+  for (int l : lits) s += " " + std::to_string(l);
+  return s;
+}
+
+// The variables and clauses of a continuous proof (kind bounds; the
+// definitions of selectors are left to the checker).
+std::string bounds_text(const Instance& inst, const Regions& regions, const ContinuousProof& p) {
+  using Reason = ContinuousProof::Reason;
+  const auto& cs = inst.couplings();
+  std::string text = "bounds\n";
+  for (size_t i = 0; i < p.vars.size(); ++i) {
+    const ContinuousProof::Var& v = p.vars[i];
+    const std::string n = std::to_string(i + 1);
+    if (v.guard) {
+      text += "g " + n + " " + region_text(inst, regions, v.region_a) + " " + region_text(inst, regions, v.region_b) +
+              " " + std::to_string(v.form + 1) + "\n";
+    } else if (v.selector) {
+      text += "s " + n + " " + cs[v.x].name + " " + cs[v.y].name + " " + (v.lo ? v.lo->str() : "*") + " " +
+              (v.hi ? v.hi->str() : "*") + "\n";
+    } else if (v.x != kNone) {
+      text += "a " + n + " " + cs[v.x].name + " " + cs[v.y].name + (v.strict ? " < " : " <= ") + v.v.str() + "\n";
+    }
+  }
+  for (const ContinuousProof::Clause& c : p.clauses) {
+    if (c.reason == Reason::Definition) continue;
+    if (c.reason == Reason::Theory) {
+      text += "t" + literals_text(c.lits) + "\n";
+      continue;
+    }
+    text += std::string(c.reason == Reason::Event   ? "e "
+                        : c.reason == Reason::Forms ? "f "
+                                                    : "i ") +
+            region_text(inst, regions, c.region_a) + " " + region_text(inst, regions, c.region_b);
+    if (c.reason == Reason::Event)
+      text += " " + (c.runner == kNone ? std::string("-") : cs[c.runner].name) + " " + std::to_string(c.delta);
+    if (c.reason == Reason::Interval)
+      text += " " + cs[c.movers[0]].name + " " + (c.movers.size() > 1 ? cs[c.movers[1]].name : std::string("-"));
+    text += literals_text(c.lits) + "\n";
+  }
+  return text;
+}
+
+// CaDiCaL's DRAT proof that the clauses of p are unsatisfiable, as "l"
+// lines (deletions left out), ending with "l" alone.
+std::string bounds_drat(const ContinuousProof& p) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> drat(std::tmpfile(), &std::fclose);
+  if (!drat) throw std::runtime_error("NO certificate: cannot open a temporary file for the proof");
+  IncrementalSat sat;
+  sat.trace_proof(drat.get());
+  for (size_t i = 0; i < p.vars.size(); ++i) sat.new_var();
+  for (const ContinuousProof::Clause& c : p.clauses) sat.add_clause(c.lits);
+  if (sat.solve([](uint64_t) { return false; }) != Verdict::No)
+    throw std::logic_error("NO certificate: the continuous proof's clauses are satisfiable");
+  sat.flush_proof();
+  std::rewind(drat.get());
+  std::string text, line;
+  bool empty_clause = false;
+  for (int ch; !empty_clause && (ch = std::fgetc(drat.get())) != EOF;) {
+    if (ch != '\n') {
+      line += static_cast<char>(ch);
+      continue;
+    }
+    empty_clause = line == "0";  // the proof ends there
+    if (!empty_clause && line.size() > 2 && line[0] != 'd') text += "l " + line.substr(0, line.size() - 2) + "\n";
+    line.clear();
+  }
+  return text + "l\n";
+}
+
 // Runs the precedence engine with a log of its cycles and nogoods.
 SolveResult logged_precedence(const PreparedInstance& prep, SolveOptions opt, std::string& log, Simulator* replay) {
   PrecedenceHooks hooks;
@@ -186,6 +259,25 @@ std::string continuous_no_certificate(const Instance& inst) {
     return s + "\n";
   }
   return s + "final-gap " + cell_text(inst, v.left) + " " + cell_text(inst, v.right) + "\n";
+}
+
+CertifiedContinuous solve_continuous_certified(const Instance& inst, const SolveOptions& opt, ContinuousEngine engine) {
+  CertifiedContinuous out;
+  if (inst.horizontal_only()) {
+    out.result = solve_continuous(inst, opt, engine);
+    if (out.result.status == Verdict::No) out.certificate = continuous_no_certificate(inst);
+    return out;
+  }
+  ContinuousProof proof;
+  out.result = solve_continuous_proved(inst, opt, engine, proof);
+  if (out.result.status != Verdict::No) return out;
+  if (!proof.complete) {
+    out.why_none = proof.why_none;
+    return out;
+  }
+  const Regions regions = Regions::build(inst);
+  out.certificate = header(inst, "continuous") + bounds_text(inst, regions, proof) + bounds_drat(proof);
+  return out;
 }
 
 }  // namespace gridlock

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "lattice/prepared.hpp"
+#include "solver/continuous.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {
@@ -41,6 +42,25 @@ struct CertifiedSolve {
 // solve_discrete; std::logic_error if the second run disagrees.
 CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt,
                                         Simulator* replay = nullptr);
+
+struct CertifiedContinuous {
+  ContinuousResult result;
+  std::string certificate;  // result NO: the certificate, or empty (then why_none says why)
+  std::string why_none;
+};
+
+// solve_continuous(inst, opt, engine), and with every NO a certificate when
+// one can be written: horizontal-only instances as continuous_no_certificate;
+// others from the learning engine's proof (solve_continuous_proved, kind
+// bounds: its clauses with their reasons, the theory lemmas of Z3's proof
+// and CaDiCaL's DRAT proof that they are unsatisfiable). The search runs
+// once, with Z3's proofs on (about 2.5x slower than without). why_none:
+// a NO the learning engine did not find (Z3 on the clamped encoding) or
+// one it cannot write yet (docs/certificates.md). Same exceptions as
+// solve_continuous; std::logic_error if CaDiCaL finds the proof's clauses
+// satisfiable (a bug).
+CertifiedContinuous solve_continuous_certified(const Instance& inst, const SolveOptions& opt,
+                                               ContinuousEngine engine = ContinuousEngine::Auto);
 
 // Continuous model, horizontal-only instances: if running everything at
 // once collides (check_gaps), the certificate naming why the final

@@ -50,7 +50,10 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   ans.comment("gridlock solve --model continuous " + path + ": " + std::to_string(inst.num_nodes()) + " nodes, " +
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
               " couplings" + (inst.horizontal_only() ? ", horizontal-only" : ""));
-  ContinuousResult r = solve_continuous(inst, opt, engine);
+  CertifiedContinuous cc;
+  if (cert_path.empty()) cc.result = solve_continuous(inst, opt, engine);
+  else cc = solve_continuous_certified(inst, opt, engine);
+  const ContinuousResult& r = cc.result;
   const SolveStats& st = r.stats;
   if (st.engine == "gaps") {
     ans.comment("horizontal-only: linear gap check (" + std::to_string(st.constraints) + " gaps and cycles)");
@@ -63,9 +66,7 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   ans.comment("time " + fixed(st.seconds, 3) + " s");
   if (r.status == Verdict::Yes) ans.comment("start times checked by the simulator: collision-free");
   if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
-  if (r.status == Verdict::No)
-    write_certificate(ans, cert_path, inst.horizontal_only() ? continuous_no_certificate(inst) : "",
-                      "continuous certificates for instances with vertical operations are not written yet");
+  if (r.status == Verdict::No) write_certificate(ans, cert_path, cc.certificate, cc.why_none);
   if (r.status == Verdict::Yes)
     for (CouplingId q = 0; q < inst.couplings().size(); ++q)
       ans.witness(inst.couplings()[q].name + " " + r.schedule.start[q].str());

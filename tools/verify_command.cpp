@@ -176,11 +176,14 @@ void print_table_row(std::ostream& out, const VerifyView& v, const std::string& 
       << std::setw(7) << sat_word(r.sat) << std::setw(9) << (d ? verdict_name(r.discrete) : "-") << std::setw(7)
       << (d ? verdict_name(r.continuous) : "-");
   if (c) out << std::setw(9) << verdict_name(r.continuous_solver);
-  const bool certified = r.no_certificate != Check::None;
+  const bool certified = r.no_certificate != Check::None, ccertified = r.cno_certificate != Check::None;
   const int expected = d * ((r.sat == Verdict::Yes) + (r.discrete == Verdict::Yes) + (r.continuous == Verdict::Yes) +
                             certified) +
-                       c * ((r.sat == Verdict::Yes) + (r.continuous_solver == Verdict::Yes));
-  const char* cert = r.no_certificate == Check::Valid ? "ok" : r.no_certificate == Check::Invalid ? "BAD" : "-";
+                       c * ((r.sat == Verdict::Yes) + (r.continuous_solver == Verdict::Yes) + ccertified);
+  // Both NO certificates in one column: BAD if either is rejected.
+  const bool bad = r.no_certificate == Check::Invalid || r.cno_certificate == Check::Invalid;
+  const bool ok = r.no_certificate == Check::Valid || r.cno_certificate == Check::Valid;
+  const char* cert = bad ? "BAD" : ok ? "ok" : "-";
   out << std::setw(6) << (std::to_string(r.witnesses_checked()) + "/" + std::to_string(expected)) << std::setw(6)
       << cert << std::setw(10) << (d ? r.solver_states : r.csolver_conflicts) << "  " << fmt_ms(r.ms_sat) << "/"
       << fmt_ms(r.ms_compile) << "/" << fmt_ms(r.ms_solve) << "/" << fmt_ms(r.ms_gaps)
@@ -205,6 +208,9 @@ nlohmann::json result_row(const VerifyView& v, size_t i, const std::string& file
                         {"no_certificate", r.no_certificate == Check::None    ? "none"
                                            : r.no_certificate == Check::Valid ? "checked"
                                                                               : "rejected"},
+                        {"continuous_no_certificate", r.cno_certificate == Check::None    ? "none"
+                                                      : r.cno_certificate == Check::Valid ? "checked"
+                                                                                          : "rejected"},
                         {"ms_certify", r.ms_certify},
                         {"solver_states", r.solver_states},
                         {"ms_sat", r.ms_sat},

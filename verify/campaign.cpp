@@ -27,7 +27,7 @@ bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const Fu
   t.unsat += r.sat == Verdict::No;
   t.unknown += r.agree && r.solver_unknown();
   t.certificates += static_cast<uint64_t>(r.witnesses_checked());
-  t.no_certified += r.no_certificate == Check::Valid;
+  t.no_certified += (r.no_certificate == Check::Valid) + (r.cno_certificate == Check::Valid);
   if (r.agree) return true;
   ++t.disagreements;
   if (ev.disagreement) ev.disagreement(i, r);
@@ -47,8 +47,8 @@ bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const Fu
 FormulaStatus count(const VerifyResult& r, VerifyTally& t) {
   ++t.formulas;
   t.certificates += static_cast<size_t>(r.witnesses_checked());
-  t.no_certified += r.no_certificate == Check::Valid;
-  t.no_rejected += r.no_certificate == Check::Invalid;
+  t.no_certified += (r.no_certificate == Check::Valid) + (r.cno_certificate == Check::Valid);
+  t.no_rejected += (r.no_certificate == Check::Invalid) + (r.cno_certificate == Check::Invalid);
   t.sat += r.sat == Verdict::Yes;
   t.unsat += r.sat == Verdict::No;
   t.ms += r.ms_sat + r.ms_compile + r.ms_solve + r.ms_gaps + r.ms_csolve + r.ms_certify;

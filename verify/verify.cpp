@@ -37,7 +37,8 @@ std::optional<VerifyModel> parse_verify_model(const std::string& s) {
 
 int VerifyResult::witnesses_checked() const {
   return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid) +
-         (no_certificate == Check::Valid) + (csat_witness == Check::Valid) + (csolver_witness == Check::Valid);
+         (no_certificate == Check::Valid) + (csat_witness == Check::Valid) + (csolver_witness == Check::Valid) +
+         (cno_certificate == Check::Valid);
 }
 
 namespace {
@@ -98,6 +99,23 @@ struct Problems {
   }
 };
 
+// A solver's NO certificate (or why it wrote none) through the independent
+// checker: Valid, or Invalid with the issue. who: "the solver" and the like.
+Check checked_certificate(const Instance& inst, const std::string& text, const std::string& why_none,
+                          const std::string& model, const std::string& who, std::string& issue, double& ms) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Check out = Check::Valid;
+  if (text.empty()) {
+    out = Check::Invalid;
+    issue = who + "'s NO has no certificate: " + why_none;
+  } else if (const CertifyResult checked = certify(inst, text, model); !checked.proved) {
+    out = Check::Invalid;
+    issue = who + "'s NO certificate is rejected: " + checked.reason;
+  }
+  ms += ms_since(t0);
+  return out;
+}
+
 // The continuous reduction: compile G for continuous time, CaDiCaL's model
 // as start times through the simulator, the exact continuous solver, its
 // start times through the simulator and back to an assignment of F.
@@ -120,8 +138,16 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
     r.csat_witness = sim.run(s).collision ? Check::Invalid : Check::Valid;
   }
   t0 = std::chrono::steady_clock::now();
-  ContinuousResult cr = solve_continuous(inst, solve_options(opt));
+  CertifiedContinuous cc;
+  if (opt.certify) cc = solve_continuous_certified(inst, solve_options(opt));
+  else cc.result = solve_continuous(inst, solve_options(opt));
+  const ContinuousResult& cr = cc.result;
   r.ms_csolve = ms_since(t0);
+  if (opt.certify && cr.status == Verdict::No) {
+    r.ccertificate = cc.certificate;
+    r.cno_certificate = checked_certificate(inst, cc.certificate, cc.why_none, "continuous", "the continuous solver",
+                                            r.ccertificate_issue, r.ms_certify);
+  }
   r.csolver_conflicts = cr.stats.refuted;
   r.continuous_solver = cr.status;
   if (r.continuous_solver == Verdict::Yes) {
@@ -139,6 +165,7 @@ void continuous_problems(const VerifyResult& r, Problems& p) {
   p.compare("exact continuous solver", r.continuous_solver, r.sat);
   p.check(r.csat_witness, "the SAT model's start times collide in the simulator (continuous)");
   if (r.csolver_witness == Check::Invalid) p.add(r.csolver_issue);
+  if (r.cno_certificate == Check::Invalid) p.add(r.ccertificate_issue);
 }
 
 // G: F itself (VerifyOptions::direct, no empty clause) or to-lsat's output.
@@ -163,21 +190,6 @@ Lift lsat_form(VerifyResult& r, const VerifyOptions& opt, std::optional<LsatRedu
 // The discrete reduction: compile G, lift CaDiCaL's model to a schedule
 // through the simulator, the exact discrete solver (its YES order replayed
 // by the simulator, lifted back to F), the gap checker and its witness.
-// The NO certificate the solver wrote, through the independent checker.
-void check_no_certificate(const Instance& inst, const CertifiedSolve& cs, VerifyResult& r) {
-  const auto t0 = std::chrono::steady_clock::now();
-  r.certificate = cs.certificate;
-  if (cs.certificate.empty()) {
-    r.no_certificate = Check::Invalid;
-    r.certificate_issue = "the solver's NO has no certificate: " + cs.why_none;
-  } else {
-    const CertifyResult c = certify(inst, cs.certificate, "discrete");
-    r.no_certificate = c.proved ? Check::Valid : Check::Invalid;
-    if (!c.proved) r.certificate_issue = "the solver's NO certificate is rejected: " + c.reason;
-  }
-  r.ms_certify = ms_since(t0);
-}
-
 void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt,
                      std::unique_ptr<Simulator>& simulator, Problems& p) {
   r.ran_discrete = true;
@@ -209,7 +221,11 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
   else cs.result = solve_discrete(prep, solve_options(opt), &sim);
   const SolveResult& sr = cs.result;
   r.ms_solve = ms_since(t0);
-  if (opt.certify && sr.status == Verdict::No) check_no_certificate(inst, cs, r);
+  if (opt.certify && sr.status == Verdict::No) {
+    r.certificate = cs.certificate;
+    r.no_certificate = checked_certificate(inst, cs.certificate, cs.why_none, "discrete", "the solver",
+                                           r.certificate_issue, r.ms_certify);
+  }
   r.solver_states = sr.stats.states;
   r.discrete = sr.status;
   if (r.discrete == Verdict::Yes) {

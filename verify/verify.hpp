@@ -52,9 +52,10 @@ struct VerifyOptions {
   // small formulas stay small instances. Formulas with an empty clause still
   // go through to-lsat.
   bool direct = false;
-  // With every discrete NO, ask the solver for a NO certificate
-  // (solver/no_certificate.hpp) and check it with the independent checker
-  // (certify/certify.hpp); a missing or rejected certificate is a problem.
+  // With every NO of an exact solver (discrete or continuous), ask it for a
+  // NO certificate (solver/no_certificate.hpp) and check it with the
+  // independent checker (certify/certify.hpp); a missing or rejected
+  // certificate is a problem.
   bool certify = true;
 };
 
@@ -84,6 +85,8 @@ struct VerifyResult {
   Check csat_witness = Check::None;                    // F's model -> start times -> simulator
   Check csolver_witness = Check::None;                 // solver's start times -> simulator -> assignment -> F
   std::string csolver_issue;                           // why csolver_witness is Invalid
+  Check cno_certificate = Check::None;                 // continuous NO: its certificate -> certify
+  std::string ccertificate, ccertificate_issue;        // that certificate; why cno_certificate is Invalid
   std::vector<std::string> csat_times, csolver_times;  // "NAME TIME" lines
   size_t cnodes = 0;
   double ms_csolve = 0;
