@@ -43,33 +43,6 @@ std::pair<BoundKey, bool> canonical(const DiffBound& b) {
 // The negation of a bound: not (t_x - t_y <= v) is t_y - t_x < -v.
 DiffBound negation(const DiffBound& b) { return {b.y, b.x, Rational(0) - b.v, !b.strict}; }
 
-// A weight v - strictness * epsilon, compared exactly.
-struct Weight {
-  Rational v;
-  int64_t eps = 0;  // minus the number of strict bounds
-  friend Weight operator+(const Weight& p, const Weight& q) { return {p.v + q.v, p.eps + q.eps}; }
-  friend bool operator<(const Weight& p, const Weight& q) { return p.v < q.v || (p.v == q.v && p.eps < q.eps); }
-};
-
-// True iff the bounds have no common solution: a negative cycle, found by
-// Bellman-Ford from a virtual source (n rounds; the n-th still relaxes).
-bool contradictory(const std::vector<DiffBound>& bs) {
-  std::map<CouplingId, size_t> node;
-  for (const DiffBound& b : bs) node.emplace(b.x, node.size()), node.emplace(b.y, node.size());
-  std::vector<Weight> dist(node.size());
-  for (size_t round = 0; round <= node.size(); ++round) {
-    bool relaxed = false;
-    for (const DiffBound& b : bs) {
-      // t_x <= t_y + v: an edge y -> x.
-      const size_t from = node[b.y], to = node[b.x];
-      const Weight w = dist[from] + Weight{b.v, b.strict ? -1 : 0};
-      if (w < dist[to]) dist[to] = w, relaxed = true;
-    }
-    if (!relaxed) return false;
-  }
-  return true;
-}
-
 // The values of t_Q - t_q allowed so far: an interval with open or closed ends.
 struct Range {
   bool lo_inf = true, hi_inf = true;
@@ -401,11 +374,27 @@ class BoundsChecker {
     return std::nullopt;
   }
 
-  // t LITS: the negations contradict each other.
+  // t LITS: the negations, in order, are a cycle of difference bounds
+  // t_x1 - t_y1 <= v1, t_x2 - t_y2 <= v2, ... with y_i = x_(i+1) and
+  // y_k = x_1. Their sum says 0 <= v1 + ... + vk (< if one is strict),
+  // which must be false: they cannot hold together.
   std::optional<std::string> theory_clause(const std::vector<int>& lits) const {
     std::vector<DiffBound> neg;
     if (auto e = negations(lits, neg)) return e;
-    if (!contradictory(neg)) return std::string("the negated bounds have a common solution (no negative cycle)");
+    if (neg.empty()) return std::string("a theory lemma needs literals");
+    Rational sum(0);
+    bool strict = false;
+    for (size_t i = 0; i < neg.size(); ++i) {
+      const DiffBound& next = neg[(i + 1) % neg.size()];
+      if (neg[i].y != next.x)
+        return "the negated bounds are no cycle: literal " + std::to_string(i + 1) + " ends at " +
+               inst_.couplings()[neg[i].y].name + ", the next starts at " + inst_.couplings()[next.x].name;
+      sum = sum + neg[i].v;
+      strict = strict || neg[i].strict;
+    }
+    if (sum > Rational(0) || (sum == Rational(0) && !strict))
+      return "the negated bounds' cycle sums to " + sum.str() + (strict ? " (strict)" : "") +
+             ": they can hold together";
     return std::nullopt;
   }
 

@@ -70,14 +70,17 @@ py::dict solve(const Instance& inst, const std::string& model, const std::string
   d["certificate_note"] = py::none();
   if (model == "continuous") {
     const ContinuousEngine ce = continuous_engine_arg(engine);
-    const ContinuousResult r = run_interruptible([&] { return solve_continuous(inst, opt, ce); });
+    CertifiedContinuous cc;
+    if (certificate) cc = run_interruptible([&] { return solve_continuous_certified(inst, opt, ce); });
+    else cc.result = run_interruptible([&] { return solve_continuous(inst, opt, ce); });
+    const ContinuousResult& r = cc.result;
     d["status"] = verdict_name(r.status);
     d["engine"] = r.stats.engine;
     d["times"] = r.status == Verdict::Yes ? py::object(times_dict(inst, r.schedule)) : py::object(py::none());
     d["stats"] = stats_dict(r.stats);
     if (certificate && r.status == Verdict::No) {
-      if (inst.horizontal_only()) d["certificate"] = continuous_no_certificate(inst);
-      else d["certificate_note"] = "continuous certificates for instances with vertical operations are not written yet";
+      if (!cc.certificate.empty()) d["certificate"] = cc.certificate;
+      else d["certificate_note"] = cc.why_none;
     }
     return d;
   }

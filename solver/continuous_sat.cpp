@@ -728,9 +728,8 @@ class Engine {
     }
     try {
       for (const std::vector<DiffLiteral>& lemma : z3_theory_lemmas(z3s_->proof())) {
-        std::vector<int> lits;
-        lits.reserve(lemma.size());
-        for (const DiffLiteral& d : lemma) lits.push_back(bound_lit({d.x, d.y, d.v, d.strict}));
+        std::vector<int> lits = cycle_lemma(lemma);
+        if (lits.empty()) throw std::runtime_error("a theory lemma of Z3 without a negative cycle");
         proof_clause({}, std::move(lits));
       }
     } catch (const std::runtime_error& e) {
@@ -738,6 +737,29 @@ class Engine {
       return void(p.why_none = e.what());
     }
     p.complete = true;
+  }
+
+  // Proof mode: a theory lemma cut down to a negative cycle of its
+  // literals' negations, in cycle order (each negation's second start time
+  // is the next one's first, docs/certificates.md "Kind bounds"): what the
+  // checker adds up. Empty if there is none (or a constant's denominator
+  // does not divide scale_). O(couplings + lemma) per relaxation pass.
+  std::vector<int> cycle_lemma(const std::vector<DiffLiteral>& lemma) {
+    std::vector<Edge> es;
+    for (size_t i = 0; i < lemma.size(); ++i) {
+      const DiffLiteral& d = lemma[i];
+      const Bound neg{d.y, d.x, Rational(0) - d.v, !d.strict};  // not (t_x - t_y <= v)
+      if (scale_ % neg.v.den() != 0) return {};
+      es.push_back(edge(neg, static_cast<int>(i), -1));
+    }
+    std::vector<char> off(es.size(), 0);
+    std::vector<int64_t> dist;
+    std::vector<int> out;
+    for (uint32_t ei : negative_cycle(es, off, dist)) {
+      const DiffLiteral& d = lemma[static_cast<size_t>(es[ei].lit)];
+      out.push_back(bound_lit({d.x, d.y, d.v, d.strict}));
+    }
+    return out;
   }
 
   // Proof mode, when a pair can never be free (encode() failed): one

@@ -195,6 +195,14 @@ class Mutator {
     std::vector<std::string> m = ls_;
     m[i] = line_of(w);
     rejected_or_redundant(m, "theory literal dropped");
+    // Its first two literals swapped: no longer a cycle in order.
+    if (const size_t j = first_line(ls_, "t", 4); j != 0) {
+      w = words_of(ls_[j]);
+      std::swap(w[1], w[2]);
+      m = ls_;
+      m[j] = line_of(w);
+      rejected(m, "theory literals swapped", "line " + std::to_string(j + 1) + ": the negated bounds are no cycle");
+    }
     const size_t a = first_line(ls_, "a", 6);
     if (a == 0) return;
     w = words_of(ls_[a]);

@@ -64,7 +64,7 @@ const char* const kGenInstancesDescription =
     "random LSAT<=3, or given) goes through to-lsat and the gadget compiler. Labels are certified:\n"
     "YES with a witness schedule (CaDiCaL's model lifted, accepted by the exact simulator, saved\n"
     "as NAME.schedule for 'gridlock check --order-file'), NO by CaDiCaL's UNSAT of the source\n"
-    "and, in the discrete model, by a NO certificate (NAME.nocert, for 'gridlock certify').\n"
+    "and by a NO certificate (NAME.nocert, for 'gridlock certify [--model continuous]').\n"
     "manifest.json lists every instance with its answer, certificate, sizes and seed; it is\n"
     "written last. Every file is written atomically. On a terminal a progress line shows the\n"
     "count and the formula in progress. SIGINT/SIGTERM stop between formulas: the finished\n"
@@ -72,7 +72,7 @@ const char* const kGenInstancesDescription =
     "--model continuous: instances of Continuous Collision-free Schedule (compile --model\n"
     "continuous); YES certified by start times (NAME.times, for 'gridlock check --times'),\n"
     "NO also proved by the exact continuous solver within 60 s (manifest field\n"
-    "solver_check; continuous NO certificates do not exist yet).";
+    "solver_check) with its NO certificate (kind bounds, docs/certificates.md).";
 
 InstanceSetPlan read_plan(const po::variables_map& vm, std::string& model_name) {
   InstanceSetPlan plan;

@@ -163,16 +163,21 @@ class SetMaker {
     ev_.write(e.no_certificate_file, cs.certificate);
   }
 
-  // A continuous NO has no certificate format yet (docs/certificates.md),
-  // so the exact continuous solver must prove the label too, within
-  // plan_.solve_seconds; e.solver_check says whether it did.
+  // The exact continuous solver must prove the label too, within
+  // plan_.solve_seconds (e.solver_check says whether it did), and its NO
+  // certificate, checked by the independent checker, becomes NAME.nocert.
   void confirm_continuous_no(const Instance& inst, SetInstance& e) {
     SolveOptions opt;
     opt.seconds = plan_.solve_seconds;
-    const ContinuousResult r = solve_continuous(inst, opt);
-    if (r.status == Verdict::Yes)
+    const CertifiedContinuous cc = solve_continuous_certified(inst, opt);
+    if (cc.result.status == Verdict::Yes)
       throw std::logic_error(e.name + ": the exact continuous solver finds start times for an unsatisfiable formula");
-    e.solver_check = r.status == Verdict::No ? "NO" : "UNKNOWN";
+    e.solver_check = cc.result.status == Verdict::No ? "NO" : "UNKNOWN";
+    if (cc.certificate.empty()) return;
+    const CertifyResult r = certify(inst, cc.certificate, "continuous");
+    if (!r.proved) throw std::logic_error(e.name + ": the continuous NO certificate is rejected: " + r.reason);
+    e.no_certificate_file = e.name + ".nocert";
+    ev_.write(e.no_certificate_file, cc.certificate);
   }
 
   const InstanceSetPlan& plan_;

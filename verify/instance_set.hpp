@@ -73,7 +73,7 @@ struct SetInstance {
   size_t nodes = 0, operations = 0, couplings = 0, max_coupling = 0;
   bool yes = false;
   std::string certificate_file;     // YES: the witness (NAME.schedule or NAME.times); NO: ""
-  std::string no_certificate_file;  // discrete NO: NAME.nocert, checked by certify/; "" if none
+  std::string no_certificate_file;  // NO: NAME.nocert, checked by certify/; "" if none
   std::string solver_check;         // continuous NO: "NO" (the continuous solver proved it) or "UNKNOWN"
 };
 
