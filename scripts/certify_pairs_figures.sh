@@ -7,12 +7,16 @@
 # `solve` (default engine, no certificate), `solve --certificate` and
 # `certify`, certify's exit code, the certificate's kind, and the sizes of
 # the .grid and the certificate. One CSV line per instance.
-#   usage: scripts/certify_pairs_figures.sh GRIDLOCK OUT.csv FILE...
+# MODEL=continuous: the continuous model (solve and certify --model
+# continuous; certificates of kind bounds, docs/certificates.md).
+# reason_lines: clauses with a reason (x lines; i, e, f and t lines).
+#   usage: [MODEL=continuous] scripts/certify_pairs_figures.sh GRIDLOCK OUT.csv FILE...
 set -euo pipefail
 bin=$1; out=$2; shift 2
+model=${MODEL:-discrete}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cpu() { /usr/bin/time -f "%U %S" -o "$work/t" "$@" >/dev/null 2>&1 || true; tail -1 "$work/t" | awk '{print $1 + $2}'; }
-echo "instance,solve_s,solve_cert_s,certify_s,certify_exit,kind,grid_bytes,cert_bytes,x_lines,o_lines,l_lines" > "$out"
+echo "instance,solve_s,solve_cert_s,certify_s,certify_exit,kind,grid_bytes,cert_bytes,reason_lines,o_lines,l_lines" > "$out"
 for f in "$@"; do
   g=$f
   if [[ $f == *.cnf ]]; then
@@ -21,12 +25,12 @@ for f in "$@"; do
     g=$work/i.grid
   fi
   rm -f "$work/c"
-  s=$(cpu "$bin" solve "$g")
-  sc=$(cpu "$bin" solve "$g" --certificate "$work/c")
+  s=$(cpu "$bin" solve "$g" --model "$model")
+  sc=$(cpu "$bin" solve "$g" --model "$model" --certificate "$work/c")
   [[ -f $work/c ]] || touch "$work/c"
-  ch=$(cpu "$bin" certify "$g" "$work/c")
+  ch=$(cpu "$bin" certify "$g" "$work/c" --model "$model")
   rc=$(grep -o 'status [0-9]*' "$work/t" | cut -d' ' -f2); rc=${rc:-0}
-  kind=$(awk '$1=="breaker"||$1=="gaps"||$1=="pairs"{print $1; exit}' "$work/c")
-  echo "$(basename "$f"),$s,$sc,$ch,$rc,${kind:-none},$(stat -c %s "$g"),$(stat -c %s "$work/c"),$(grep -c '^x' "$work/c" || true),$(grep -c '^o' "$work/c" || true),$(grep -c '^l' "$work/c" || true)" >> "$out"
+  kind=$(awk '$1=="breaker"||$1=="gaps"||$1=="pairs"||$1=="bounds"||$1~/^final-/{print $1; exit}' "$work/c")
+  echo "$(basename "$f"),$s,$sc,$ch,$rc,${kind:-none},$(stat -c %s "$g"),$(stat -c %s "$work/c"),$(grep -c '^[xieft] ' "$work/c" || true),$(grep -c '^o' "$work/c" || true),$(grep -c '^l' "$work/c" || true)" >> "$out"
   tail -1 "$out" >&2
 done

@@ -3,10 +3,11 @@
 # bundled formulas (examples/formulas: small SAT and UNSAT ones and SATLIB
 # uf20-91 samples). Prints the table (CaDiCaL vs exact discrete solver vs
 # gap checker, certificates checked: witnesses of every YES, a NO
-# certificate of every discrete NO), one NO certificate through
-# `gridlock certify`, the continuous reduction on the small
+# certificate of every discrete NO), the continuous reduction on the small
 # ones, the uf20 samples and an unsatisfiable random 15-variable formula
-# (CaDiCaL vs the exact continuous solver), then writes pictures of the small
+# (CaDiCaL vs the exact continuous solver, a NO certificate of every
+# continuous NO), one NO certificate of each model through
+# `gridlock certify`, then writes pictures of the small
 # compiled instances and their witness schedules (or a collision) to out/,
 # each with an animation beside it (NAME.html: open it in a browser).
 #   MAIN_JOB_TIMEOUT  seconds the exact solver may spend per formula (default 60)
@@ -26,6 +27,11 @@ build/gridlock cnf to-lsat examples/formulas/unsat-3cnf.cnf -o out/unsat-3cnf.ls
 build/gridlock compile out/unsat-3cnf.lsat.cnf -o out/unsat-3cnf.grid >/dev/null
 build/gridlock solve out/unsat-3cnf.grid --certificate out/unsat-3cnf.nocert | grep -E '^(s|c cert)' || [ $? -eq 20 ]
 build/gridlock certify out/unsat-3cnf.grid out/unsat-3cnf.nocert || [ $? -eq 20 ]
+echo "== the same formula in continuous time: its NO certificate (kind bounds), checked without the solvers"
+build/gridlock compile out/unsat-3cnf.lsat.cnf --model continuous -o out/unsat-3cnf-continuous.grid >/dev/null
+build/gridlock solve out/unsat-3cnf-continuous.grid --model continuous --certificate out/unsat-3cnf-continuous.nocert |
+  grep -E '^(s|c cert)' || [ $? -eq 20 ]
+build/gridlock certify out/unsat-3cnf-continuous.grid out/unsat-3cnf-continuous.nocert --model continuous || [ $? -eq 20 ]
 echo "== a gadget of each kind, and a labelled instance set"
 for kind in variable clause order separation; do
   build/gridlock gadget "$kind" -o "out/gadget-$kind.grid" --svg "out/pictures/gadget-$kind.svg"

@@ -16,7 +16,8 @@ namespace po = boost::program_options;
 
 const char* const kCertifyDescription =
     "Checks a NO certificate (written by 'gridlock solve --certificate C') without the solvers:\n"
-    "the checker re-derives the gap inequalities and displacements from the instance and checks\n"
+    "the checker re-derives the gap inequalities, displacements and region forms from the\n"
+    "instance, checks the reason of every clause (in continuous time with exact rationals) and\n"
     "every lemma by unit propagation (docs/certificates.md). s NO (exit 20) and\n"
     "'c certificate checked' when it proves that no collision-free schedule exists; an error\n"
     "(exit 1) naming the line and what failed when it does not.";
@@ -60,6 +61,9 @@ int run_certify(const std::vector<std::string>& args) {
   if (r.kind == "gaps")
     ans.comment(std::to_string(r.inequalities) + " gap inequalities derived, " + std::to_string(r.axioms) +
                 " closure clauses, " + std::to_string(r.lemmas) + " lemmas checked");
+  if (r.kind == "bounds")
+    ans.comment(std::to_string(r.inequalities) + " clauses checked against the instance, " +
+                std::to_string(r.axioms) + " selector definitions, " + std::to_string(r.lemmas) + " lemmas checked");
   ans.comment("certificate checked");
   ans.data()["kind"] = r.kind;
   ans.data()["model"] = model;

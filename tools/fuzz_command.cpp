@@ -56,7 +56,7 @@ po::options_description fuzz_options() {
       "model", po::value<std::string>()->default_value("discrete"),
       "which reduction to check, as in 'gridlock verify': discrete, continuous or both")(
       "direct", "compile each formula as it is, not its LSAT<=3 form (as in 'gridlock verify')")(
-      "no-certificates", "do not write and check a NO certificate for each discrete NO (docs/certificates.md)")(
+      "no-certificates", "do not write and check a NO certificate for each NO (docs/certificates.md)")(
       "timeout", po::value<std::string>()->default_value("10"), "seconds the exact solver may spend on one formula")(
       "max-states", po::value<std::string>()->default_value("2000000"),
       "search nodes the exact solver may visit per formula")(

@@ -112,7 +112,7 @@ po::options_description verify_options() {
       "direct",
       "compile each formula as it is, not its LSAT<=3 form (couplings may exceed 3 operations; keeps small "
       "formulas small, e.g. for the continuous solver)")(
-      "no-certificates", "do not write and check a NO certificate for each discrete NO (docs/certificates.md)")(
+      "no-certificates", "do not write and check a NO certificate for each NO (docs/certificates.md)")(
       "timeout", po::value<std::string>()->default_value("60"),
       "seconds the exact solver may spend on one formula (then UNKNOWN)")(
       "max-states", po::value<std::string>()->default_value("0"),
