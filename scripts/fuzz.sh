@@ -2,18 +2,23 @@
 # Builds the libFuzzer targets (clang, ASan + UBSan) and runs each for
 # SECONDS seconds (default 60) from its seed corpus. Reproducible: libFuzzer's
 # seed is printed and fixed with SEED=...
+# FUZZ_BUILD_DIR (default build-fuzz) is where the targets are built;
+# FUZZ_NO_BUILD=1 runs the targets already there (tests/fuzz_script.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET=${1:-60}
 SEED=${SEED:-1}
-bash scripts/setup.sh
-CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIDLOCK_FUZZ=ON -DGRIDLOCK_BENCH=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)"
+build=${FUZZ_BUILD_DIR:-build-fuzz}
+if [ "${FUZZ_NO_BUILD:-0}" != 1 ]; then
+  bash scripts/setup.sh
+  CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIDLOCK_FUZZ=ON -DGRIDLOCK_BENCH=OFF >/dev/null
+  cmake --build "$build" -j "$(nproc)"
+fi
 # Fails when it fuzzed nothing: no target built, a target that did not run
 # to its time limit (a crash of the fuzzer itself, a bad flag), or one that
-# executed no input. libFuzzer's own exit code is kept (set -o pipefail).
+# executed no input. libFuzzer's own exit code counts.
 fuzzed=0
-for target in build-fuzz/fuzz/*_fuzz; do
+for target in "$build"/fuzz/*_fuzz; do
   [ -x "$target" ] || continue
   name=$(basename "$target" _fuzz)
   corpus=fuzz/corpus/$name
@@ -40,7 +45,7 @@ for target in build-fuzz/fuzz/*_fuzz; do
   fuzzed=$((fuzzed + 1))
 done
 if [ "$fuzzed" -eq 0 ]; then
-  echo "fuzz: no fuzz target in build-fuzz/fuzz/: nothing was fuzzed" >&2
+  echo "fuzz: no fuzz target in $build/fuzz/: nothing was fuzzed" >&2
   exit 1
 fi
 echo "fuzz: $fuzzed targets fuzzed, no failing input"
