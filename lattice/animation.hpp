@@ -1,5 +1,5 @@
 // Animation: the exact motion of a schedule, in a form a player can show by
-// interpolating linearly between events (tools/animate_page.cpp draws it).
+// interpolating linearly between events (render/animation_page.cpp and render/viewer/viewer.js draw it).
 //
 // Between two consecutive events (starts and ends of couplings) every
 // coupling's progress is linear in time, so every face moves linearly

@@ -1,14 +1,14 @@
 // gridlock.Instance, random instances, the simulator and the animation page
-// (lattice/, tools/animate_page.hpp).
+// (lattice/, render/).
 #include <sstream>
 
 #include "common/atomic_file.hpp"
 #include "lattice/animation.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
-#include "lattice/render.hpp"
 #include "python/bindings.hpp"
-#include "tools/animate_page.hpp"
+#include "render/animation_page.hpp"
+#include "render/picture.hpp"
 
 namespace gridlock::python {
 namespace {

@@ -10,6 +10,9 @@
 # clang-tidy needs a compile database: it uses BUILD_DIR (default build/),
 # configuring it if needed. Headers are checked through the .cpp files that
 # include them (HeaderFilterRegex in .clang-tidy).
+# JavaScript files (the viewer, render/viewer/*.js; every tracked one when
+# no file is given) are parsed with node --check (Debian's nodejs, no npm),
+# with the format check (not under --tidy-only).
 # scripts/test.sh runs both as CI gates.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,8 +36,26 @@ else
   mapfile -t files < <(find . \( -path './build*' -o -path './out' -o -path './.git' -o -path './tests/data' \) -prune \
     -o \( -name '*.cpp' -o -name '*.hpp' \) -type f -print | sed 's#^\./##' | sort)
 fi
+# The viewer's scripts: given ones, or every tracked one when none is given.
+if [ $# -gt 0 ]; then
+  mapfile -t scripts < <(printf '%s\n' "${files[@]}" | grep '\.js$' || true)
+  mapfile -t files < <(printf '%s\n' "${files[@]}" | grep -v '\.js$' || true)
+elif git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  mapfile -t scripts < <(git ls-files '*.js')
+else
+  mapfile -t scripts < <(find render -name '*.js' -type f | sort)
+fi
 status=0
-if [ $format -eq 1 ]; then
+if [ $format -eq 1 ] && [ ${#scripts[@]} -gt 0 ]; then
+  if command -v node >/dev/null; then
+    echo "== node --check (${#scripts[@]} scripts)"
+    for js in "${scripts[@]}"; do node --check "$js" || status=1; done
+  else
+    echo "lint.sh: node is not installed (scripts/setup.sh): JavaScript not checked" >&2
+    status=1
+  fi
+fi
+if [ $format -eq 1 ] && [ ${#files[@]} -gt 0 ]; then
   echo "== clang-format (${#files[@]} files)"
   clang-format --dry-run -Werror "${files[@]}" || status=1
 fi

@@ -16,6 +16,7 @@ PACKAGES=(
   libz3-dev z3                              # exact linear real arithmetic: continuous solver, twins
   libssl-dev                                # SHA-256 of inputs (run identity of shards and sets)
   chromium                                  # headless browser for the viewer's page tests
+  nodejs                                    # node --check: the viewer's JavaScript (scripts/lint.sh, ctest)
   clang-format clang-tidy                   # scripts/lint.sh
   parallel                                  # GNU parallel: the sharded-campaign recipe test
   pybind11-dev python3-pybind11 python3-dev # the Python module (python/, docs/python.md)

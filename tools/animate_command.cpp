@@ -1,5 +1,5 @@
 // gridlock animate: a self-contained HTML page that plays a schedule
-// (tools/animate_page.hpp, lattice/animation.hpp).
+// (render/animation_page.hpp, lattice/animation.hpp).
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -8,7 +8,7 @@
 #include "lattice/animation.hpp"
 #include "lattice/schedule.hpp"
 #include "solver/solve.hpp"
-#include "tools/animate_page.hpp"
+#include "tools/animation_files.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"

@@ -1,9 +1,9 @@
 // gridlock check: run one schedule through the exact simulator.
 #include <sstream>
 
-#include "lattice/render.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
+#include "render/picture.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/output.hpp"

@@ -7,8 +7,8 @@
 
 #include "gadgets/mutation.hpp"
 #include "lattice/grid_format.hpp"
-#include "lattice/render.hpp"
 #include "reductions/compile.hpp"
+#include "render/picture.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/output.hpp"

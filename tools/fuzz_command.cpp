@@ -14,7 +14,7 @@
 
 #include "cnf/dimacs.hpp"
 #include "common/limits.hpp"
-#include "tools/animate_page.hpp"
+#include "tools/animation_files.hpp"
 #include "tools/campaign_cli.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"

@@ -9,7 +9,7 @@
 #include "gadgets/separation_gadget.hpp"
 #include "gadgets/variable_gadget.hpp"
 #include "lattice/grid_format.hpp"
-#include "lattice/render.hpp"
+#include "render/picture.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"

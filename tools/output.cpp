@@ -2,8 +2,8 @@
 
 #include <iostream>
 
-#include "lattice/render.hpp"
 #include "lattice/simulate.hpp"
+#include "render/picture.hpp"
 #include "tools/cli_common.hpp"
 
 namespace gridlock {

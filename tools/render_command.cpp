@@ -1,7 +1,7 @@
 // gridlock render: pictures of an instance (SVG, ASCII, TikZ).
 #include <iostream>
 
-#include "lattice/render.hpp"
+#include "render/picture.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/user_error.hpp"

@@ -14,11 +14,11 @@
 
 #include "cnf/dimacs.hpp"
 #include "common/limits.hpp"
-#include "lattice/render.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
-#include "tools/animate_page.hpp"
+#include "render/picture.hpp"
+#include "tools/animation_files.hpp"
 #include "tools/campaign_cli.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"

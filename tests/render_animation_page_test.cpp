@@ -1,4 +1,5 @@
-// gridlock animate end to end: the page is self-contained, bad input is an
+// The animation page (render/animation_page.hpp) and gridlock animate end to
+// end: the page is self-contained, bad input is an
 // error, and in a real headless Chromium the collision is drawn where the
 // simulator says, with no script error. Skipped (visibly) without chromium.
 #include <gtest/gtest.h>
@@ -15,6 +16,8 @@
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
+#include "render/animation_page.hpp"
+#include "render/viewer/assets.hpp"
 #include "support/cli.hpp"
 #include "verify/verify.hpp"
 
@@ -41,6 +44,28 @@ TEST(AnimateCommand, PageIsSelfContained) {
     EXPECT_EQ(html.compare(pos, 26, "http://www.w3.org/2000/svg"), 0) << html.substr(pos, 40);
     ++pos;
   }
+}
+
+// The page is the viewer's template with its stylesheet, script and data
+// inlined: every mark of the template is gone, the files' text is there
+// whole, and the frame-time harness (render/viewer/bench.js) is not.
+TEST(AnimationPage, InlinesTheViewerFilesAndNoHarness) {
+  Instance inst;
+  ASSERT_FALSE(read_instance_file(kExamples + "model-case2-order-gadget.grid", inst));
+  Schedule s = schedule_from_order({inst.find_coupling("b"), inst.find_coupling("a")});
+  const std::string page = animation_html(inst, s, build_animation(inst, s), "t");
+  for (const char* mark : {"__GRIDLOCK_", "viewer.css", "viewer.js", "<link", "<script src", "id=\"data\"></script>"})
+    EXPECT_EQ(page.find(mark), std::string::npos) << mark;
+  EXPECT_NE(page.find(std::string(viewer::css)), std::string::npos);
+  EXPECT_NE(page.find(std::string(viewer::script)), std::string::npos);
+  EXPECT_NE(page.find("<script type=\"application/json\" id=\"data\">{\""), std::string::npos);
+  const std::string harness = test::read_file(std::string(GRIDLOCK_SOURCE_DIR) + "/render/viewer/bench.js");
+  EXPECT_NE(harness.find("runBench"), std::string::npos);
+  for (const char* bench : {"runBench", "bench="}) EXPECT_EQ(page.find(bench), std::string::npos) << bench;
+  // The embedded text is the repository's file, byte for byte.
+  EXPECT_EQ(std::string(viewer::script),
+            test::read_file(std::string(GRIDLOCK_SOURCE_DIR) + "/render/viewer/viewer.js"));
+  EXPECT_EQ(std::string(viewer::css), test::read_file(std::string(GRIDLOCK_SOURCE_DIR) + "/render/viewer/viewer.css"));
 }
 
 TEST(AnimateCommand, BadInputIsAnError) {
@@ -290,6 +315,39 @@ TEST(AnimateBrowser, HostileNamesKeepThePageWorking) {
                                     : "x&lt;!--&lt;script&gt;'\"&amp;.grid";
     EXPECT_NE(dom.find("<h1 id=\"title\">"), std::string::npos);
     EXPECT_NE(dom.find(shown), std::string::npos) << dom.substr(0, 2000);
+  }
+}
+
+// The frame-time harness works when added to a page (as
+// scripts/viewer_bench.sh adds it), and a shipped page ignores #bench.
+TEST(AnimateBrowser, BenchHarnessOnlyWhereAdded) {
+  const std::string chromium = chromium_path();
+  if (chromium.empty())
+    GTEST_SKIP() << "chromium is not installed (scripts/setup.sh installs it): browser test skipped";
+  std::string dir = test::temp_dir();
+  test::write_file(dir + "/t1", "g1 0\ng2 1/2\n");
+  auto r = run_gridlock(
+      {"animate", kExamples + "model-case1-two-growths.grid", "--times", dir + "/t1", "-o", dir + "/view.html"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json shipped = load_state(chromium, "file://" + dir + "/view.html#bench=20&nostart");
+  ASSERT_TRUE(shipped.is_object());
+  EXPECT_TRUE(shipped["errors"].empty()) << shipped["errors"].dump();
+  EXPECT_FALSE(shipped.contains("bench")) << shipped.dump();
+  std::string page = test::read_file(dir + "/view.html");
+  const size_t end = page.rfind("</body>");
+  ASSERT_NE(end, std::string::npos);
+  page.insert(end, "<script>\n" + test::read_file(std::string(GRIDLOCK_SOURCE_DIR) + "/render/viewer/bench.js") +
+                       "</script>\n");
+  test::write_file(dir + "/bench.html", page);
+  for (const bool full : {false, true}) {
+    nlohmann::json st = load_state(chromium, "file://" + dir + "/bench.html#bench=20" + (full ? "&full" : ""));
+    ASSERT_TRUE(st.is_object());
+    EXPECT_TRUE(st["errors"].empty()) << st["errors"].dump();
+    ASSERT_TRUE(st["bench"].is_object()) << st.dump();
+    EXPECT_EQ(st["bench"]["frames"], 20);
+    EXPECT_EQ(st["bench"]["full"], full);
+    EXPECT_GT(st["bench"]["ms_per_frame"].get<double>(), 0.0);
+    EXPECT_EQ(st["t"], "0");  // back at the start after the frames
   }
 }
 

@@ -1,72 +1,11 @@
-#include "tools/animate_page.hpp"
-
-#include <nlohmann/json.hpp>
-#include <tuple>
-
-#include "lattice/motion.hpp"
-#include "reductions/compile.hpp"
-#include "tools/cli_common.hpp"
-#include "verify/verify.hpp"
-
-namespace gridlock {
-
-namespace {
-
-// The page, around the data. Everything inline; the data goes where
-// __GRIDLOCK_DATA__ stands.
-const char* kPageHead = R"HTML(<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8">
-<title>__GRIDLOCK_TITLE__</title>
-<style>
-html,body{margin:0;height:100%;font:13px/1.35 system-ui,-apple-system,"Segoe UI",Helvetica,Arial,sans-serif;color:#222;background:#fff}
-#app{display:flex;flex-direction:column;height:100%}
-header{padding:6px 10px;border-bottom:1px solid #ddd}
-header h1{font-size:15px;margin:0 0 4px 0;font-weight:600}
-#controls{display:flex;align-items:center;gap:8px;flex-wrap:wrap}
-#controls button{font:inherit;padding:2px 9px;min-width:34px}
-#sliderbox{position:relative;flex:1;min-width:200px}
-#slider{width:100%;margin:0}
-#ctick{position:absolute;top:-3px;width:2px;height:22px;background:#d62728;pointer-events:none}
-#time{font-family:ui-monospace,Menlo,Consolas,monospace;min-width:140px}
-#main{flex:1;display:flex;min-height:0}
-#view{flex:1;min-width:0;background:#fafafa}
-#side{width:250px;border-left:1px solid #ddd;padding:8px;overflow:auto}
-#side h2{font-size:13px;margin:8px 0 4px 0}
-#running div{white-space:nowrap}
-.sw{display:inline-block;width:10px;height:10px;margin-right:5px;vertical-align:-1px}
-#hover{min-height:2.7em;color:#333}
-#collision{color:#a11}
-#state{display:none}
-rect,line{vector-effect:non-scaling-stroke}
-rect.n{fill:#dddddd;stroke:#444;stroke-width:1px}
-rect.z{fill:#aec7e8;stroke:#444;stroke-width:1px}
-rect.op{fill:var(--c);fill-opacity:.35}
-rect.run{stroke:var(--c);stroke-width:3px;fill-opacity:.8}
-rect.hit{stroke:#d62728;stroke-width:3px;fill:#ff9896}
-line.e{stroke:#666;stroke-width:2px}
-#overlap{fill:#d62728;fill-opacity:.6;stroke:#7f0000;stroke-width:2px}
-</style></head><body><div id="app">
-<header><h1 id="title"></h1>
-<div id="controls">
-<button id="prev" title="previous event (left arrow)">&#9664;&#9664;</button>
-<button id="play" title="play / pause (space)">&#9654;</button>
-<button id="next" title="next event (right arrow)">&#9654;&#9654;</button>
-<div id="sliderbox"><input id="slider" type="range" min="0" max="100000" value="0"><div id="ctick" hidden></div></div>
-<span id="time"></span>
-<button id="fit" title="show everything">fit</button>
-<label title="keep the running operations in view"><input id="follow" type="checkbox">follow</label>
-<label>speed <select id="speed"><option>0.25</option><option>0.5</option><option selected>1</option><option>2</option><option>4</option><option>8</option><option>32</option></select> /s</label>
-</div></header>
-<div id="main"><svg id="view" xmlns="http://www.w3.org/2000/svg"><g id="world" transform="scale(1,-1)"></g></svg>
-<div id="side"><div id="hover">hover a node to name it</div>
-<h2>collision</h2><div id="collision"></div>
-<h2>running couplings</h2><div id="running"></div>
-<h2>instance</h2><div id="info"></div></div></div>
-<pre id="state"></pre></div>
-<script type="application/json" id="data">)HTML";
-
-const char* kPageTail = R"HTML(</script>
-<script>
+// The animated schedule viewer (docs/animate.md). render/animation_page.cpp
+// inlines this file into every page `gridlock animate` writes, after the
+// data (<script type="application/json" id="data">, built there). Plain
+// browser JavaScript, no module, no library, no network: the page must work
+// opened from a file. It must not hold an HTML comment opener or a closing
+// script tag, even in a comment or string (the build refuses both: the
+// inlined script element would end there). Syntax is checked by node --check
+// (ctest viewer_js_syntax) and the page by headless Chromium (render_tests).
 'use strict';
 const errors = [];
 window.addEventListener('error', e => { errors.push(String(e.message || e)); try { writeState(); } catch (x) {} });
@@ -290,6 +229,10 @@ function setRect(e, c, minw) {
   e.setAttribute('x', c[0] + (w - ww) / 2); e.setAttribute('y', c[2] + (h - hh) / 2);
   e.setAttribute('width', ww); e.setAttribute('height', hh);
 }
+// A harness added to the page (render/viewer/bench.js, never shipped) sets
+// quiet while it draws many frames and reports through extraState.
+let quiet = false;
+const extraState = {};
 let loadMs = null, drawMs = 0, curInterval = -1, moverParts = [], moverRegions = [];
 function draw() {
   const t0 = performance.now();
@@ -346,7 +289,7 @@ function draw() {
   slider.value = String(Math.round(TSTOP > T0 ? 100000 * (T - T0) / (TSTOP - T0) : 0));
   $('play').innerHTML = playing ? '&#10074;&#10074;' : '&#9654;';
   drawMs = performance.now() - t0;
-  if (!playing && !benching) writeState(ov);
+  if (!playing && !quiet) writeState(ov);
 }
 function boxOf(c) {  // grid box -> CSS pixel box [left, top, right, bottom]
   const m = world.getScreenCTM();
@@ -354,7 +297,8 @@ function boxOf(c) {  // grid box -> CSS pixel box [left, top, right, bottom]
   return [Math.min(p.x, q.x), Math.min(p.y, q.y), Math.max(p.x, q.x), Math.max(p.y, q.y)];
 }
 function writeState(ov) {
-  const s = { t: exact, T: T / D, stop: G.stop, running: runNow.map(q => G.couplings[q]), errors: errors, draw_ms: drawMs, bench: bench, load_ms: loadMs };
+  const s = { t: exact, T: T / D, stop: G.stop, running: runNow.map(q => G.couplings[q]), errors: errors, draw_ms: drawMs, load_ms: loadMs };
+  Object.assign(s, extraState);
   if (G.collision && G.collision.kind === 'node') {
     const a = regionRect(G.collision.a, T), b = regionRect(G.collision.b, T);
     s.a = { label: label(G.collision.a), grid: a, px: boxOf(a) };
@@ -421,29 +365,9 @@ if (G.collision) {
   $('collision').textContent = 'none: the schedule is collision-free';
   $('collision').style.color = '#2a7';
 }
-// #bench=K: K frames of playback, each drawn and laid out; the mean
-// milliseconds per frame (script, style and layout; not paint) go to the state.
-let bench = null, benching = false;
-function runBench(k) {
-  benching = true;
-  const t0 = performance.now();
-  // Playback at speed 1 and 60 frames a second, from 40% of the way on.
-  const from = T0 + (TSTOP - T0) * 0.4;
-  // #bench=K&full: the same with every part and region recomputed each frame
-  // (the baseline without the per-interval lists of movers).
-  const full = /full/.test(location.hash);
-  for (let i = 0; i < k; ++i) {
-    if (full) curInterval = -1;
-    T = Math.min(TSTOP, from + i * D / 60); exact = null; draw(); void document.body.offsetWidth;
-  }
-  benching = false;
-  bench = { full: full, frames: k, ms_per_frame: (performance.now() - t0) / k, parts: parts.length, moving_parts: parts.filter(p => p.moves).length };
-}
 function fromHash() {
-  const b = /[#&]bench=(\d+)/.exec(location.hash);
-  if (b) runBench(Number(b[1]));
   const m = /[#&]t=([^&]+)/.exec(location.hash);
-  if (!m) { if (b) { play(false); setT(T0); } return !!b; }
+  if (!m) return false;
   const v = parseQ(decodeURIComponent(m[1]));
   if (v === null) { errors.push('bad #t=' + m[1]); writeState(); return true; }
   play(false); setT(v, decodeURIComponent(m[1]));
@@ -454,153 +378,3 @@ window.addEventListener('resize', () => { if (!playing) draw(); });
 if (!fromHash()) { setT(T0); if (!/nostart/.test(location.hash)) play(true); }
 loadMs = performance.now();  // from navigation start to a drawn page (script side)
 if (!playing) writeState(lastOv);
-</script></body></html>
-)HTML";
-
-std::string escape_html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else if (c == '\'') out += "&#39;";
-    else out += c;
-  }
-  return out;
-}
-
-// The moving parts: [parent, coupling, then (event, dx, dy) per key frame].
-nlohmann::json parts_json(const Animation& a) {
-  using nlohmann::json;
-  json parts = json::array();
-  for (const auto& p : a.parts) {
-    json row = json::array({p.parent == kNone ? -1 : static_cast<int64_t>(p.parent),
-                            p.coupling == kNone ? -1 : static_cast<int64_t>(p.coupling)});
-    for (size_t j = 0; j < p.key_event.size(); ++j)
-      row.push_back(p.key_event[j]), row.push_back(p.key_disp[j].x), row.push_back(p.key_disp[j].y);
-    parts.push_back(std::move(row));
-  }
-  return parts;
-}
-
-// Regions whose faces follow different nodes or grow: drawn on their own.
-nlohmann::json resizing_json(const Regions& regions) {
-  using nlohmann::json;
-  json resizing = json::array();
-  for (uint32_t r = 0; r < regions.size(); ++r) {
-    const RegionShape& sh = regions.shapes[r];
-    bool rigid = sh.kind == RegionKind::Node && sh.grow_op == kNone;
-    for (int f = 0; f < 4; ++f) rigid = rigid && sh.ref[f] == sh.ref[0];
-    if (rigid) continue;
-    int kind = sh.kind == RegionKind::Node ? 0 : sh.kind == RegionKind::Inserted ? 1 : 2;
-    int64_t op = sh.kind == RegionKind::Node ? -1 : static_cast<int64_t>(sh.id);
-    resizing.push_back(json::array({r, kind, op, sh.base[0], sh.base[1], sh.base[2], sh.base[3], sh.ref[0], sh.ref[1],
-                                    sh.ref[2], sh.ref[3], sh.grow_face, sh.grow_sign}));
-  }
-  return resizing;
-}
-
-// Inside <script>, "</script", and "<!--" followed by "<script", change how
-// the element ends (the HTML parser's script data states): the page would
-// stop working. In JSON, '<', '>' and '&' occur only inside strings, where
-// \u003c, \u003e and \u0026 mean the same: none of them is left in the page.
-std::string script_safe(const std::string& data) {
-  std::string safe;
-  safe.reserve(data.size());
-  for (char c : data) {
-    if (c == '<') safe += "\\u003c";
-    else if (c == '>') safe += "\\u003e";
-    else if (c == '&') safe += "\\u0026";
-    else safe += c;
-  }
-  return safe;
-}
-
-}  // namespace
-
-std::string animation_html(const Instance& inst, const Schedule& s, const Animation& a, const std::string& title) {
-  using nlohmann::json;
-  Regions regions = Regions::build(inst);
-  json d;
-  d["title"] = title;
-  d["model"] = s.discrete() ? "discrete" : "continuous";
-  d["den"] = a.den;
-  d["events"] = a.events;
-  d["start"] = a.start;
-  d["stop"] = a.stop.str();
-  json cells = json::array();
-  for (const Vec2& c : inst.cells()) cells.push_back(c.x), cells.push_back(c.y);
-  d["cells"] = std::move(cells);
-  d["anchor"] = inst.anchor();
-  d["part_of_node"] = a.part_of_node;
-  d["parts"] = parts_json(a);
-  d["resizing"] = resizing_json(regions);
-  json ops = json::array();
-  for (const Operation& op : inst.ops())
-    ops.push_back(json::array(
-        {op.name, static_cast<int>(op.kind), op.u, op.v == kNone ? -1 : static_cast<int64_t>(op.v), op.coupling}));
-  d["ops"] = std::move(ops);
-  json names = json::array(), coupling_ops = json::array(), first_op = json::array();
-  for (const Coupling& q : inst.couplings()) {
-    names.push_back(q.name);
-    first_op.push_back(q.ops.front());
-    std::string list;
-    for (OpId k : q.ops) list += (list.empty() ? "" : " ") + inst.ops()[k].name;
-    coupling_ops.push_back(list);
-  }
-  d["couplings"] = std::move(names);
-  d["coupling_ops"] = std::move(coupling_ops);
-  d["couplings_first_op"] = std::move(first_op);
-  json edges = json::array();
-  for (const Edge& e : inst.edges())
-    if (e.op == kNone) edges.push_back(e.a), edges.push_back(e.b);
-  d["edges"] = std::move(edges);
-  if (a.collision) {
-    const Collision& c = *a.collision;
-    json cj;
-    cj["kind"] = c.kind == Collision::Kind::Node ? "node" : "cycle";
-    cj["time"] = c.time.str();
-    cj["text"] = describe(inst, regions, c);
-    if (c.kind == Collision::Kind::Node) cj["a"] = c.a, cj["b"] = c.b;
-    cj["cycle"] = c.cycle;
-    cj["moving"] = c.moving;
-    d["collision"] = std::move(cj);
-  } else {
-    d["collision"] = nullptr;
-  }
-  const std::string safe = script_safe(d.dump());
-  std::string head = kPageHead;
-  const std::string mark = "__GRIDLOCK_TITLE__";
-  head.replace(head.find(mark), mark.size(), escape_html(title));
-  return head + safe + kPageTail;
-}
-
-Animation write_animation(const std::string& path, const Instance& inst, const Schedule& s, const std::string& title) {
-  Animation a = build_animation(inst, s);
-  cli::write_text_file(path, animation_html(inst, s, a, title));
-  return a;
-}
-
-std::vector<std::string> write_result_animations(const VerifyResult& r, const std::string& dir) {
-  std::vector<std::string> files;
-  const Instance& inst = r.instance();
-  auto one = [&](const std::vector<CouplingId>& order, const std::string& file, const std::string& what) {
-    const std::string path = dir + "/" + file;
-    write_animation(path, inst, schedule_from_order(order), r.name + ": " + what);
-    files.push_back(path);
-  };
-  for (auto [names, file, what] :
-       {std::tuple{&r.sat_schedule, "sat-schedule.html", "CaDiCaL's model lifted"},
-        std::tuple{&r.solver_schedule, "solver-schedule.html", "the exact solver's order"}}) {
-    std::vector<CouplingId> order;
-    if (names->empty() || parse_order(inst, *names, r.name, 0, order)) continue;
-    one(order, file, what);
-  }
-  if (files.empty() && inst.couplings().size() > 0)
-    one(schedule_from_assignment(r.compiled, std::vector<bool>(static_cast<size_t>(r.lsat.num_vars) + 1, false)),
-        "all-false-schedule.html", "the all-false assignment lifted");
-  return files;
-}
-
-}  // namespace gridlock

@@ -18,29 +18,16 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "lattice/animation.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/schedule.hpp"
-#include "tools/user_error.hpp"
 
 namespace gridlock {
 
-// The whole HTML text. O(n + keyframes).
+// The whole HTML text: render/viewer/viewer.html with viewer.css and
+// viewer.js inlined and the data embedded as JSON (made safe inside
+// <script>); the title is shown as text, whatever it holds. O(n + keyframes).
 std::string animation_html(const Instance& inst, const Schedule& s, const Animation& a, const std::string& title);
-
-// Builds the animation (runs the simulator) and writes the page to path
-// (throws UserError if unwritable). Returns the animation for messages.
-Animation write_animation(const std::string& path, const Instance& inst, const Schedule& s, const std::string& title);
-
-struct VerifyResult;
-
-// Animations of a verify/fuzz result's schedules, written into dir: one page
-// per non-empty schedule (sat-schedule.html: CaDiCaL's model lifted;
-// solver-schedule.html: the exact solver's order), or, when both are empty,
-// all-false-schedule.html (the all-false assignment lifted, which collides
-// when the formula is unsatisfiable). Returns the files written.
-std::vector<std::string> write_result_animations(const VerifyResult& r, const std::string& dir);
 
 }  // namespace gridlock

@@ -1,4 +1,4 @@
-#include "lattice/render.hpp"
+#include "render/picture.hpp"
 
 #include <algorithm>
 #include <cmath>
