@@ -24,6 +24,18 @@ struct FuzzItem {
   VerifyResult shrunk;
 };
 
+// An agreeing formula's result is only counted: its formulas, instances,
+// schedules and certificate are freed here, in the worker that made them,
+// rather than by the thread that counts every worker's results.
+void release_instances(VerifyResult& r) {
+  r.source = Formula{};
+  r.lsat = Formula{};
+  r.compiled = CompiledFormula{};
+  r.compiled_continuous = CompiledFormula{};
+  r.certificate = std::string{};
+  r.sat_schedule = r.solver_schedule = r.csat_times = r.csolver_times = std::vector<std::string>{};
+}
+
 // Checks formula i (and shrinks it if it disagrees) with the worker's own
 // Verifier. Nullopt when the campaign's time is up before it starts, or when
 // a stop request may have cut its answers short (then it is not counted).
@@ -37,7 +49,10 @@ std::optional<FuzzItem> check_fuzz_formula(const FuzzCampaign& c, uint64_t i, co
   if (c.seconds > 0) vi.solve_seconds = std::min(c.verify.solve_seconds, std::max(c.seconds - clock.elapsed(), 0.001));
   item.r = verifier.verify(f, "formula " + std::to_string(i), vi);
   if (stop_requested()) return std::nullopt;
-  if (item.r.agree) return item;
+  if (item.r.agree) {
+    release_instances(item.r);
+    return item;
+  }
   FuzzFinding found;
   found.index = i;
   found.shrunk = shrink_disagreement(f, c.verify, &found.shrink);
