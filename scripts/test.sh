@@ -9,7 +9,8 @@
 #     repository;
 #  3. that build installed into a temporary prefix, and examples/api built
 #     against it with find_package(gridlock) and run on two formulas;
-#  4. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/);
+#  4. the suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
+#     then the parallel campaigns' tests under ThreadSanitizer (build-tsan/);
 #  5. every libFuzzer target for a short fixed time.
 # Every build treats warnings as errors (GRIDLOCK_WERROR).
 #   --quick    steps 1 to 3 only
@@ -93,6 +94,13 @@ if [ $quick -eq 0 ]; then
   # Sanitized runs are slower: the randomized comparisons take fewer cases.
   (cd build-asan && GRIDLOCK_TEST_SCALE=0.3 ASAN_OPTIONS=detect_leaks=1 \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j "$(nproc)")
+  echo "== ThreadSanitizer: the parallel campaigns (--jobs), parallel_tests only"
+  # Only the libraries and tests/parallel_*_test.cpp are built (no CLI, no
+  # benchmarks, no Python): a few minutes on CI's 2 cores.
+  cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIDLOCK_TSAN=ON -DGRIDLOCK_BENCH=OFF \
+    -DGRIDLOCK_PYTHON=OFF -DGRIDLOCK_WERROR=ON >/dev/null
+  cmake --build build-tsan -j "$(nproc)" --target parallel_tests
+  GRIDLOCK_TEST_SCALE=0.3 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/parallel_tests
   echo "== fuzzing the readers"
   bash scripts/fuzz.sh 30
 fi

@@ -7,7 +7,9 @@
 
 #include "common/diagnostic.hpp"
 #include "common/limits.hpp"
+#include "common/ordered_pool.hpp"
 #include "tools/cli_common.hpp"
+#include "tools/options.hpp"
 #include "tools/user_error.hpp"
 
 namespace gridlock::cli {
@@ -16,6 +18,16 @@ Shard shard_arg(const boost::program_options::variables_map& vm) {
   Shard s;
   parse_shard(vm["shard"].as<std::string>(), s.k, s.n);
   return s;
+}
+
+void add_jobs_option(boost::program_options::options_description& opts) {
+  opts.add_options()("jobs,j", boost::program_options::value<std::string>(),
+                     "worker threads (default: the cores available); the output is the same for every number");
+}
+
+unsigned jobs_arg(const boost::program_options::variables_map& vm) {
+  if (!vm.count("jobs")) return available_cores();
+  return static_cast<unsigned>(int_arg(vm, "jobs", 1, 1024));
 }
 
 void verify_model_args(const boost::program_options::variables_map& vm, VerifyOptions& opt) {

@@ -1,5 +1,5 @@
 // Command-line plumbing the campaign commands (fuzz, verify, gen-instances)
-// share: --shard, --model/--direct/--break-gadget, the progress line on a
+// share: --shard, --jobs, --model/--direct/--break-gadget, the progress line on a
 // terminal, --json-out, and the "interrupted" note. The campaigns themselves
 // are library code (verify/campaign.hpp, verify/instance_set.hpp).
 #pragma once
@@ -16,6 +16,12 @@ namespace gridlock::cli {
 
 // vm["shard"] ("K/N", 0 <= K < N) or UserError.
 Shard shard_arg(const boost::program_options::variables_map& vm);
+
+// Adds --jobs N (worker threads; default: the cores available) to opts.
+void add_jobs_option(boost::program_options::options_description& opts);
+// vm["jobs"] (1 to 1024), or the cores available (common/ordered_pool.hpp
+// available_cores) when not given; UserError when out of range.
+unsigned jobs_arg(const boost::program_options::variables_map& vm);
 
 // vm["model"], vm["direct"] and vm["break-gadget"] into opt (UserError for
 // an unknown model or mutation).

@@ -65,6 +65,7 @@ po::options_description fuzz_options() {
                                                              "print one JSON object at the end instead of c/s lines")(
       "json-out", po::value<std::string>(),
       "also write that JSON object to this file ('gridlock merge' combines shards)");
+  cli::add_jobs_option(opts);
   return opts;
 }
 
@@ -76,6 +77,8 @@ const char* const kFuzzDescription =
     "is reported. On a terminal a progress line shows the rate and the counts.\n"
     "Exit 0 if no formula disagreed, 1 otherwise. SIGINT/SIGTERM end the campaign after the\n"
     "formula in progress is abandoned: the summary (JSON too) is marked interrupted, exit 130/143.\n"
+    "--jobs N checks N formulas at once on one machine (default: every core), with the same\n"
+    "output, findings and exit code for every N.\n"
     "A campaign over 8 processes:  parallel gridlock fuzz --seed 7 --count 1000000 --shard {}/8 ::: $(seq 0 7)";
 
 // The command line's reading of a campaign.
@@ -121,6 +124,7 @@ FuzzRun read_fuzz_options(const po::variables_map& vm) {
   if (run.index_given && (run.count_given || vm.count("time")))
     throw UserError("--index replays one formula: give no --count or --time with it");
   c.keep_going = vm.count("keep-going") > 0;
+  c.jobs = cli::jobs_arg(vm);
   run.out = vm["out"].as<std::string>();
   return run;
 }
@@ -258,7 +262,9 @@ int run_fuzz(const std::vector<std::string>& args) {
     if (!run.json) std::cout << "c formula " << i << " disagrees: " << r.problem << "; shrinking" << std::endl;
   };
   events.finding = [&](const FuzzFinding& f, const VerifyResult& shrunk) { save_finding(run, f, shrunk); };
-  events.progress = [&](const FuzzTally& t) { progress.show("fuzz: " + status_line(t)); };
+  // The line adds up every worker's formulas (counted in order on this thread).
+  const std::string progress_name = "fuzz (" + std::to_string(run.c.jobs) + " workers): ";
+  events.progress = [&](const FuzzTally& t) { progress.show(progress_name + status_line(t)); };
   const FuzzTally t = run_fuzz_campaign(run.c, events);
   progress.clear();
   const nlohmann::json j = fuzz_json(run, t);

@@ -56,6 +56,7 @@ po::options_description gen_instances_options() {
       "model", po::value<std::string>()->default_value("discrete"),
       "discrete (NAME.grid, NAME.schedule), continuous (the continuous reduction: NAME.grid, NAME.times) or both "
       "(NAME.grid and NAME-continuous.grid)");
+  cli::add_jobs_option(opts);
   return opts;
 }
 
@@ -72,7 +73,9 @@ const char* const kGenInstancesDescription =
     "--model continuous: instances of Continuous Collision-free Schedule (compile --model\n"
     "continuous); YES certified by start times (NAME.times, for 'gridlock check --times'),\n"
     "NO also proved by the exact continuous solver within 60 s (manifest field\n"
-    "solver_check) with its NO certificate (kind bounds, docs/certificates.md).";
+    "solver_check) with its NO certificate (kind bounds, docs/certificates.md).\n"
+    "--jobs N labels N formulas at once (default: every core); the files, the manifest and the\n"
+    "c lines are the same for every N.";
 
 InstanceSetPlan read_plan(const po::variables_map& vm, std::string& model_name) {
   InstanceSetPlan plan;
@@ -84,6 +87,7 @@ InstanceSetPlan read_plan(const po::variables_map& vm, std::string& model_name) 
   plan.want_no = vm.count("no") ? cli::int_arg(vm, "no", 0, 1'000'000) : -1;
   plan.sat_seconds = cli::seconds_arg(vm, "timeout");
   plan.shard = cli::shard_arg(vm);
+  plan.jobs = cli::jobs_arg(vm);
   if (plan.mix() && plan.shard.n > 1)
     throw UserError("--shard cannot be combined with --yes/--no (they draw until counts are met)");
   model_name = vm["model"].as<std::string>();
@@ -220,6 +224,7 @@ int run_gen_instances(const std::vector<std::string>& args) {
               << " couplings" << std::endl;
   };
   const InstanceSetTally t = make_instance_set(plan, events);
+  progress.clear();  // a stop may cut a labelling short, with its progress line still drawn
 
   const nlohmann::json manifest = manifest_json(plan, model_name, t, folder.run);
   events.write(manifest_name, manifest.dump(2) + "\n");  // last: it lists only files already in place

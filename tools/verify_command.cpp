@@ -128,6 +128,7 @@ po::options_description verify_options() {
       "K/N: check only the formulas i (in input order) with i % N == K")(
       "json-out", po::value<std::string>(),
       "also write the JSON object to this file ('gridlock merge' combines shards)");
+  cli::add_jobs_option(opts);
   return opts;
 }
 
@@ -144,7 +145,9 @@ const char* const kVerifyDescription =
     "then a summary. Exit 0 iff everything agrees (UNKNOWN, a limit hit, is no disagreement);\n"
     "exit 1 on any disagreement, with a reproducer written for each.\n"
     "SIGINT/SIGTERM stop after the formula in progress is abandoned: the summary covers the\n"
-    "formulas finished, is marked interrupted, and the exit code is 130/143.";
+    "formulas finished, is marked interrupted, and the exit code is 130/143.\n"
+    "--jobs N checks N formulas at once (default: every core); rows stay in input order and the\n"
+    "output is the same for every N.";
 
 // What the table and the JSON rows show, besides the results.
 struct VerifyView {
@@ -325,6 +328,7 @@ int run_verify(const std::vector<std::string>& args) {
   if (v.pictures) cli::check_writable_folder(*v.pictures);
   const std::vector<std::string> files = expand_inputs(vm["inputs"].as<std::vector<std::string>>());
   c.shard = cli::shard_arg(vm);
+  c.jobs = cli::jobs_arg(vm);
   // Read everything first: a bad file is reported before any work is done.
   std::vector<Formula> formulas;
   formulas.reserve(files.size());

@@ -3,25 +3,72 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <utility>
 
 #include "common/assert.hpp"
 #include "common/limits.hpp"
+#include "common/ordered_pool.hpp"
 
 namespace gridlock {
 
 namespace {
 
-// Checks formula i of a fuzz campaign and counts it; false when the campaign
-// ends here (a stop request, or a disagreement without keep_going).
-// One Verifier serves the whole campaign (its simulator's arrays are kept).
-bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const FuzzEvents& ev, Verifier& verifier,
-              FuzzTally& t) {
+// What a worker finds for one fuzz formula: its verify result and, for a
+// disagreement, the shrunk finding and the shrunk formula's verify result.
+struct FuzzItem {
+  uint64_t index = 0;
+  VerifyResult r;
+  std::optional<FuzzFinding> found;  // none when a stop cut the shrinking short
+  VerifyResult shrunk;
+};
+
+// An agreeing formula's result is only counted: its formulas, instances,
+// schedules and certificate are freed here, in the worker that made them,
+// rather than by the thread that counts every worker's results.
+void release_instances(VerifyResult& r) {
+  r.source = Formula{};
+  r.lsat = Formula{};
+  r.compiled = CompiledFormula{};
+  r.compiled_continuous = CompiledFormula{};
+  r.certificate = std::string{};
+  r.sat_schedule = r.solver_schedule = r.csat_times = r.csolver_times = std::vector<std::string>{};
+}
+
+// Checks formula i (and shrinks it if it disagrees) with the worker's own
+// Verifier. Nullopt when the campaign's time is up before it starts, or when
+// a stop request may have cut its answers short (then it is not counted).
+std::optional<FuzzItem> check_fuzz_formula(const FuzzCampaign& c, uint64_t i, const Deadline& clock,
+                                           Verifier& verifier) {
+  if (c.seconds > 0 && clock.elapsed() >= c.seconds) return std::nullopt;
+  FuzzItem item;
+  item.index = i;
   Formula f = fuzz_formula(c.formulas, i);
   VerifyOptions vi = c.verify;  // the time limit bounds the campaign: the last formula gets what is left
   if (c.seconds > 0) vi.solve_seconds = std::min(c.verify.solve_seconds, std::max(c.seconds - clock.elapsed(), 0.001));
-  VerifyResult r = verifier.verify(f, "formula " + std::to_string(i), vi);
-  if (stop_requested()) return false;  // answers may be cut short: the formula is not counted
+  item.r = verifier.verify(f, "formula " + std::to_string(i), vi);
+  if (stop_requested()) return std::nullopt;
+  if (item.r.agree) {
+    release_instances(item.r);
+    return item;
+  }
+  FuzzFinding found;
+  found.index = i;
+  found.shrunk = shrink_disagreement(f, c.verify, &found.shrink);
+  if (stop_requested()) return item;  // shrinking cut short: no reproducer rather than a wrong one
+  item.shrunk = verifier.verify(found.shrunk, "shrunk formula " + std::to_string(i), c.verify);
+  found.problem = item.shrunk.problem;
+  found.original = std::move(f);
+  item.found = std::move(found);
+  return item;
+}
+
+// Counts a checked formula and reports it; false when the campaign ends
+// here (a disagreement without keep_going, or one whose shrinking a stop cut
+// short).
+bool count_fuzz_formula(const FuzzCampaign& c, FuzzItem& item, const FuzzEvents& ev, FuzzTally& t) {
+  const VerifyResult& r = item.r;
   ++t.formulas;
   t.sat += r.sat == Verdict::Yes;
   t.unsat += r.sat == Verdict::No;
@@ -30,16 +77,10 @@ bool fuzz_one(const FuzzCampaign& c, uint64_t i, const Deadline& clock, const Fu
   t.no_certified += (r.no_certificate == Check::Valid) + (r.cno_certificate == Check::Valid);
   if (r.agree) return true;
   ++t.disagreements;
-  if (ev.disagreement) ev.disagreement(i, r);
-  FuzzFinding found;
-  found.index = i;
-  found.shrunk = shrink_disagreement(f, c.verify, &found.shrink);
-  if (stop_requested()) return false;  // shrinking cut short: no reproducer rather than a wrong one
-  VerifyResult rs = verifier.verify(found.shrunk, "shrunk formula " + std::to_string(i), c.verify);
-  found.problem = rs.problem;
-  found.original = std::move(f);
-  if (ev.finding) ev.finding(found, rs);
-  t.findings.push_back(std::move(found));
+  if (ev.disagreement) ev.disagreement(item.index, r);
+  if (!item.found) return false;
+  if (ev.finding) ev.finding(*item.found, item.shrunk);
+  t.findings.push_back(std::move(*item.found));
   return c.keep_going;
 }
 
@@ -69,14 +110,18 @@ FormulaStatus count(const VerifyResult& r, VerifyTally& t) {
 FuzzTally run_fuzz_campaign(const FuzzCampaign& c, const FuzzEvents& events) {
   const Deadline clock;  // no limit: only its clock is used
   FuzzTally t;
-  Verifier verifier;
-  for (uint64_t i = c.first; i < c.last && !stop_requested(); i += c.step) {
-    if (c.seconds > 0 && clock.elapsed() >= c.seconds) break;
-    if (!fuzz_one(c, i, clock, events, verifier, t)) break;
-    if (i > UINT64_MAX - c.step) break;
-    t.seconds = clock.elapsed();
-    if (events.progress) events.progress(t);
-  }
+  GRIDLOCK_ASSERT(c.step > 0, "a fuzz campaign needs a step");
+  const uint64_t count = c.first < c.last ? (c.last - c.first - 1) / c.step + 1 : 0;
+  std::vector<Verifier> verifiers(std::max(c.jobs, 1u));  // one per worker: its simulator's arrays are kept
+  run_in_order(
+      c.jobs, count,
+      [&](uint64_t k, unsigned w) { return check_fuzz_formula(c, c.first + k * c.step, clock, verifiers[w]); },
+      [&](uint64_t, FuzzItem& item) {
+        if (!count_fuzz_formula(c, item, events, t)) return false;
+        t.seconds = clock.elapsed();
+        if (events.progress) events.progress(t);
+        return true;
+      });
   t.seconds = clock.elapsed();
   t.interrupted = stop_requested();
   return t;
@@ -99,12 +144,18 @@ VerifyTally run_verify_campaign(const std::vector<Formula>& formulas, const std:
                                 const VerifyCampaign& c, const VerifyEvents& events) {
   GRIDLOCK_ASSERT(names.size() == formulas.size(), "run_verify_campaign needs one name per formula");
   VerifyTally t;
-  Verifier verifier;  // one for all formulas: its simulator's arrays are kept
-  for (size_t i = 0; i < formulas.size() && !stop_requested(); ++i) {
-    if (!c.shard.has(i)) continue;
-    if (events.start) events.start(i);
-    VerifyResult r = verifier.verify(formulas[i], names[i], c.verify);
-    if (stop_requested()) break;  // its answers may be cut short: not counted
+  std::vector<size_t> items;  // the shard's formulas, in input order
+  for (size_t i = 0; i < formulas.size(); ++i)
+    if (c.shard.has(i)) items.push_back(i);
+  std::vector<Verifier> verifiers(std::max(c.jobs, 1u));  // one per worker: its simulator's arrays are kept
+  auto check = [&](uint64_t k, unsigned w) -> std::optional<VerifyResult> {
+    const size_t i = items[k];
+    VerifyResult r = verifiers[w].verify(formulas[i], names[i], c.verify);
+    if (stop_requested()) return std::nullopt;  // its answers may be cut short: not counted
+    return r;
+  };
+  auto take = [&](uint64_t k, VerifyResult& r) {
+    const size_t i = items[k];
     const FormulaStatus s = count(r, t);
     if (s == FormulaStatus::Disagree && !c.reproducers.empty()) {
       const std::string dir = c.reproducers + "/" + formula_stem(names[i]);
@@ -116,7 +167,11 @@ VerifyTally run_verify_campaign(const std::vector<Formula>& formulas, const std:
       }
     }
     if (events.result) events.result(i, r, s);
-  }
+    return true;
+  };
+  std::function<void(uint64_t)> before;
+  if (events.start) before = [&](uint64_t k) { events.start(items[k]); };
+  run_in_order(c.jobs, items.size(), check, take, before);
   t.interrupted = stop_requested();
   return t;
 }

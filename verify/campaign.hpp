@@ -8,6 +8,10 @@
 // text, JSON and exit codes. Between items it polls stop_requested()
 // (common/limits.hpp); an item cut short by a stop is not counted, and the
 // tally comes back marked interrupted.
+//
+// Items run on `jobs` worker threads (common/ordered_pool.hpp), each with its
+// own Verifier; every event is called on the calling thread, in item order,
+// so events, tallies and findings are the same for every number of jobs.
 #pragma once
 
 #include <cstdint>
@@ -41,6 +45,7 @@ struct FuzzCampaign {
   double seconds = 0;       // stop after this many seconds (0: no limit); the
                             // last formula's solver gets only what is left
   bool keep_going = false;  // false: stop after the first disagreement
+  unsigned jobs = 1;        // worker threads (formulas checked and shrunk at once)
 };
 
 // A disagreement, shrunk (verify/fuzz.hpp shrink_disagreement).
@@ -91,6 +96,7 @@ struct VerifyCampaign {
   Shard shard;              // formulas i (in input order) with shard.has(i)
   std::string reproducers;  // folder for reproducers (one subfolder per
                             // disagreement, named by formula_stem); "" = none
+  unsigned jobs = 1;        // worker threads (formulas checked at once)
 };
 
 struct VerifyTally {
@@ -108,8 +114,9 @@ struct VerifyTally {
 };
 
 struct VerifyEvents {
-  // Formula i is about to be checked (the command line names it as the
-  // activity in progress, for an out-of-memory report).
+  // Formula i is the next to be counted: the campaign waits for it (the
+  // command line names it as the activity in progress, for an out-of-memory
+  // report).
   std::function<void(size_t i)> start;
   // Formula i checked and counted. For a disagreement with a reproducer
   // folder, r.problem ends with " (reproducer: DIR)", or with

@@ -1,14 +1,20 @@
 #include "verify/instance_set.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "certify/certify.hpp"
 #include "cnf/dimacs.hpp"
 #include "cnf/generate.hpp"
 #include "cnf/sat_solver.hpp"
+#include "common/assert.hpp"
 #include "common/limits.hpp"
+#include "common/ordered_pool.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/to_lsat.hpp"
@@ -66,55 +72,60 @@ std::string certified_witness(const CompiledFormula& c, const std::vector<bool>&
   return text;
 }
 
-class SetMaker {
- public:
-  SetMaker(const InstanceSetPlan& plan, const InstanceSetEvents& events) : plan_(plan), ev_(events) {}
+// One instance of a labelled formula, ready to store: its entry and its
+// files (witness and NO certificate first, the .grid last).
+struct ReadyInstance {
+  SetInstance entry;
+  std::vector<std::pair<std::string, std::string>> files;
+};
 
-  // Labels one formula and stores its instances; false if it is not in the
-  // set (skipped, stopped, or not wanted by want_*).
-  bool label(const SetFormula& s, bool random, uint64_t index) {
-    if (ev_.labelling) ev_.labelling(s.name, tally_);
+// What a worker makes of one formula: CaDiCaL's label and, unless the
+// formula is skipped or surely unwanted, its instances.
+struct LabelledFormula {
+  Verdict status = Verdict::Unknown;
+  std::string name, formula_text;
+  std::vector<ReadyInstance> instances;  // empty when skipped or unwanted
+};
+
+// The labelling of one formula, the workers' part (common/ordered_pool.hpp):
+// pure but for the kept counts, which it only reads as a hint (they grow
+// only, so a formula of an answer already full when the worker looks is
+// unwanted when its turn comes too, and is not compiled).
+class FormulaLabeller {
+ public:
+  FormulaLabeller(const InstanceSetPlan& plan, const std::atomic<int>& yes_kept, const std::atomic<int>& no_kept)
+      : plan_(plan), yes_kept_(yes_kept), no_kept_(no_kept) {}
+
+  // Nullopt when a stop request may have cut the labelling short.
+  std::optional<LabelledFormula> label(const SetFormula& s, bool random, uint64_t index) const {
+    LabelledFormula out;
+    out.name = s.name;
     SatLimits limits;
     limits.seconds = plan_.sat_seconds;
     SatResult sat = solve_sat(s.formula, limits);
-    if (ev_.labelled) ev_.labelled();
-    if (stop_requested()) return false;
-    if (sat.status == Verdict::Unknown) {
-      ++tally_.skipped;
-      if (ev_.skipped) ev_.skipped(s.name);
-      return false;
-    }
+    if (stop_requested()) return std::nullopt;
+    out.status = sat.status;
+    if (sat.status == Verdict::Unknown) return out;
     const bool yes = sat.status == Verdict::Yes;
-    if (random && plan_.mix() &&
-        ((yes && plan_.want_yes >= 0 && tally_.yes >= plan_.want_yes) ||
-         (!yes && plan_.want_no >= 0 && tally_.no >= plan_.want_no)))
-      return false;
+    if (random && plan_.mix() && surely_unwanted(yes)) return out;
     LsatReduction red = reduce_to_lsat(s.formula);
-    ev_.write(s.name + ".cnf", to_dimacs(s.formula));  // the formula before its instances
-    for (ReductionModel model : plan_.models) store(s, red, sat, model, index);
-    (yes ? tally_.yes : tally_.no) += 1;
-    return true;
+    out.formula_text = to_dimacs(s.formula);
+    for (ReductionModel model : plan_.models) out.instances.push_back(make(s, red, sat, model, index));
+    if (stop_requested()) return std::nullopt;
+    return out;
   }
-
-  // Draws the random formulas of a kind (count of them, or with want_*
-  // until the counts are met), whose set indices start at offset.
-  void draw(const std::string& kind, int count, uint64_t offset) {
-    int made = 0;
-    const int limit = plan_.mix() ? 100 * std::max(count, 1) : count;  // attempts
-    for (int j = 0; j < limit && made < count && !stop_requested(); ++j) {
-      const uint64_t jj = static_cast<uint64_t>(j);
-      if (!plan_.shard.has(offset + jj)) continue;
-      made += label(random_set_formula(kind, plan_.seed, plan_.vars, jj), true, offset + jj);
-    }
-  }
-
-  InstanceSetTally& tally() { return tally_; }
 
  private:
-  void store(const SetFormula& s, const LsatReduction& red, const SatResult& sat, ReductionModel model,
-             uint64_t index) {
+  bool surely_unwanted(bool yes) const {
+    return yes ? plan_.want_yes >= 0 && yes_kept_.load(std::memory_order_relaxed) >= plan_.want_yes
+               : plan_.want_no >= 0 && no_kept_.load(std::memory_order_relaxed) >= plan_.want_no;
+  }
+
+  ReadyInstance make(const SetFormula& s, const LsatReduction& red, const SatResult& sat, ReductionModel model,
+                     uint64_t index) const {
     const bool cont = model == ReductionModel::Continuous;
-    SetInstance e;
+    ReadyInstance ready;
+    SetInstance& e = ready.entry;
     e.index = index;
     e.name = s.name + (cont && plan_.models.size() == 2 ? "-continuous" : "");  // both models: a suffix
     e.model = model;
@@ -134,22 +145,22 @@ class SetMaker {
     e.yes = sat.status == Verdict::Yes;
     if (e.yes) {
       e.certificate_file = e.name + (cont ? ".times" : ".schedule");
-      ev_.write(e.certificate_file, certified_witness(c, red.lift_to_target(sat.model), cont, e.name));
+      ready.files.emplace_back(e.certificate_file, certified_witness(c, red.lift_to_target(sat.model), cont, e.name));
     }
-    if (!e.yes && !cont && plan_.no_certificates) write_no_certificate(c.instance, e);
-    if (!e.yes && cont && plan_.no_certificates) confirm_continuous_no(c.instance, e);
+    if (!e.yes && !cont && plan_.no_certificates) write_no_certificate(c.instance, ready);
+    if (!e.yes && cont && plan_.no_certificates) confirm_continuous_no(c.instance, ready);
     std::ostringstream grid;
     write_instance(grid, c.instance,
                    {e.name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
                     std::string("answer: ") + (e.yes ? "YES" : "NO")});
-    ev_.write(e.instance_file, grid.str());
-    tally_.instances.push_back(e);
-    if (ev_.instance) ev_.instance(tally_.instances.back());
+    ready.files.emplace_back(e.instance_file, grid.str());
+    return ready;
   }
 
   // The solver's NO certificate, checked by the independent checker, as
   // NAME.nocert. None if the solver hits plan_.solve_seconds.
-  void write_no_certificate(const Instance& inst, SetInstance& e) {
+  void write_no_certificate(const Instance& inst, ReadyInstance& ready) const {
+    SetInstance& e = ready.entry;
     const PreparedInstance prep(inst);
     SolveOptions opt;
     opt.seconds = plan_.solve_seconds;
@@ -160,13 +171,14 @@ class SetMaker {
     const CertifyResult r = certify(inst, cs.certificate, "discrete");
     if (!r.proved) throw std::logic_error(e.name + ": the NO certificate is rejected: " + r.reason);
     e.no_certificate_file = e.name + ".nocert";
-    ev_.write(e.no_certificate_file, cs.certificate);
+    ready.files.emplace_back(e.no_certificate_file, cs.certificate);
   }
 
   // The exact continuous solver must prove the label too, within
   // plan_.solve_seconds (e.solver_check says whether it did), and its NO
   // certificate, checked by the independent checker, becomes NAME.nocert.
-  void confirm_continuous_no(const Instance& inst, SetInstance& e) {
+  void confirm_continuous_no(const Instance& inst, ReadyInstance& ready) const {
+    SetInstance& e = ready.entry;
     SolveOptions opt;
     opt.seconds = plan_.solve_seconds;
     const CertifiedContinuous cc = solve_continuous_certified(inst, opt);
@@ -177,11 +189,70 @@ class SetMaker {
     const CertifyResult r = certify(inst, cc.certificate, "continuous");
     if (!r.proved) throw std::logic_error(e.name + ": the continuous NO certificate is rejected: " + r.reason);
     e.no_certificate_file = e.name + ".nocert";
-    ev_.write(e.no_certificate_file, cc.certificate);
+    ready.files.emplace_back(e.no_certificate_file, cc.certificate);
+  }
+
+  const InstanceSetPlan& plan_;
+  const std::atomic<int>& yes_kept_;
+  const std::atomic<int>& no_kept_;
+};
+
+// The set being made: formulas labelled on plan.jobs workers, stored (files
+// written, tally counted, events called) on the calling thread in set order.
+class SetMaker {
+ public:
+  SetMaker(const InstanceSetPlan& plan, const InstanceSetEvents& events)
+      : plan_(plan), ev_(events), labeller_(plan, yes_kept_, no_kept_) {}
+
+  // Labels the formulas formula(j) for j in js, in order (name(j): the
+  // formula's name, for the progress line), storing those in the set; with
+  // limit > 0, until that many are stored.
+  template <class Formulas, class Names>
+  void run(const std::vector<uint64_t>& js, Formulas formula, Names name, bool random, uint64_t offset, int limit) {
+    int made = 0;
+    auto work = [&](uint64_t k, unsigned) { return labeller_.label(formula(js[k]), random, offset + js[k]); };
+    auto take = [&](uint64_t, LabelledFormula& l) {
+      made += store(l, random);
+      return limit <= 0 || made < limit;
+    };
+    std::function<void(uint64_t)> before;
+    if (ev_.labelling) before = [&](uint64_t k) { ev_.labelling(name(js[k]), tally_); };
+    run_in_order(plan_.jobs, js.size(), work, take, before);
+  }
+
+  InstanceSetTally& tally() { return tally_; }
+
+ private:
+  // Stores a labelled formula; false if it is not in the set (skipped, or
+  // not wanted by want_*).
+  bool store(const LabelledFormula& l, bool random) {
+    if (ev_.labelled) ev_.labelled();
+    if (l.status == Verdict::Unknown) {
+      ++tally_.skipped;
+      if (ev_.skipped) ev_.skipped(l.name);
+      return false;
+    }
+    const bool yes = l.status == Verdict::Yes;
+    if (random && plan_.mix() &&
+        ((yes && plan_.want_yes >= 0 && tally_.yes >= plan_.want_yes) ||
+         (!yes && plan_.want_no >= 0 && tally_.no >= plan_.want_no)))
+      return false;
+    GRIDLOCK_ASSERT(l.instances.size() == plan_.models.size(), "a wanted formula comes with its instances");
+    ev_.write(l.name + ".cnf", l.formula_text);  // the formula before its instances
+    for (const ReadyInstance& ready : l.instances) {
+      for (const auto& [file, text] : ready.files) ev_.write(file, text);
+      tally_.instances.push_back(ready.entry);
+      if (ev_.instance) ev_.instance(tally_.instances.back());
+    }
+    (yes ? tally_.yes : tally_.no) += 1;
+    (yes ? yes_kept_ : no_kept_).store(yes ? tally_.yes : tally_.no, std::memory_order_relaxed);
+    return true;
   }
 
   const InstanceSetPlan& plan_;
   const InstanceSetEvents& ev_;
+  std::atomic<int> yes_kept_{0}, no_kept_{0};  // tally_'s counts, for the workers' hint
+  FormulaLabeller labeller_;
   InstanceSetTally tally_;
 };
 
@@ -189,10 +260,26 @@ class SetMaker {
 
 InstanceSetTally make_instance_set(const InstanceSetPlan& plan, const InstanceSetEvents& events) {
   SetMaker maker(plan, events);
-  for (size_t i = 0; i < plan.given.size() && !stop_requested(); ++i)
-    if (plan.shard.has(i)) maker.label(plan.given[i], false, i);
-  maker.draw("threshold", plan.threshold, plan.given.size());
-  maker.draw("lsat", plan.lsat, plan.given.size() + static_cast<uint64_t>(plan.threshold));
+  std::vector<uint64_t> given;
+  for (uint64_t i = 0; i < plan.given.size(); ++i)
+    if (plan.shard.has(i)) given.push_back(i);
+  maker.run(
+      given, [&](uint64_t i) -> const SetFormula& { return plan.given[i]; },
+      [&](uint64_t i) { return plan.given[i].name; }, false, 0, 0);
+  // The random formulas of a kind: count of them, or with want_* drawn
+  // until the counts are met (at most 100 * count attempts).
+  auto draw = [&](const std::string& kind, int count, uint64_t offset) {
+    if (count <= 0 || stop_requested()) return;
+    const uint64_t attempts = static_cast<uint64_t>(plan.mix() ? 100 * std::max(count, 1) : count);
+    std::vector<uint64_t> js;
+    for (uint64_t j = 0; j < attempts; ++j)
+      if (plan.shard.has(offset + j)) js.push_back(j);
+    maker.run(
+        js, [&](uint64_t j) { return random_set_formula(kind, plan.seed, plan.vars, j); },
+        [&](uint64_t j) { return kind + "-" + std::to_string(j + 1); }, true, offset, count);
+  };
+  if (!stop_requested()) draw("threshold", plan.threshold, plan.given.size());
+  draw("lsat", plan.lsat, plan.given.size() + static_cast<uint64_t>(plan.threshold));
   maker.tally().interrupted = stop_requested();
   return maker.tally();
 }

@@ -15,6 +15,10 @@
 // returns the set's records; the command line writes the files atomically
 // and the manifest last. Between formulas it polls stop_requested()
 // (common/limits.hpp): the set is then partial and marked interrupted.
+// Formulas are labelled and compiled on plan.jobs worker threads
+// (common/ordered_pool.hpp); every event, the callback writes included, is
+// called on the calling thread in set order, so files, events and tally
+// are the same for every number of jobs.
 #pragma once
 
 #include <cstddef>
@@ -55,6 +59,7 @@ struct InstanceSetPlan {
   // settle within solve_seconds (0: no limit) gets none (the manifest names none).
   bool no_certificates = true;
   double solve_seconds = 60;
+  unsigned jobs = 1;  // worker threads labelling formulas at once (the set is the same for every count)
   bool mix() const { return want_yes >= 0 || want_no >= 0; }
   // Formulas the plan asks for (without want_*).
   size_t planned() const { return given.size() + static_cast<size_t>(threshold) + static_cast<size_t>(lsat); }
@@ -89,7 +94,8 @@ struct InstanceSetTally {
 };
 
 struct InstanceSetEvents {
-  // A formula is about to be decided (t: the set so far); then decided.
+  // The set waits for this formula's label (t: the set so far); then it
+  // has it (not called when a stop cuts the labelling short).
   std::function<void(const std::string& name, const InstanceSetTally& t)> labelling;
   std::function<void()> labelled;
   // CaDiCaL did not decide this formula in time: not in the set.
