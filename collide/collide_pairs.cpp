@@ -1,6 +1,9 @@
 #include "collide/collide_pairs.hpp"
 
+#include "collide/angle_tree.hpp"
+
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -676,6 +679,8 @@ struct PathNetTracker {
   bool supports = false;
   SupportTable table;
   uint64_t purges = 0;
+  bool angles_on = false;
+  AngleTree angles;  // the non-zero nets sorted by angle (ZonotopeTest::AngleTree)
 
   explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
   void apply(CouplingId q, Vec2 v) {
@@ -683,6 +688,7 @@ struct PathNetTracker {
     reach_x -= std::abs(w.x), reach_y -= std::abs(w.y);
     bool was = !w.is_zero();
     if (supports && was) forget_line(w);
+    if (angles_on) angles.remove(w), angles.add(w + v);
     w += v;
     reach_x += std::abs(w.x), reach_y += std::abs(w.y);
     bool now = !w.is_zero();
@@ -750,9 +756,126 @@ bool continuous_pair_collides_supported(const RegionForm& A, const RegionForm& B
   return projected_feasible(S, N);
 }
 
-bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b, const PathNetTracker& path,
-                         ZonotopeTest ztest) {
+// What the own progresses allow for Delta' (docs/collide.md, "The angle
+// tree"): J = {v in [0,1]^nv : widths > 0, rectangle R(v) non-empty} (an
+// unused variable is pinned to 0). J empty: no overlap. Otherwise the
+// union U of the open boxes R(v) over J is open and convex with
+// cl U = conv{cl R(v) : v a vertex of cl J} (box bounds are affine in v,
+// so R at a convex combination is the Minkowski combination of the R's).
+// Fills the corners of -cl R(v) at the vertices of cl J, scaled by *scale
+// (the lcm of the vertices' denominators) to integers.
+enum class OwnPolygon { Empty, Ready, TooFine };
+
+std::vector<Lin> own_constraints(const PairSystem& S, const Bound& Ux, const Bound& Lx, const Bound& Uy,
+                                 const Bound& Ly) {
+  std::vector<Lin> cons;
+  for (const auto& [U, Lo] : {std::pair{Ux, Lx}, std::pair{Uy, Ly}}) {  // non-empty rectangle
+    Lin L;
+    L.c = U.c - Lo.c, L.a[0] = U.e[0] - Lo.e[0], L.a[1] = U.e[1] - Lo.e[1];
+    cons.push_back(L);
+  }
+  for (int i = 4; i < 8; ++i) {  // widths
+    Lin L;
+    L.c = S.c[i], L.a[0] = S.e[i][0], L.a[1] = S.e[i][1];
+    cons.push_back(L);
+  }
+  for (int j = 0; j < 2; ++j) {  // 0 <= v_j <= 1, or v_j = 0 when unused
+    Lin lo, hi;
+    lo.a[j] = 1, lo.strict = false;
+    hi.a[j] = -1, hi.c = j < S.nv ? 1 : 0, hi.strict = false;
+    cons.push_back(lo), cons.push_back(hi);
+  }
+  return cons;
+}
+
+i128 gcd128(i128 a, i128 b) {
+  if (a < 0) a = -a;
+  if (b < 0) b = -b;
+  while (b != 0) a %= b, std::swap(a, b);
+  return a;
+}
+
+// The vertices (n0/d, n1/d) of cl J: pairs of constraint lines that meet in
+// a point satisfying every constraint (non-strict). O(c^3), c <= 10.
+std::vector<std::array<i128, 3>> closure_vertices(const std::vector<Lin>& cons, int nv) {
+  if (nv == 0) return {{0, 0, 1}};
+  std::vector<std::array<i128, 3>> out;
+  for (size_t i = 0; i < cons.size(); ++i)
+    for (size_t k = i + 1; k < cons.size(); ++k) {
+      const Lin &P = cons[i], &Q = cons[k];
+      i128 det = P.a[0] * Q.a[1] - P.a[1] * Q.a[0];
+      if (det == 0) continue;
+      i128 n0 = -P.c * Q.a[1] + P.a[1] * Q.c, n1 = -P.a[0] * Q.c + P.c * Q.a[0];
+      if (det < 0) det = -det, n0 = -n0, n1 = -n1;
+      bool inside = std::ranges::all_of(cons, [&](const Lin& L) { return L.a[0] * n0 + L.a[1] * n1 + L.c * det >= 0; });
+      if (!inside) continue;
+      i128 g = gcd128(gcd128(n0, n1), det);
+      out.push_back({n0 / g, n1 / g, det / g});
+    }
+  return out;
+}
+
+OwnPolygon own_polygon(const PairSystem& S, int64_t* scale, std::vector<WidePoint>* pts) {
+  Bound Ux, Lx, Uy, Ly;
+  rect_bounds(S, Ux, Lx, Uy, Ly);
+  const std::vector<Lin> cons = own_constraints(S, Ux, Lx, Uy, Ly);
+  if (interval_of(eliminate_v1(cons)).empty) return OwnPolygon::Empty;
+  std::vector<Lin> closed = cons;
+  for (Lin& L : closed) L.strict = false;
+  const auto verts = closure_vertices(closed, S.nv);
+  i128 lcm = 1;
+  for (const auto& v : verts) {
+    lcm = lcm / gcd128(lcm, v[2]) * v[2];
+    if (lcm > (i128{1} << 20)) return OwnPolygon::TooFine;
+  }
+  *scale = static_cast<int64_t>(lcm);
+  pts->clear();
+  for (const auto& v : verts) {
+    const i128 f = lcm / v[2];
+    auto at = [&](const Bound& b) { return b.c * lcm + (b.e[0] * v[0] + b.e[1] * v[1]) * f; };
+    const i128 ux = at(Ux), lx = at(Lx), uy = at(Uy), ly = at(Ly);
+    pts->push_back({-ux, -uy}), pts->push_back({-lx, -uy}), pts->push_back({-lx, -ly}), pts->push_back({-ux, -ly});
+  }
+  return OwnPolygon::Ready;
+}
+
+// The continuous test from the angle tree: the own couplings' nets are
+// taken out of the tree for the query (and put back), the own progresses
+// become the polygon -cl U, and the pair can overlap iff 0 lies in the
+// interior of Z' - cl U = Z' + (-cl U). nullopt: a vertex of cl J with a
+// denominator too large to scale (never seen; the caller decides per pair).
+std::optional<bool> continuous_pair_collides_angles(const RegionForm& A, const RegionForm& B, PathNetTracker& path) {
+  PathNets own;
+  for (CouplingId q : {A.own, B.own})
+    if (q != kNone && !path.net[q].is_zero() && (own.empty() || own.front().first != q))
+      own.push_back({q, path.net[q]});
+  PairSystem S = build_system(A, B, own);
+  int64_t scale = 1;
+  std::vector<WidePoint> pts;
+  OwnPolygon poly = own_polygon(S, &scale, &pts);
+  if (poly == OwnPolygon::Empty) return false;
+  if (poly == OwnPolygon::TooFine) return std::nullopt;
+  for (const auto& [q, w] : own) path.angles.remove(w);
+  bool hit = path.angles.contains_origin(scale, pts);
+  for (const auto& [q, w] : own) path.angles.add(w);
+  return hit;
+}
+
+bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b, PathNetTracker& path,
+                         ZonotopeTest ztest, PairwiseStats& st) {
   if (ztest == ZonotopeTest::PerPair) return continuous_pair_collides(forms[a], forms[b], path.nets());
+  if (ztest == ZonotopeTest::AngleTree || ztest == ZonotopeTest::AngleBoth) {
+    std::optional<bool> tree = continuous_pair_collides_angles(forms[a], forms[b], path);
+    if (!tree) ++st.angle_fallbacks;
+    if (!tree || ztest == ZonotopeTest::AngleBoth) {
+      bool slow = continuous_pair_collides(forms[a], forms[b], path.nets());
+      if (tree && *tree != slow)
+        throw std::logic_error("collide: angle-tree and per-pair zonotope tests disagree on regions " +
+                               std::to_string(a) + ", " + std::to_string(b));
+      return slow;
+    }
+    return *tree;
+  }
   bool fast = continuous_pair_collides_supported(forms[a], forms[b], path);
   if (ztest == ZonotopeTest::Both && fast != continuous_pair_collides(forms[a], forms[b], path.nets()))
     throw std::logic_error("collide: incremental and per-pair zonotope tests disagree on regions " + std::to_string(a) +
@@ -764,12 +887,11 @@ bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint3
 // reach filter, then the exact test of the model, counted in st; on a
 // meeting, the collision with its witness.
 std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b,
-                                       const PathNetTracker& path, TimeModel model, ZonotopeTest ztest,
-                                       PairwiseStats& st) {
+                                       PathNetTracker& path, TimeModel model, ZonotopeTest ztest, PairwiseStats& st) {
   ++st.pairs;
   if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
   ++st.full_tests;
-  bool hit = model == TimeModel::Continuous ? continuous_decision(forms, a, b, path, ztest)
+  bool hit = model == TimeModel::Continuous ? continuous_decision(forms, a, b, path, ztest, st)
                                             : discrete_pair_collides(forms[a], forms[b], path.nets());
   if (!hit) return std::nullopt;
   PairCollision pc;
@@ -792,7 +914,9 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
   for (uint32_t r = 0; r < forms.size(); ++r) regs_of[forms[r].ref].push_back(r);
   const std::vector<std::vector<TreeArc>> adj = tree_adjacency(inst, tree);
   PathNetTracker path(nq);
-  path.supports = model == TimeModel::Continuous && ztest != ZonotopeTest::PerPair;
+  path.supports = model == TimeModel::Continuous && (ztest == ZonotopeTest::Incremental || ztest == ZonotopeTest::Both);
+  path.angles_on = model == TimeModel::Continuous &&
+                   (ztest == ZonotopeTest::AngleTree || ztest == ZonotopeTest::AngleBoth);
   PairwiseStats st;
   std::optional<PairCollision> found;
   auto test = [&](uint32_t a, uint32_t b) {

@@ -80,9 +80,10 @@ bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& 
 enum class TimeModel { Continuous, Discrete };
 
 struct PairwiseStats {
-  uint64_t pairs = 0;        // region pairs considered
-  uint64_t full_tests = 0;   // pairs that passed the quick filter
-  uint64_t line_purges = 0;  // continuous, incremental: times the empty lines were dropped
+  uint64_t pairs = 0;            // region pairs considered
+  uint64_t full_tests = 0;       // pairs that passed the quick filter
+  uint64_t line_purges = 0;      // continuous, incremental: times the empty lines were dropped
+  uint64_t angle_fallbacks = 0;  // continuous, angle tree: pairs decided per pair instead (never seen)
 };
 
 struct PairCollision {
@@ -103,6 +104,16 @@ enum class ZonotopeTest {
   PerPair,
   // Both on every pair; std::logic_error if they ever disagree (the twin).
   Both,
+  // The paper's angle-sorted augmented tree (collide/angle_tree.hpp): the
+  // traversal keeps the path's nets sorted by angle with subtree sums,
+  // O(log m) per step; per pair the own couplings' nets are taken out
+  // (O(log m)), the own progresses are projected out exactly into a
+  // convex polygon Q of O(1) vertices, and "0 in the interior of
+  // Z' - cl U" is one binary search over the vertices of Z' + Q:
+  // O(log^2 m). docs/collide.md, "The angle tree".
+  AngleTree,
+  // AngleTree and PerPair on every pair; std::logic_error on a disagreement.
+  AngleBoth,
 };
 
 // The O(n^2)-pairs method for any instance in which no coupling breaks a
