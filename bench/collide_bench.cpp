@@ -14,6 +14,7 @@
 // the Args below (see docs/performance.md for the commands used).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -72,7 +73,10 @@ void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
 // find_collision's Pairwise step calls it), continuous with the incremental
 // supports or the per-pair rebuild (the method before them), or discrete.
 void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeModel model, ZonotopeTest ztest) {
-  SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(state.range(1)), how);
+  // range(1) == -3: couplings of about n^(1/3) operations, which makes the
+  // distinct net directions on a path (D) largest: about n^(2/3).
+  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0)))) : state.range(1);
+  SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(c), how);
   Instance inst = serpentine_instance(p, 1);
   Simulator sim(inst);
   bool yes = false;
@@ -111,6 +115,12 @@ void BM_SerpentinePerPairMixed(benchmark::State& s) {
 void BM_SerpentinePerPairColumns(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::PerPair);
 }
+void BM_SerpentineAngleTreeMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Continuous, ZonotopeTest::AngleTree);
+}
+void BM_SerpentineAngleTreeColumns(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::AngleTree);
+}
 void BM_SerpentineSubsetSumMixed(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Discrete, ZonotopeTest::Incremental);
 }
@@ -127,10 +137,12 @@ BENCHMARK(BM_ZonotopeAxis)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark
 BENCHMARK(BM_ZonotopeMixed)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumAxis)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumMixed)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SerpentineZonotopeMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineZonotopeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineZonotopeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerPairMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerPairColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3}})->Unit(benchmark::kMillisecond);
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
@@ -168,12 +180,23 @@ void register_large() {
         ->Unit(benchmark::kMillisecond);
   }
   for (int64_t n : {576, 1024, 1600, 2304, 4096}) {
-    for (int64_t c : {3, 0})
+    for (int64_t c : {3, 0, -3})
       benchmark::RegisterBenchmark("BM_SerpentineZonotopeMixed", BM_SerpentineZonotopeMixed)
           ->Args({n, c})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_SerpentineZonotopeColumns", BM_SerpentineZonotopeColumns)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t n : {576, 1024, 1600, 2304, 4096}) {  // the angle tree, same sizes
+    for (int64_t c : {3, 0, -3})
+      benchmark::RegisterBenchmark("BM_SerpentineAngleTreeMixed", BM_SerpentineAngleTreeMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SerpentineAngleTreeColumns", BM_SerpentineAngleTreeColumns)
         ->Args({n, 3})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);

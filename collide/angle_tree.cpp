@@ -15,14 +15,15 @@ i128 cross(WidePoint a, WidePoint b) { return a.x * b.y - a.y * b.x; }
 WidePoint minus(WidePoint a, WidePoint b) { return {a.x - b.x, a.y - b.y}; }
 WidePoint wide(Vec2 v) { return {v.x, v.y}; }
 
-// The convex hull, counter-clockwise, without collinear points, starting at
-// the bottom-left vertex (least y, then least x): its edges then have
-// strictly increasing angles in [0, 2 pi). Andrew's monotone chain.
-std::vector<WidePoint> hull_from_bottom_left(std::vector<WidePoint> p) {
+// The convex hull of p (sorted and deduplicated in place) into h,
+// counter-clockwise, without collinear points, starting at the bottom-left
+// vertex (least y, then least x): its edges then have strictly increasing
+// angles in [0, 2 pi). Andrew's monotone chain.
+void hull_from_bottom_left(std::vector<WidePoint>& p, std::vector<WidePoint>& h) {
   std::sort(p.begin(), p.end(), [](WidePoint a, WidePoint b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return p;
-  std::vector<WidePoint> h(2 * p.size());
+  h.assign(p.size() < 3 ? p.size() : 2 * p.size(), WidePoint{});
+  if (p.size() < 3) return;
   size_t k = 0;
   for (const WidePoint& q : p) {
     while (k >= 2 && cross(minus(h[k - 1], h[k - 2]), minus(q, h[k - 2])) <= 0) --k;
@@ -36,7 +37,6 @@ std::vector<WidePoint> hull_from_bottom_left(std::vector<WidePoint> p) {
   auto first = std::min_element(h.begin(), h.end(),
                                 [](WidePoint a, WidePoint b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
   std::rotate(h.begin(), first, h.end());
-  return h;
 }
 
 }  // namespace
@@ -166,15 +166,17 @@ uint32_t AngleTree::count_not_after(WidePoint f) const {
   return c;
 }
 
-bool AngleTree::contains_origin(int64_t scale, const std::vector<WidePoint>& points) const {
-  const std::vector<WidePoint> q = hull_from_bottom_left(points);
+bool AngleTree::contains_origin(int64_t scale, std::vector<WidePoint>& points) const {
+  std::vector<WidePoint>& q = hull_;
+  hull_from_bottom_left(points, q);
   const size_t r = q.size();
   if (r < 3) throw std::logic_error("AngleTree::contains_origin: the polygon has an empty interior");
   const uint64_t m = directions();
   const Vec2 total = root_ ? nodes_[root_].subtree : Vec2{};
   // Place of Q's edge j in the merged edge sequence of scale * Z + Q (ties:
   // Z's edges first; any order of parallel edges gives the same polygon).
-  std::vector<uint64_t> place(r);
+  std::vector<uint64_t>& place = place_;
+  place.resize(r);
   for (size_t j = 0; j < r; ++j) {
     WidePoint f = minus(q[(j + 1) % r], q[j]);
     uint64_t before = in_upper_half(f.x, f.y) ? count_not_after(f) : m + count_not_after(WidePoint{-f.x, -f.y});

@@ -41,8 +41,9 @@ class AngleTree {
   // else std::logic_error)? Exact. O(r log r + log^2 m) for r points: a
   // binary search over the vertices of the Minkowski sum (the edges of Z
   // and of Q merged by angle), each vertex a prefix sum of the tree.
-  // Requires |scale * coordinates| < 2^60 and |points| < 2^60.
-  bool contains_origin(int64_t scale, const std::vector<WidePoint>& points) const;
+  // Requires |scale * coordinates| < 2^60 and |points| < 2^60. Sorts and
+  // deduplicates `points` in place.
+  bool contains_origin(int64_t scale, std::vector<WidePoint>& points) const;
 
  private:
   struct Node {
@@ -71,6 +72,8 @@ class AngleTree {
   uint32_t root_ = 0;
   Vec2 flipped_;  // N
   uint64_t seed_ = 0x9e3779b97f4a7c15ULL;
+  mutable std::vector<WidePoint> hull_;  // scratch of contains_origin (no allocation per query)
+  mutable std::vector<uint64_t> place_;
 };
 
 }  // namespace gridlock

@@ -680,7 +680,8 @@ struct PathNetTracker {
   SupportTable table;
   uint64_t purges = 0;
   bool angles_on = false;
-  AngleTree angles;  // the non-zero nets sorted by angle (ZonotopeTest::AngleTree)
+  AngleTree angles;                 // the non-zero nets sorted by angle (ZonotopeTest::AngleTree)
+  std::vector<WidePoint> polygon;  // scratch: the own progresses' polygon of the pair being tested
 
   explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
   void apply(CouplingId q, Vec2 v) {
@@ -769,6 +770,7 @@ enum class OwnPolygon { Empty, Ready, TooFine };
 std::vector<Lin> own_constraints(const PairSystem& S, const Bound& Ux, const Bound& Lx, const Bound& Uy,
                                  const Bound& Ly) {
   std::vector<Lin> cons;
+  cons.reserve(10);
   for (const auto& [U, Lo] : {std::pair{Ux, Lx}, std::pair{Uy, Ly}}) {  // non-empty rectangle
     Lin L;
     L.c = U.c - Lo.c, L.a[0] = U.e[0] - Lo.e[0], L.a[1] = U.e[1] - Lo.e[1];
@@ -818,11 +820,18 @@ std::vector<std::array<i128, 3>> closure_vertices(const std::vector<Lin>& cons, 
 OwnPolygon own_polygon(const PairSystem& S, int64_t* scale, std::vector<WidePoint>* pts) {
   Bound Ux, Lx, Uy, Ly;
   rect_bounds(S, Ux, Lx, Uy, Ly);
-  const std::vector<Lin> cons = own_constraints(S, Ux, Lx, Uy, Ly);
-  if (interval_of(eliminate_v1(cons)).empty) return OwnPolygon::Empty;
-  std::vector<Lin> closed = cons;
+  std::vector<Lin> closed = own_constraints(S, Ux, Lx, Uy, Ly);
+  // With at most one own progress v1 is pinned to 0 and interval_of reads v0 alone.
+  if (interval_of(S.nv == 2 ? eliminate_v1(closed) : closed).empty) return OwnPolygon::Empty;
   for (Lin& L : closed) L.strict = false;
-  const auto verts = closure_vertices(closed, S.nv);
+  std::vector<std::array<i128, 3>> verts;
+  if (S.nv == 1) {  // cl J is the segment between the closed interval's ends
+    const Interval iv = interval_of(closed);
+    const i128 glo = gcd128(iv.lo_n, iv.lo_d), ghi = gcd128(iv.hi_n, iv.hi_d);
+    verts = {{iv.lo_n / glo, 0, iv.lo_d / glo}, {iv.hi_n / ghi, 0, iv.hi_d / ghi}};
+  } else {
+    verts = closure_vertices(closed, S.nv);
+  }
   i128 lcm = 1;
   for (const auto& v : verts) {
     lcm = lcm / gcd128(lcm, v[2]) * v[2];
@@ -851,7 +860,7 @@ std::optional<bool> continuous_pair_collides_angles(const RegionForm& A, const R
       own.push_back({q, path.net[q]});
   PairSystem S = build_system(A, B, own);
   int64_t scale = 1;
-  std::vector<WidePoint> pts;
+  std::vector<WidePoint>& pts = path.polygon;
   OwnPolygon poly = own_polygon(S, &scale, &pts);
   if (poly == OwnPolygon::Empty) return false;
   if (poly == OwnPolygon::TooFine) return std::nullopt;

@@ -99,7 +99,8 @@ TEST(AngleTree, RemovingAbsentVectorThrows) {
   AngleTree tree;
   tree.add({1, 2});
   EXPECT_THROW(tree.remove({2, 1}), std::logic_error);
-  EXPECT_THROW(tree.contains_origin(1, {{0, 0}, {1, 1}, {2, 2}}), std::logic_error);
+  std::vector<WidePoint> flat{{0, 0}, {1, 1}, {2, 2}};
+  EXPECT_THROW(tree.contains_origin(1, flat), std::logic_error);
 }
 
 // AngleBoth decides every filtered pair with the angle tree and the
