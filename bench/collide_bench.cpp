@@ -93,6 +93,23 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
   state.counters["full_tests"] = static_cast<double>(st.full_tests);
 }
 
+// One coupling (docs/collide.md, "Single coupling"): the square serpentine
+// with every operation in one coupling (Mixed: connectors and column
+// expansions together), answered by find_collision's single-coupling step,
+// one simulation; NO, so the simulation runs through the whole interval.
+// Contrast: the pairwise zonotope method on the same instance (range(1) = 1).
+void BM_SerpentineSingleCoupling(benchmark::State& state) {
+  SerpentineParams p = square_serpentine(state.range(0), 1u << 30, SerpentineCouplings::Mixed);
+  Instance inst = serpentine_instance(p, 1);
+  const bool pairwise = state.range(1) == 1;
+  CollideResult r;
+  for (auto _ : state) r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
+  if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["couplings"] = static_cast<double>(inst.couplings().size());
+  state.counters["yes"] = r.collides;
+}
+
 void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
 void BM_TreeCentroidComb(benchmark::State& s) { tree_bench(s, "comb", false); }
 void BM_TreeCentroidRandom(benchmark::State& s) { tree_bench(s, "random", false); }
@@ -143,6 +160,8 @@ BENCHMARK(BM_SerpentinePerPairMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Uni
 BENCHMARK(BM_SerpentinePerPairColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3}})->Unit(benchmark::kMillisecond);
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
@@ -221,6 +240,11 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  for (int64_t n : {65536, 262144, 1048576})
+    benchmark::RegisterBenchmark("BM_SerpentineSingleCoupling", BM_SerpentineSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   for (int64_t n : {144, 196, 256})
     benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)
         ->Args({n, 3})
