@@ -141,6 +141,10 @@ void BM_SerpentineAngleTreeColumns(benchmark::State& s) {
 void BM_SerpentineSubsetSumMixed(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Discrete, ZonotopeTest::Incremental);
 }
+// The discrete method before the distinct-vector refinement (the twin).
+void BM_SerpentinePerVectorMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Discrete, ZonotopeTest::PerPair);
+}
 
 #define TREE_SIZES ->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond)
 #define PAIR_SIZES ->RangeMultiplier(2)->Range(1000, 8000)->Unit(benchmark::kMillisecond)
@@ -162,7 +166,8 @@ BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}}
 BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
 // (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
@@ -240,16 +245,23 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
-  for (int64_t n : {65536, 262144, 1048576})
+  for (int64_t n : {32768, 65536, 131072})
     benchmark::RegisterBenchmark("BM_SerpentineSingleCoupling", BM_SerpentineSingleCoupling)
         ->Args({n, 0})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
-  for (int64_t n : {144, 196, 256})
-    benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)
-        ->Args({n, 3})
-        ->Iterations(1)
-        ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {144, 196, 256, 400, 576})
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {144, 196})  // the twin: 66 s at n = 256 with couplings of 3
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_SerpentinePerVectorMixed", BM_SerpentinePerVectorMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

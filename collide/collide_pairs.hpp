@@ -69,9 +69,20 @@ bool pair_may_meet(const RegionForm& A, const RegionForm& B, int64_t reach_x, in
 bool continuous_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets,
                               PairWitness* want = nullptr);
 
-// Discrete model: can A and B overlap in some state 1_S + s e_q?
+// Discrete model: can A and B overlap in some state 1_S + s e_q? The
+// paper's distinct-vector refinement: per running choice (each own
+// coupling, one per distinct vector) the subset sums of the rest in one
+// pass per distinct vector (O(c A)), and only the O(1 + |q|^2) cells the
+// running coupling can bring into the overlap window are tested:
+// O(c^2 A + c (1 + L^2)) per pair for c distinct vectors, grid area A,
+// L operations on the path.
 bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets,
                             PairWitness* want = nullptr);
+
+// The same answer the way it was computed before (the twin): subset sums
+// one vector at a time and every cell of the grid tested, O(c K A) per pair.
+bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B, const PathNets& nets,
+                                       PairWitness* want = nullptr);
 
 // True iff the eight inequalities hold at p (progress of every coupling that
 // appears in A, B or nets; the others are irrelevant). For checking witnesses.
@@ -123,8 +134,9 @@ enum class ZonotopeTest {
 // as above. Returns the first colliding pair found (with its witness; a
 // continuous witness always comes from the per-pair method).
 // deadline (optional) is checked once per source node and every 4096
-// steps of the traversal: LimitReached when it has passed. ztest: see above
-// (ignored in the discrete model).
+// steps of the traversal: LimitReached when it has passed. ztest: see above;
+// in the discrete model PerPair selects discrete_pair_collides_per_vector
+// (the twin), anything else discrete_pair_collides.
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats = nullptr,
                                                 const Deadline* deadline = nullptr,
