@@ -75,7 +75,8 @@ void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
 void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeModel model, ZonotopeTest ztest) {
   // range(1) == -3: couplings of about n^(1/3) operations, which makes the
   // distinct net directions on a path (D) largest: about n^(2/3).
-  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0)))) : state.range(1);
+  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0))))
+                                         : state.range(1);
   SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(c), how);
   Instance inst = serpentine_instance(p, 1);
   Simulator sim(inst);
@@ -103,7 +104,8 @@ void BM_SerpentineSingleCoupling(benchmark::State& state) {
   Instance inst = serpentine_instance(p, 1);
   const bool pairwise = state.range(1) == 1;
   CollideResult r;
-  for (auto _ : state) r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
+  for (auto _ : state)
+    r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
   if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
   state.counters["n"] = static_cast<double>(inst.num_nodes());
   state.counters["couplings"] = static_cast<double>(inst.couplings().size());
@@ -171,6 +173,8 @@ BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Un
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
 // (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
+void register_large_serpentines();
+
 void register_large() {
   for (int64_t n : {300000, 1000000}) {
     benchmark::RegisterBenchmark("BM_TreeCentroidPath", BM_TreeCentroidPath)->Arg(n)->Unit(benchmark::kMillisecond);
@@ -203,6 +207,11 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  register_large_serpentines();
+}
+
+// The serpentines' large sizes (docs/performance.md, issue 25).
+void register_large_serpentines() {
   for (int64_t n : {576, 1024, 1600, 2304, 4096}) {
     for (int64_t c : {3, 0, -3})
       benchmark::RegisterBenchmark("BM_SerpentineZonotopeMixed", BM_SerpentineZonotopeMixed)

@@ -546,7 +546,7 @@ void recover_witness(const PairSystem& S, const RunChoice& ch, const std::vector
 }  // namespace
 
 bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B, const PathNets& nets,
-                                      PairWitness* want) {
+                                       PairWitness* want) {
   PairSystem S = build_system(A, B, nets);
   const std::vector<RunChoice> choices = running_choices(S);
   if (choices.empty()) {  // nothing moves the pair: overlap now or never (never, in a valid instance)
@@ -812,7 +812,7 @@ struct PathNetTracker {
   SupportTable table;
   uint64_t purges = 0;
   bool angles_on = false;
-  AngleTree angles;                 // the non-zero nets sorted by angle (ZonotopeTest::AngleTree)
+  AngleTree angles;                // the non-zero nets sorted by angle (ZonotopeTest::AngleTree)
   std::vector<WidePoint> polygon;  // scratch: the own progresses' polygon of the pair being tested
 
   explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
@@ -1032,7 +1032,7 @@ std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uin
   ++st.pairs;
   if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
   ++st.full_tests;
-  bool hit = model == TimeModel::Continuous ? continuous_decision(forms, a, b, path, ztest, st)
+  bool hit = model == TimeModel::Continuous   ? continuous_decision(forms, a, b, path, ztest, st)
              : ztest == ZonotopeTest::PerPair ? discrete_pair_collides_per_vector(forms[a], forms[b], path.nets())
                                               : discrete_pair_collides(forms[a], forms[b], path.nets());
   if (!hit) return std::nullopt;

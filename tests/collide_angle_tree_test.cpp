@@ -80,6 +80,7 @@ TEST(AngleTree, ContainsOriginAgainstBruteForce) {
     const int64_t scale = 1 + static_cast<int64_t>(rng.below(3));
     std::vector<WidePoint> pts;
     const int np = 3 + static_cast<int>(rng.below(6));
+    pts.reserve(static_cast<size_t>(np));
     for (int k = 0; k < np; ++k)
       pts.push_back({static_cast<i128>(rng.below(25)) - 12, static_cast<i128>(rng.below(25)) - 12});
     bool full = false;  // the polygon needs an interior
