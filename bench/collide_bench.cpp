@@ -112,6 +112,20 @@ void BM_SerpentineSingleCoupling(benchmark::State& state) {
   state.counters["yes"] = r.collides;
 }
 
+// One coupling on the mixed comb (n/4 expansions, spine and teeth, all in
+// one coupling; NO): the second single-coupling family.
+// range(1) = 1: the pairwise zonotope method on the same instance.
+void BM_CombSingleCoupling(benchmark::State& state) {
+  Instance inst = bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7);
+  const bool pairwise = state.range(1) == 1;
+  CollideResult r;
+  for (auto _ : state)
+    r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
+  if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = r.collides;
+}
+
 void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
 void BM_TreeCentroidComb(benchmark::State& s) { tree_bench(s, "comb", false); }
 void BM_TreeCentroidRandom(benchmark::State& s) { tree_bench(s, "random", false); }
@@ -168,6 +182,7 @@ BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}}
 BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 
@@ -254,6 +269,12 @@ void register_large_serpentines() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  for (int64_t n : {16384, 65536})
+    for (int64_t how : {0, 1})
+      benchmark::RegisterBenchmark("BM_CombSingleCoupling", BM_CombSingleCoupling)
+          ->Args({n, how})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
   for (int64_t n : {32768, 65536, 131072})
     benchmark::RegisterBenchmark("BM_SerpentineSingleCoupling", BM_SerpentineSingleCoupling)
         ->Args({n, 0})
