@@ -165,6 +165,20 @@ TEST(CollideAngleTree, AgainstPerPairOnRandomAndSerpentines) {
     ++instances;
     if (::testing::Test::HasFatalFailure()) return;
   }
+  // Larger square serpentines with big couplings (many directions on a
+  // path), expansions only (NO: every pair decided both ways) and with
+  // some contractions.
+  for (uint64_t k = 0; k < 6; ++k) {
+    const uint64_t seed = test::base_seed(75000) + k;
+    SerpentineParams p = square_serpentine(144 + 52 * static_cast<int64_t>(k % 3), k % 2 == 0 ? 0 : 6,
+                                           SerpentineCouplings::Mixed);
+    p.contract_percent = k < 3 ? 0 : 3;
+    Instance inst = serpentine_instance(p, seed);
+    SCOPED_TRACE("square serpentine seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    angle_twin(inst, pairs, yes);
+    ++instances;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
   std::cout << "[collide] angle tree vs per-pair zonotope: " << instances << " instances (" << yes << " YES), " << pairs
             << " pairs decided both ways\n";
   EXPECT_GT(pairs, 10000u);
