@@ -105,7 +105,7 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
     res.complexity = "O(n^2) (couplings of <= 3 operations: <= 6 directions in the support table)";
   } else {
     res.algorithm = "pairwise-subset-sum";
-    res.complexity = "O(n^2 c L^3) for c distinct vectors and L operations per path";
+    res.complexity = "O(n^2 (c^2 A + c L^2)) <= O(n^(16/3)) for c distinct vectors, grid area A, L operations per path";
   }
   if (!pc) return res;
   res.region_a = pc->a, res.region_b = pc->b;

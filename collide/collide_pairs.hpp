@@ -17,11 +17,14 @@
 //    so A and B can collide iff the inequalities are feasible over the cube.
 //    Delta ranges over a zonotope; we eliminate it through the support
 //    function on the normals of zonotope + rectangle and the at most two own
-//    progresses by Fourier-Motzkin. Exact integer arithmetic.
+//    progresses by Fourier-Motzkin, or (ZonotopeTest::AngleTree) project the
+//    own progresses out into a polygon and test one point against the
+//    Minkowski sum with the angle-sorted tree. Exact integer arithmetic.
 //  - Discrete time: p = 1_S + s e_q (the set S done, q running). For each
 //    choice of the running coupling (one per distinct vector) and the states
-//    of the own couplings, a subset-sum table over the other vectors gives
-//    every reachable Delta, and a one-variable test in s settles each.
+//    of the own couplings, a subset-sum table over the other vectors (one
+//    pass per distinct vector) gives every reachable Delta, and a
+//    one-variable test in s settles each cell the running coupling reaches.
 #pragma once
 
 #include <cstdint>
