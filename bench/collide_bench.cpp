@@ -14,6 +14,7 @@
 // the Args below (see docs/performance.md for the commands used).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -72,7 +73,11 @@ void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
 // find_collision's Pairwise step calls it), continuous with the incremental
 // supports or the per-pair rebuild (the method before them), or discrete.
 void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeModel model, ZonotopeTest ztest) {
-  SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(state.range(1)), how);
+  // range(1) == -3: couplings of about n^(1/3) operations, which makes the
+  // distinct net directions on a path (D) largest: about n^(2/3).
+  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0))))
+                                         : state.range(1);
+  SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(c), how);
   Instance inst = serpentine_instance(p, 1);
   Simulator sim(inst);
   bool yes = false;
@@ -87,6 +92,38 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
   state.counters["yes"] = yes;
   state.counters["pairs"] = static_cast<double>(st.pairs);
   state.counters["full_tests"] = static_cast<double>(st.full_tests);
+}
+
+// One coupling (docs/collide.md, "Single coupling"): the square serpentine
+// with every operation in one coupling (Mixed: connectors and column
+// expansions together), answered by find_collision's single-coupling step,
+// one simulation; NO, so the simulation runs through the whole interval.
+// Contrast: the pairwise zonotope method on the same instance (range(1) = 1).
+void BM_SerpentineSingleCoupling(benchmark::State& state) {
+  SerpentineParams p = square_serpentine(state.range(0), 1u << 30, SerpentineCouplings::Mixed);
+  Instance inst = serpentine_instance(p, 1);
+  const bool pairwise = state.range(1) == 1;
+  CollideResult r;
+  for (auto _ : state)
+    r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
+  if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["couplings"] = static_cast<double>(inst.couplings().size());
+  state.counters["yes"] = r.collides;
+}
+
+// One coupling on the mixed comb (n/4 expansions, spine and teeth, all in
+// one coupling; NO): the second single-coupling family.
+// range(1) = 1: the pairwise zonotope method on the same instance.
+void BM_CombSingleCoupling(benchmark::State& state) {
+  Instance inst = bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7);
+  const bool pairwise = state.range(1) == 1;
+  CollideResult r;
+  for (auto _ : state)
+    r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
+  if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = r.collides;
 }
 
 void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
@@ -111,8 +148,18 @@ void BM_SerpentinePerPairMixed(benchmark::State& s) {
 void BM_SerpentinePerPairColumns(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::PerPair);
 }
+void BM_SerpentineAngleTreeMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Continuous, ZonotopeTest::AngleTree);
+}
+void BM_SerpentineAngleTreeColumns(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::AngleTree);
+}
 void BM_SerpentineSubsetSumMixed(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Discrete, ZonotopeTest::Incremental);
+}
+// The discrete method before the distinct-vector refinement (the twin).
+void BM_SerpentinePerVectorMixed(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Discrete, ZonotopeTest::PerPair);
 }
 
 #define TREE_SIZES ->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond)
@@ -127,14 +174,22 @@ BENCHMARK(BM_ZonotopeAxis)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark
 BENCHMARK(BM_ZonotopeMixed)->ArgsProduct({{250, 500, 1000}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumAxis)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SubsetSumMixed)->ArgsProduct({{100, 200, 400}, {3}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SerpentineZonotopeMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineZonotopeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineZonotopeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerPairMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerPairColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
 // (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
+void register_large_serpentines();
+
 void register_large() {
   for (int64_t n : {300000, 1000000}) {
     benchmark::RegisterBenchmark("BM_TreeCentroidPath", BM_TreeCentroidPath)->Arg(n)->Unit(benchmark::kMillisecond);
@@ -167,13 +222,34 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  register_large_serpentines();
+}
+
+// The serpentines' large sizes (docs/performance.md, issue 25).
+void register_large_serpentines() {
   for (int64_t n : {576, 1024, 1600, 2304, 4096}) {
-    for (int64_t c : {3, 0})
+    for (int64_t c : {3, 0, -3})
       benchmark::RegisterBenchmark("BM_SerpentineZonotopeMixed", BM_SerpentineZonotopeMixed)
           ->Args({n, c})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_SerpentineZonotopeColumns", BM_SerpentineZonotopeColumns)
+        ->Args({n, 3})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
+  for (int64_t c : {0, -3})  // the angle tree at n = 6 400: about the 60 s limit
+    benchmark::RegisterBenchmark("BM_SerpentineAngleTreeMixed", BM_SerpentineAngleTreeMixed)
+        ->Args({6400, c})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {576, 1024, 1600, 2304, 4096}) {  // the angle tree, same sizes
+    for (int64_t c : {3, 0, -3})
+      benchmark::RegisterBenchmark("BM_SerpentineAngleTreeMixed", BM_SerpentineAngleTreeMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SerpentineAngleTreeColumns", BM_SerpentineAngleTreeColumns)
         ->Args({n, 3})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
@@ -198,11 +274,29 @@ void register_large() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
-  for (int64_t n : {144, 196, 256})
-    benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)
-        ->Args({n, 3})
+  for (int64_t n : {16384, 65536})
+    for (int64_t how : {0, 1})
+      benchmark::RegisterBenchmark("BM_CombSingleCoupling", BM_CombSingleCoupling)
+          ->Args({n, how})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {32768, 65536, 131072})
+    benchmark::RegisterBenchmark("BM_SerpentineSingleCoupling", BM_SerpentineSingleCoupling)
+        ->Args({n, 0})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {144, 196, 256, 400, 576})
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {144, 196})  // the twin: 66 s at n = 256 with couplings of 3
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_SerpentinePerVectorMixed", BM_SerpentinePerVectorMixed)
+          ->Args({n, c})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

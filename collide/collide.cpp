@@ -86,15 +86,26 @@ Schedule schedule_reaching(size_t nq, const std::vector<std::pair<CouplingId, Ra
 CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res,
                             const Deadline* deadline) {
   PairwiseStats ps;
-  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps, deadline);
+  // Continuous: couplings of at most 3 operations give at most 6 non-axis
+  // directions, so the support table is O(1) per step and pair (proven
+  // O(n^2), and faster by a constant); larger couplings take the paper's
+  // angle tree, O(n^2 log^2 n) (docs/collide.md, "The angle tree").
+  size_t largest = 0;
+  for (const Coupling& c : inst.couplings()) largest = std::max(largest, c.ops.size());
+  const bool angles = model == TimeModel::Continuous && largest > 3;
+  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps, deadline,
+                               angles ? ZonotopeTest::AngleTree : ZonotopeTest::Incremental);
   res.stats.pairs = ps.pairs;
   res.stats.full_tests = ps.full_tests;
-  if (model == TimeModel::Continuous) {
+  if (angles) {
+    res.algorithm = "pairwise-angle-tree";
+    res.complexity = "O(n^2 log^2 n) expected (treap sorted by angle, one fan search per pair)";
+  } else if (model == TimeModel::Continuous) {
     res.algorithm = "pairwise-zonotope";
-    res.complexity = "O(n^2 D + P D^2) for D directions in the support table, P close pairs";
+    res.complexity = "O(n^2) (couplings of <= 3 operations: <= 6 directions in the support table)";
   } else {
     res.algorithm = "pairwise-subset-sum";
-    res.complexity = "O(n^2 c L^3) for c distinct vectors and L operations per path";
+    res.complexity = "O(n^2 (c^2 A + c L^2)) <= O(n^(16/3)) for c distinct vectors, grid area A, L operations per path";
   }
   if (!pc) return res;
   res.region_a = pc->a, res.region_b = pc->b;

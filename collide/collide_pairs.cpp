@@ -1,6 +1,10 @@
 #include "collide/collide_pairs.hpp"
 
+#include "collide/angle_tree.hpp"
+
 #include <algorithm>
+#include <array>
+#include <climits>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -541,7 +545,8 @@ void recover_witness(const PairSystem& S, const RunChoice& ch, const std::vector
 
 }  // namespace
 
-bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets, PairWitness* want) {
+bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B, const PathNets& nets,
+                                       PairWitness* want) {
   PairSystem S = build_system(A, B, nets);
   const std::vector<RunChoice> choices = running_choices(S);
   if (choices.empty()) {  // nothing moves the pair: overlap now or never (never, in a valid instance)
@@ -593,6 +598,136 @@ bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const Path
           if (want) recover_witness(S, ch, rest, rest_idx, val, x, y, want);
           return true;
         }
+    }
+  }
+  return false;
+}
+
+namespace {
+
+// Subset sums of a multiset given as distinct vectors with multiplicities:
+// one pass over the grid per distinct vector (O(c A) for c distinct
+// vectors and grid area A, against O(K A) one vector at a time). A cell is
+// reachable after vector w (m copies) iff one of the m + 1 cells
+// p, p - w, ..., p - m w was reachable before: walked in an order where
+// p - w comes before p, cnt[p] = steps since the last reachable cell on
+// that chain.
+SumGrid grouped_subset_sums(const std::vector<std::pair<Vec2, uint32_t>>& groups, std::vector<int32_t>& cnt) {
+  SumGrid g;
+  int64_t xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+  for (const auto& [w, m] : groups) {
+    (w.x < 0 ? xmin : xmax) += w.x * m;
+    (w.y < 0 ? ymin : ymax) += w.y * m;
+  }
+  g.x0 = xmin, g.y0 = ymin, g.W = xmax - xmin + 1, g.H = ymax - ymin + 1;
+  g.cell.assign(static_cast<size_t>(g.W * g.H), 0);
+  g.at(0, 0) = 1;
+  constexpr int32_t kFar = INT32_MAX / 2;
+  cnt.resize(g.cell.size());
+  for (const auto& [w, m] : groups) {
+    if (m == 0) continue;
+    for (int64_t i = 0; i < g.W; ++i) {
+      const int64_t x = w.x >= 0 ? g.x0 + i : g.x0 + g.W - 1 - i;
+      for (int64_t j = 0; j < g.H; ++j) {
+        const int64_t y = w.y >= 0 ? g.y0 + j : g.y0 + g.H - 1 - j;
+        const auto at = static_cast<size_t>((x - g.x0) * g.H + (y - g.y0));
+        int32_t c = 0;
+        if (g.cell[at] == 0) {
+          const int64_t px = x - w.x, py = y - w.y;
+          const bool in = px >= g.x0 && py >= g.y0 && px < g.x0 + g.W && py < g.y0 + g.H;
+          const int32_t prev = in ? cnt[static_cast<size_t>((px - g.x0) * g.H + (py - g.y0))] : kFar;
+          c = prev >= kFar ? kFar : prev + 1;
+        }
+        cnt[at] = c;
+        g.cell[at] = c <= static_cast<int32_t>(m) ? 1 : 0;
+      }
+    }
+  }
+  return g;
+}
+
+// Does some reachable Delta (a cell of sums) with the running progress s
+// in [0,1] satisfy the eight rows c_i + k_i s + sign_i Delta[axis_i] > 0?
+// Only the cells of the rows' bounding box over s in [0,1] can (Delta.x in
+// (min(-c1, -c1 - k1), max(c0, c0 + k0)), and so for y): O(1 + |k|^2)
+// cells, each an exact one-variable interval test. Returns the cell.
+std::optional<std::pair<int64_t, int64_t>> meeting_cell(const PairSystem& S, const SumGrid& sums, const i128 cst[8],
+                                                        const i128 ks[8], std::vector<Lin>& cs) {
+  const i128 xlo = std::min(-cst[1], -cst[1] - ks[1]), xhi = std::max(cst[0], cst[0] + ks[0]);
+  const i128 ylo = std::min(-cst[3], -cst[3] - ks[3]), yhi = std::max(cst[2], cst[2] + ks[2]);
+  const int64_t x_from = static_cast<int64_t>(std::max<i128>(xlo, sums.x0));
+  const int64_t x_to = static_cast<int64_t>(std::min<i128>(xhi, sums.x0 + sums.W - 1));
+  const int64_t y_from = static_cast<int64_t>(std::max<i128>(ylo, sums.y0));
+  const int64_t y_to = static_cast<int64_t>(std::min<i128>(yhi, sums.y0 + sums.H - 1));
+  for (int64_t x = x_from; x <= x_to; ++x)
+    for (int64_t y = y_from; y <= y_to; ++y) {
+      if (!sums.get(x, y)) continue;
+      cs.clear();
+      for (int i = 0; i < 8; ++i) {
+        Lin L;
+        L.a[0] = ks[i];
+        L.c = cst[i] + (S.axis[i] < 0 ? 0 : S.sign[i] * (S.axis[i] == 0 ? x : y));
+        cs.push_back(L);
+      }
+      Lin lo, hi;
+      lo.a[0] = 1, lo.strict = false;
+      hi.a[0] = -1, hi.c = 1, hi.strict = false;
+      cs.push_back(lo), cs.push_back(hi);
+      if (!interval_of(cs).empty) return std::pair{x, y};
+    }
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets, PairWitness* want) {
+  PairSystem S = build_system(A, B, nets);
+  const std::vector<RunChoice> choices = running_choices(S);
+  if (choices.empty()) {  // nothing moves the pair: overlap now or never (never, in a valid instance)
+    for (int i = 0; i < 8; ++i)
+      if (S.c[i] <= 0) return false;
+    return true;
+  }
+  // The path's vectors as distinct vectors with multiplicities (c groups).
+  std::vector<std::pair<Vec2, uint32_t>> groups;
+  for (const auto& g : S.gens) {
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& e) { return e.first == g.second; });
+    if (it == groups.end()) groups.push_back({g.second, 1});
+    else ++it->second;
+  }
+  std::vector<int32_t> cnt;
+  std::vector<Lin> cs;
+  cs.reserve(10);
+  for (const RunChoice& ch : choices) {
+    // The rest: every vector, minus one copy of the running one.
+    auto rest_groups = groups;
+    if (ch.var < 0)
+      for (auto& e : rest_groups)
+        if (e.first == S.gens[ch.gen].second) --e.second;
+    const SumGrid sums = grouped_subset_sums(rest_groups, cnt);
+    const int free_vars = S.nv - (ch.var >= 0 ? 1 : 0);
+    for (int mask = 0; mask < (1 << free_vars); ++mask) {
+      int64_t val[2] = {0, 0};
+      for (int j = 0, bit = 0; j < S.nv; ++j)
+        if (j != ch.var) val[j] = (mask >> bit++) & 1;
+      i128 cst[8], ks[8];
+      for (int i = 0; i < 8; ++i) {
+        cst[i] = S.c[i];
+        for (int j = 0; j < S.nv; ++j)
+          if (j != ch.var) cst[i] += static_cast<i128>(S.e[i][j]) * val[j];
+        if (ch.var >= 0) ks[i] = S.e[i][ch.var];
+        else ks[i] = S.axis[i] >= 0 ? S.sign[i] * comp(S.gens[ch.gen].second, S.axis[i]) : 0;
+      }
+      const auto cell = meeting_cell(S, sums, cst, ks, cs);
+      if (!cell) continue;
+      if (want) {
+        std::vector<Vec2> rest;
+        std::vector<size_t> rest_idx;
+        for (size_t g = 0; g < S.gens.size(); ++g)
+          if (ch.var >= 0 || g != ch.gen) rest.push_back(S.gens[g].second), rest_idx.push_back(g);
+        recover_witness(S, ch, rest, rest_idx, val, cell->first, cell->second, want);
+      }
+      return true;
     }
   }
   return false;
@@ -676,6 +811,9 @@ struct PathNetTracker {
   bool supports = false;
   SupportTable table;
   uint64_t purges = 0;
+  bool angles_on = false;
+  AngleTree angles;                // the non-zero nets sorted by angle (ZonotopeTest::AngleTree)
+  std::vector<WidePoint> polygon;  // scratch: the own progresses' polygon of the pair being tested
 
   explicit PathNetTracker(size_t nq) : net(nq), pos(nq, kNone) {}
   void apply(CouplingId q, Vec2 v) {
@@ -683,6 +821,7 @@ struct PathNetTracker {
     reach_x -= std::abs(w.x), reach_y -= std::abs(w.y);
     bool was = !w.is_zero();
     if (supports && was) forget_line(w);
+    if (angles_on) angles.remove(w), angles.add(w + v);
     w += v;
     reach_x += std::abs(w.x), reach_y += std::abs(w.y);
     bool now = !w.is_zero();
@@ -750,9 +889,134 @@ bool continuous_pair_collides_supported(const RegionForm& A, const RegionForm& B
   return projected_feasible(S, N);
 }
 
-bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b, const PathNetTracker& path,
-                         ZonotopeTest ztest) {
+// What the own progresses allow for Delta' (docs/collide.md, "The angle
+// tree"): J = {v in [0,1]^nv : widths > 0, rectangle R(v) non-empty} (an
+// unused variable is pinned to 0). J empty: no overlap. Otherwise the
+// union U of the open boxes R(v) over J is open and convex with
+// cl U = conv{cl R(v) : v a vertex of cl J} (box bounds are affine in v,
+// so R at a convex combination is the Minkowski combination of the R's).
+// Fills the corners of -cl R(v) at the vertices of cl J, scaled by *scale
+// (the lcm of the vertices' denominators) to integers.
+enum class OwnPolygon { Empty, Ready, TooFine };
+
+std::vector<Lin> own_constraints(const PairSystem& S, const Bound& Ux, const Bound& Lx, const Bound& Uy,
+                                 const Bound& Ly) {
+  std::vector<Lin> cons;
+  cons.reserve(10);
+  for (const auto& [U, Lo] : {std::pair{Ux, Lx}, std::pair{Uy, Ly}}) {  // non-empty rectangle
+    Lin L;
+    L.c = U.c - Lo.c, L.a[0] = U.e[0] - Lo.e[0], L.a[1] = U.e[1] - Lo.e[1];
+    cons.push_back(L);
+  }
+  for (int i = 4; i < 8; ++i) {  // widths
+    Lin L;
+    L.c = S.c[i], L.a[0] = S.e[i][0], L.a[1] = S.e[i][1];
+    cons.push_back(L);
+  }
+  for (int j = 0; j < 2; ++j) {  // 0 <= v_j <= 1, or v_j = 0 when unused
+    Lin lo, hi;
+    lo.a[j] = 1, lo.strict = false;
+    hi.a[j] = -1, hi.c = j < S.nv ? 1 : 0, hi.strict = false;
+    cons.push_back(lo), cons.push_back(hi);
+  }
+  return cons;
+}
+
+i128 gcd128(i128 a, i128 b) {
+  if (a < 0) a = -a;
+  if (b < 0) b = -b;
+  while (b != 0) a %= b, std::swap(a, b);
+  return a;
+}
+
+// The vertices (n0/d, n1/d) of cl J: pairs of constraint lines that meet in
+// a point satisfying every constraint (non-strict). O(c^3), c <= 10.
+std::vector<std::array<i128, 3>> closure_vertices(const std::vector<Lin>& cons, int nv) {
+  if (nv == 0) return {{0, 0, 1}};
+  std::vector<std::array<i128, 3>> out;
+  for (size_t i = 0; i < cons.size(); ++i)
+    for (size_t k = i + 1; k < cons.size(); ++k) {
+      const Lin &P = cons[i], &Q = cons[k];
+      i128 det = P.a[0] * Q.a[1] - P.a[1] * Q.a[0];
+      if (det == 0) continue;
+      i128 n0 = -P.c * Q.a[1] + P.a[1] * Q.c, n1 = -P.a[0] * Q.c + P.c * Q.a[0];
+      if (det < 0) det = -det, n0 = -n0, n1 = -n1;
+      bool inside = std::ranges::all_of(cons, [&](const Lin& L) { return L.a[0] * n0 + L.a[1] * n1 + L.c * det >= 0; });
+      if (!inside) continue;
+      i128 g = gcd128(gcd128(n0, n1), det);
+      out.push_back({n0 / g, n1 / g, det / g});
+    }
+  return out;
+}
+
+OwnPolygon own_polygon(const PairSystem& S, int64_t* scale, std::vector<WidePoint>* pts) {
+  Bound Ux, Lx, Uy, Ly;
+  rect_bounds(S, Ux, Lx, Uy, Ly);
+  std::vector<Lin> closed = own_constraints(S, Ux, Lx, Uy, Ly);
+  // With at most one own progress v1 is pinned to 0 and interval_of reads v0 alone.
+  if (interval_of(S.nv == 2 ? eliminate_v1(closed) : closed).empty) return OwnPolygon::Empty;
+  for (Lin& L : closed) L.strict = false;
+  std::vector<std::array<i128, 3>> verts;
+  if (S.nv == 1) {  // cl J is the segment between the closed interval's ends
+    const Interval iv = interval_of(closed);
+    const i128 glo = gcd128(iv.lo_n, iv.lo_d), ghi = gcd128(iv.hi_n, iv.hi_d);
+    verts = {{iv.lo_n / glo, 0, iv.lo_d / glo}, {iv.hi_n / ghi, 0, iv.hi_d / ghi}};
+  } else {
+    verts = closure_vertices(closed, S.nv);
+  }
+  i128 lcm = 1;
+  for (const auto& v : verts) {
+    lcm = lcm / gcd128(lcm, v[2]) * v[2];
+    if (lcm > (i128{1} << 20)) return OwnPolygon::TooFine;
+  }
+  *scale = static_cast<int64_t>(lcm);
+  pts->clear();
+  for (const auto& v : verts) {
+    const i128 f = lcm / v[2];
+    auto at = [&](const Bound& b) { return b.c * lcm + (b.e[0] * v[0] + b.e[1] * v[1]) * f; };
+    const i128 ux = at(Ux), lx = at(Lx), uy = at(Uy), ly = at(Ly);
+    pts->push_back({-ux, -uy}), pts->push_back({-lx, -uy}), pts->push_back({-lx, -ly}), pts->push_back({-ux, -ly});
+  }
+  return OwnPolygon::Ready;
+}
+
+// The continuous test from the angle tree: the own couplings' nets are
+// taken out of the tree for the query (and put back), the own progresses
+// become the polygon -cl U, and the pair can overlap iff 0 lies in the
+// interior of Z' - cl U = Z' + (-cl U). nullopt: a vertex of cl J with a
+// denominator too large to scale (never seen; the caller decides per pair).
+std::optional<bool> continuous_pair_collides_angles(const RegionForm& A, const RegionForm& B, PathNetTracker& path) {
+  PathNets own;
+  for (CouplingId q : {A.own, B.own})
+    if (q != kNone && !path.net[q].is_zero() && (own.empty() || own.front().first != q))
+      own.push_back({q, path.net[q]});
+  PairSystem S = build_system(A, B, own);
+  int64_t scale = 1;
+  std::vector<WidePoint>& pts = path.polygon;
+  OwnPolygon poly = own_polygon(S, &scale, &pts);
+  if (poly == OwnPolygon::Empty) return false;
+  if (poly == OwnPolygon::TooFine) return std::nullopt;
+  for (const auto& [q, w] : own) path.angles.remove(w);
+  bool hit = path.angles.contains_origin(scale, pts);
+  for (const auto& [q, w] : own) path.angles.add(w);
+  return hit;
+}
+
+bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b, PathNetTracker& path,
+                         ZonotopeTest ztest, PairwiseStats& st) {
   if (ztest == ZonotopeTest::PerPair) return continuous_pair_collides(forms[a], forms[b], path.nets());
+  if (ztest == ZonotopeTest::AngleTree || ztest == ZonotopeTest::AngleBoth) {
+    std::optional<bool> tree = continuous_pair_collides_angles(forms[a], forms[b], path);
+    if (!tree) ++st.angle_fallbacks;
+    if (!tree || ztest == ZonotopeTest::AngleBoth) {
+      bool slow = continuous_pair_collides(forms[a], forms[b], path.nets());
+      if (tree && *tree != slow)
+        throw std::logic_error("collide: angle-tree and per-pair zonotope tests disagree on regions " +
+                               std::to_string(a) + ", " + std::to_string(b));
+      return slow;
+    }
+    return *tree;
+  }
   bool fast = continuous_pair_collides_supported(forms[a], forms[b], path);
   if (ztest == ZonotopeTest::Both && fast != continuous_pair_collides(forms[a], forms[b], path.nets()))
     throw std::logic_error("collide: incremental and per-pair zonotope tests disagree on regions " + std::to_string(a) +
@@ -764,13 +1028,13 @@ bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint3
 // reach filter, then the exact test of the model, counted in st; on a
 // meeting, the collision with its witness.
 std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b,
-                                       const PathNetTracker& path, TimeModel model, ZonotopeTest ztest,
-                                       PairwiseStats& st) {
+                                       PathNetTracker& path, TimeModel model, ZonotopeTest ztest, PairwiseStats& st) {
   ++st.pairs;
   if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
   ++st.full_tests;
-  bool hit = model == TimeModel::Continuous ? continuous_decision(forms, a, b, path, ztest)
-                                            : discrete_pair_collides(forms[a], forms[b], path.nets());
+  bool hit = model == TimeModel::Continuous   ? continuous_decision(forms, a, b, path, ztest, st)
+             : ztest == ZonotopeTest::PerPair ? discrete_pair_collides_per_vector(forms[a], forms[b], path.nets())
+                                              : discrete_pair_collides(forms[a], forms[b], path.nets());
   if (!hit) return std::nullopt;
   PairCollision pc;
   pc.a = a, pc.b = b;
@@ -792,7 +1056,9 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
   for (uint32_t r = 0; r < forms.size(); ++r) regs_of[forms[r].ref].push_back(r);
   const std::vector<std::vector<TreeArc>> adj = tree_adjacency(inst, tree);
   PathNetTracker path(nq);
-  path.supports = model == TimeModel::Continuous && ztest != ZonotopeTest::PerPair;
+  path.supports = model == TimeModel::Continuous && (ztest == ZonotopeTest::Incremental || ztest == ZonotopeTest::Both);
+  path.angles_on = model == TimeModel::Continuous &&
+                   (ztest == ZonotopeTest::AngleTree || ztest == ZonotopeTest::AngleBoth);
   PairwiseStats st;
   std::optional<PairCollision> found;
   auto test = [&](uint32_t a, uint32_t b) {

@@ -17,11 +17,14 @@
 //    so A and B can collide iff the inequalities are feasible over the cube.
 //    Delta ranges over a zonotope; we eliminate it through the support
 //    function on the normals of zonotope + rectangle and the at most two own
-//    progresses by Fourier-Motzkin. Exact integer arithmetic.
+//    progresses by Fourier-Motzkin, or (ZonotopeTest::AngleTree) project the
+//    own progresses out into a polygon and test one point against the
+//    Minkowski sum with the angle-sorted tree. Exact integer arithmetic.
 //  - Discrete time: p = 1_S + s e_q (the set S done, q running). For each
 //    choice of the running coupling (one per distinct vector) and the states
-//    of the own couplings, a subset-sum table over the other vectors gives
-//    every reachable Delta, and a one-variable test in s settles each.
+//    of the own couplings, a subset-sum table over the other vectors (one
+//    pass per distinct vector) gives every reachable Delta, and a
+//    one-variable test in s settles each cell the running coupling reaches.
 #pragma once
 
 #include <cstdint>
@@ -69,9 +72,20 @@ bool pair_may_meet(const RegionForm& A, const RegionForm& B, int64_t reach_x, in
 bool continuous_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets,
                               PairWitness* want = nullptr);
 
-// Discrete model: can A and B overlap in some state 1_S + s e_q?
+// Discrete model: can A and B overlap in some state 1_S + s e_q? The
+// paper's distinct-vector refinement: per running choice (each own
+// coupling, one per distinct vector) the subset sums of the rest in one
+// pass per distinct vector (O(c A)), and only the O(1 + |q|^2) cells the
+// running coupling can bring into the overlap window are tested:
+// O(c^2 A + c (1 + L^2)) per pair for c distinct vectors, grid area A,
+// L operations on the path.
 bool discrete_pair_collides(const RegionForm& A, const RegionForm& B, const PathNets& nets,
                             PairWitness* want = nullptr);
+
+// The same answer the way it was computed before (the twin): subset sums
+// one vector at a time and every cell of the grid tested, O(c K A) per pair.
+bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B, const PathNets& nets,
+                                       PairWitness* want = nullptr);
 
 // True iff the eight inequalities hold at p (progress of every coupling that
 // appears in A, B or nets; the others are irrelevant). For checking witnesses.
@@ -80,9 +94,10 @@ bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& 
 enum class TimeModel { Continuous, Discrete };
 
 struct PairwiseStats {
-  uint64_t pairs = 0;        // region pairs considered
-  uint64_t full_tests = 0;   // pairs that passed the quick filter
-  uint64_t line_purges = 0;  // continuous, incremental: times the empty lines were dropped
+  uint64_t pairs = 0;            // region pairs considered
+  uint64_t full_tests = 0;       // pairs that passed the quick filter
+  uint64_t line_purges = 0;      // continuous, incremental: times the empty lines were dropped
+  uint64_t angle_fallbacks = 0;  // continuous, angle tree: pairs decided per pair instead (never seen)
 };
 
 struct PairCollision {
@@ -103,6 +118,16 @@ enum class ZonotopeTest {
   PerPair,
   // Both on every pair; std::logic_error if they ever disagree (the twin).
   Both,
+  // The paper's angle-sorted augmented tree (collide/angle_tree.hpp): the
+  // traversal keeps the path's nets sorted by angle with subtree sums,
+  // O(log m) per step; per pair the own couplings' nets are taken out
+  // (O(log m)), the own progresses are projected out exactly into a
+  // convex polygon Q of O(1) vertices, and "0 in the interior of
+  // Z' - cl U" is one binary search over the vertices of Z' + Q:
+  // O(log^2 m). docs/collide.md, "The angle tree".
+  AngleTree,
+  // AngleTree and PerPair on every pair; std::logic_error on a disagreement.
+  AngleBoth,
 };
 
 // The O(n^2)-pairs method for any instance in which no coupling breaks a
@@ -112,8 +137,9 @@ enum class ZonotopeTest {
 // as above. Returns the first colliding pair found (with its witness; a
 // continuous witness always comes from the per-pair method).
 // deadline (optional) is checked once per source node and every 4096
-// steps of the traversal: LimitReached when it has passed. ztest: see above
-// (ignored in the discrete model).
+// steps of the traversal: LimitReached when it has passed. ztest: see above;
+// in the discrete model PerPair selects discrete_pair_collides_per_vector
+// (the twin), anything else discrete_pair_collides.
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats = nullptr,
                                                 const Deadline* deadline = nullptr,

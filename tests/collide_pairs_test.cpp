@@ -3,6 +3,8 @@
 // width change, couplings shared between the path and the own operations).
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include "collide/collide_pairs.hpp"
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
@@ -87,6 +89,50 @@ TEST(CollidePairs, AgainstVertexEnumeration) {
   }
   std::cout << "[collide] pairs: " << cases << " compared, continuous YES " << yes_c << ", discrete YES " << yes_d
             << ", continuous only " << only_c << "\n";
+}
+
+// The distinct-vector refinement (grouped subset sums, only the cells the
+// running coupling can reach) against the per-vector twin, on paths with
+// many equal vectors (up to 14 nets drawn from a few vectors), and its
+// witnesses checked at the moment they name.
+TEST(CollidePairs, GroupedDiscreteAgainstPerVector) {
+  int yes = 0;
+  const int cases = test::scaled(6000);
+  for (int i = 0; i < cases; ++i) {
+    uint64_t seed = test::base_seed(74000) + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    Rng rng(seed * 7727 + 1);
+    size_t nq = 2 + rng.below(14);
+    RegionForm A = random_form(rng, nq), B = random_form(rng, nq);
+    std::vector<Vec2> palette;
+    for (size_t k = 0, m = 1 + rng.below(3); k < m; ++k)
+      palette.push_back({static_cast<int64_t>(rng.below(5)) - 2, static_cast<int64_t>(rng.below(5)) - 2});
+    PathNets nets;
+    for (size_t q = 0; q < nq; ++q) {
+      Vec2 w = palette[rng.below(palette.size())];
+      if (!w.is_zero()) nets.push_back({static_cast<CouplingId>(q), w});
+    }
+    // Shift B so the pair is often within reach.
+    int64_t dx = static_cast<int64_t>(rng.below(7)) - 3, dy = static_cast<int64_t>(rng.below(7)) - 3;
+    B.base[0] += dx, B.base[1] += dx, B.base[2] += dy, B.base[3] += dy;
+    const bool fast = discrete_pair_collides(A, B, nets);
+    ASSERT_EQ(fast, discrete_pair_collides_per_vector(A, B, nets));
+    if (!fast) continue;
+    ++yes;
+    PairWitness w;
+    ASSERT_TRUE(discrete_pair_collides(A, B, nets, &w));
+    std::vector<Rational> p(nq);
+    for (CouplingId q : w.done) p[q] = Rational(1);
+    bool hit = false;
+    for (int k = 0; k <= 64 && !hit; ++k) {
+      if (w.running != kNone) p[w.running] = Rational(k, 64);
+      hit = pair_overlaps_at(A, B, nets, p);
+    }
+    ASSERT_TRUE(hit);
+  }
+  std::cout << "[collide] grouped vs per-vector discrete: " << cases << " pairs, " << yes << " YES\n";
+  EXPECT_GT(yes, cases / 20);
+  EXPECT_LT(yes, cases - cases / 20);
 }
 
 // Node (1,1) pushed by (-2,0) and by (0,-2): only the diagonal, both at

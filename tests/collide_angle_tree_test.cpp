@@ -1,0 +1,189 @@
+// The paper's angle-sorted augmented tree (collide/angle_tree.hpp) against
+// brute force, and the pairwise method with it (ZonotopeTest::AngleTree)
+// against the per-pair rebuild (the twin) on random instances and the
+// adversarial serpentines.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "collide/adversarial.hpp"
+#include "collide/angle_tree.hpp"
+#include "collide/collide_pairs.hpp"
+#include "common/random.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+using i128 = __int128;
+
+i128 cross(WidePoint o, WidePoint a, WidePoint b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+// Brute force: the hull of every subset sum of the vectors (scaled) plus
+// every point; the origin is interior iff it is strictly left of every hull
+// edge (gift wrapping over all candidate points, O(P^2)).
+bool brute_contains_origin(const std::vector<Vec2>& vecs, int64_t scale, const std::vector<WidePoint>& pts) {
+  std::vector<WidePoint> all;
+  for (uint32_t mask = 0; mask < (1u << vecs.size()); ++mask) {
+    i128 x = 0, y = 0;
+    for (size_t i = 0; i < vecs.size(); ++i)
+      if (mask >> i & 1) x += vecs[i].x, y += vecs[i].y;
+    for (const WidePoint& p : pts) all.push_back({scale * x + p.x, scale * y + p.y});
+  }
+  // The origin is interior iff no line through it has every point on one
+  // closed side: for each candidate direction (through the origin and a
+  // point), all points weakly on one side means outside or on the boundary.
+  const WidePoint o{0, 0};
+  bool any_nonzero = false;
+  for (const WidePoint& a : all) {
+    if (a.x == 0 && a.y == 0) continue;
+    any_nonzero = true;
+    bool left = true, right = true;
+    for (const WidePoint& b : all) {
+      i128 c = cross(o, a, b);
+      if (c > 0) right = false;
+      if (c < 0) left = false;
+    }
+    if (left || right) return false;
+  }
+  return any_nonzero;
+}
+
+TEST(AngleTree, ContainsOriginAgainstBruteForce) {
+  const uint64_t seed0 = test::base_seed(71000);
+  int inside = 0, cases = 0;
+  for (int i = 0; i < test::scaled(4000); ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    Rng rng(seed * 7919 + 3);
+    AngleTree tree;
+    std::vector<Vec2> kept;
+    const int steps = 1 + static_cast<int>(rng.below(12));
+    for (int s = 0; s < steps; ++s) {
+      if (!kept.empty() && rng.below(3) == 0) {
+        size_t k = rng.below(kept.size());
+        tree.remove(kept[k]);
+        kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+      } else if (kept.size() < 7) {
+        const int64_t span = rng.below(2) == 0 ? 2 : 5;
+        Vec2 v{static_cast<int64_t>(rng.below(2 * span + 1)) - span,
+               static_cast<int64_t>(rng.below(2 * span + 1)) - span};
+        tree.add(v);
+        kept.push_back(v);
+      }
+    }
+    const int64_t scale = 1 + static_cast<int64_t>(rng.below(3));
+    std::vector<WidePoint> pts;
+    const int np = 3 + static_cast<int>(rng.below(6));
+    pts.reserve(static_cast<size_t>(np));
+    for (int k = 0; k < np; ++k)
+      pts.push_back({static_cast<i128>(rng.below(25)) - 12, static_cast<i128>(rng.below(25)) - 12});
+    bool full = false;  // the polygon needs an interior
+    for (size_t a = 1; a < pts.size() && !full; ++a)
+      for (size_t b = a + 1; b < pts.size() && !full; ++b) full = cross(pts[0], pts[a], pts[b]) != 0;
+    if (!full) continue;
+    const bool fast = tree.contains_origin(scale, pts);
+    ASSERT_EQ(fast, brute_contains_origin(kept, scale, pts));
+    inside += fast, ++cases;
+  }
+  std::cout << "[collide] angle tree vs brute force: " << cases << " cases, " << inside << " inside\n";
+  EXPECT_GT(inside, cases / 10);
+  EXPECT_LT(inside, cases - cases / 10);
+}
+
+TEST(AngleTree, RemovingAbsentVectorThrows) {
+  AngleTree tree;
+  tree.add({1, 2});
+  EXPECT_THROW(tree.remove({2, 1}), std::logic_error);
+  std::vector<WidePoint> flat{{0, 0}, {1, 1}, {2, 2}};
+  EXPECT_THROW(tree.contains_origin(1, flat), std::logic_error);
+}
+
+// AngleBoth decides every filtered pair with the angle tree and the
+// per-pair rebuild and throws on a disagreement; AngleTree alone must find
+// the same first pair as PerPair.
+void angle_twin(const Instance& inst, uint64_t& pairs_compared, uint64_t& yes) {
+  Simulator sim(inst);
+  for (char b : sim.faces().coupling_breaks_cycle)
+    if (b) return;  // the cycle step answers; no pairwise run
+  PairwiseStats st;
+  auto both = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, &st, nullptr,
+                                 ZonotopeTest::AngleBoth);
+  PairwiseStats fst;
+  auto fast = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, &fst, nullptr,
+                                 ZonotopeTest::AngleTree);
+  auto slow = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, nullptr, nullptr,
+                                 ZonotopeTest::PerPair);
+  ASSERT_EQ(fast.has_value(), slow.has_value());
+  ASSERT_EQ(both.has_value(), slow.has_value());
+  EXPECT_EQ(fst.angle_fallbacks, 0u);
+  if (fast) {
+    EXPECT_EQ(fast->a, slow->a);
+    EXPECT_EQ(fast->b, slow->b);
+    ++yes;
+  }
+  pairs_compared += st.full_tests;
+}
+
+TEST(CollideAngleTree, AgainstPerPairOnRandomAndSerpentines) {
+  uint64_t pairs = 0, yes = 0;
+  int instances = 0;
+  for (int i = 0; i < test::scaled(2000); ++i) {
+    const uint64_t seed = test::base_seed(72000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 3571 + 5);
+    RandomInstanceParams p;
+    p.nodes = 4 + static_cast<uint32_t>(rng.below(60));
+    p.ops = 2 + static_cast<uint32_t>(rng.below(p.nodes / 2 + 1));
+    p.max_coupling = 2 + static_cast<uint32_t>(rng.below(6));
+    p.extra_edge_percent = rng.below(4) == 0 ? 30 : 0;
+    p.horizontal_only = rng.below(8) == 0;
+    p.path_shape = rng.below(4) == 0;
+    p.spread = static_cast<uint32_t>(rng.below(3));
+    Instance inst = random_instance(p, seed);
+    SCOPED_TRACE("random instance seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    angle_twin(inst, pairs, yes);
+    ++instances;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  for (int i = 0; i < test::scaled(500); ++i) {
+    const uint64_t seed = test::base_seed(73000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 1223 + 9);
+    SerpentineParams p;
+    p.columns = 2 + static_cast<uint32_t>(rng.below(8));
+    p.height = 3 + static_cast<uint32_t>(rng.below(8));
+    p.coupling_size = static_cast<uint32_t>(rng.below(6));
+    p.couplings = rng.below(2) == 0 ? SerpentineCouplings::Mixed : SerpentineCouplings::Columns;
+    p.contract_percent = rng.below(2) == 0 ? 0 : static_cast<uint32_t>(rng.below(20));
+    Instance inst = serpentine_instance(p, seed);
+    SCOPED_TRACE("serpentine seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    angle_twin(inst, pairs, yes);
+    ++instances;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  // Larger square serpentines with big couplings (many directions on a
+  // path), expansions only (NO: every pair decided both ways) and with
+  // some contractions.
+  for (uint64_t k = 0; k < 6; ++k) {
+    const uint64_t seed = test::base_seed(75000) + k;
+    SerpentineParams p = square_serpentine(144 + 52 * static_cast<int64_t>(k % 3), k % 2 == 0 ? 0 : 6,
+                                           SerpentineCouplings::Mixed);
+    p.contract_percent = k < 3 ? 0 : 3;
+    Instance inst = serpentine_instance(p, seed);
+    SCOPED_TRACE("square serpentine seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    angle_twin(inst, pairs, yes);
+    ++instances;
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[collide] angle tree vs per-pair zonotope: " << instances << " instances (" << yes << " YES), " << pairs
+            << " pairs decided both ways\n";
+  EXPECT_GT(pairs, 10000u);
+  EXPECT_GT(yes, 50u);
+}
+
+}  // namespace
+}  // namespace gridlock
