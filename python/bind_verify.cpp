@@ -44,6 +44,9 @@ py::dict verify_row(const VerifyOptions& opt, size_t i, const std::string& name,
   row["no_certificate"] = r.no_certificate == Check::None    ? "none"
                           : r.no_certificate == Check::Valid ? "checked"
                                                              : "rejected";
+  row["continuous_no_certificate"] = r.cno_certificate == Check::None    ? "none"
+                                     : r.cno_certificate == Check::Valid ? "checked"
+                                                                         : "rejected";
   row["ms_certify"] = r.ms_certify;
   row["solver_states"] = r.solver_states;
   row["ms_sat"] = r.ms_sat;
