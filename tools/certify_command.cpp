@@ -62,8 +62,8 @@ int run_certify(const std::vector<std::string>& args) {
     ans.comment(std::to_string(r.inequalities) + " gap inequalities derived, " + std::to_string(r.axioms) +
                 " closure clauses, " + std::to_string(r.lemmas) + " lemmas checked");
   if (r.kind == "bounds")
-    ans.comment(std::to_string(r.inequalities) + " clauses checked against the instance, " +
-                std::to_string(r.axioms) + " selector definitions, " + std::to_string(r.lemmas) + " lemmas checked");
+    ans.comment(std::to_string(r.inequalities) + " clauses checked against the instance, " + std::to_string(r.axioms) +
+                " selector definitions, " + std::to_string(r.lemmas) + " lemmas checked");
   ans.comment("certificate checked");
   ans.data()["kind"] = r.kind;
   ans.data()["model"] = model;
