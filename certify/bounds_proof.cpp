@@ -208,6 +208,7 @@ class BoundsChecker {
       } catch (const std::exception&) {
         return "'" + w[i] + "' is not a literal";
       }
+      if (l < -INT32_MAX || l > INT32_MAX) return "literal " + w[i] + " out of range";
       const auto v = static_cast<size_t>(l < 0 ? -l : l);
       if (l == 0 || v >= vars_.size() || !vars_[v].declared) return "literal " + w[i] + " of no declared variable";
       out.push_back(static_cast<int>(l));

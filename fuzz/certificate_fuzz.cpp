@@ -1,0 +1,39 @@
+// libFuzzer target: the NO-certificate checker (certify/) on any text, for
+// one fixed instance (fuzz/certificate_instance.grid: a 2-variable UNSAT
+// formula compiled for continuous time, so that the seed certificates'
+// coupling digest matches and the fuzzer reaches every line kind), checked
+// as discrete and as continuous. Any input must give a verdict with a
+// reason or a proof; never a crash, a sanitizer report, or an exception.
+// An accepted certificate must really be one: the instance is NO in both
+// models, so acceptance itself is no bug, but a reason must be empty then.
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include "certify/certify.hpp"
+#include "lattice/grid_format.hpp"
+
+namespace {
+
+const gridlock::Instance& fuzz_instance() {
+  static const gridlock::Instance inst = [] {
+    const std::string path = std::string(GRIDLOCK_SOURCE_DIR) + "/fuzz/certificate_instance.grid";
+    std::ifstream in(path);
+    gridlock::Instance i;
+    if (!in || gridlock::read_instance(in, path, i)) __builtin_trap();
+    return i;
+  }();
+  return inst;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  for (const char* model : {"discrete", "continuous"}) {
+    const gridlock::CertifyResult r = gridlock::certify(fuzz_instance(), text, model);
+    if (r.proved != r.reason.empty()) __builtin_trap();
+  }
+  return 0;
+}
