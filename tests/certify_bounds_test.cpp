@@ -323,13 +323,15 @@ TEST(CertifyBounds, OffsetsAgreeWithSolver) {
     c.num_forms = static_cast<uint32_t>(small(1, 4));
     c.rel = {0, 1};
     for (uint32_t k = 0; k < c.num_forms; ++k) c.base.push_back(small(-2, 2));
-    c.coef.assign(2 * c.num_forms, 0);
+    c.coef.assign(2 * static_cast<size_t>(c.num_forms), 0);
     for (auto& x : c.coef) x = small(-2, 2);
     std::vector<OffsetForm> forms;
+    forms.reserve(c.num_forms);
     for (uint32_t k = 0; k < c.num_forms; ++k)
       forms.push_back({Rational(c.base[k]), Rational(c.coef_of(0)[k]), Rational(c.coef_of(1)[k])});
     const std::vector<OffsetInterval> iv = free_offsets(c);
     std::vector<FreeOffsets> free;
+    free.reserve(iv.size());
     for (const OffsetInterval& x : iv) free.push_back({x.lo, x.hi});
     const auto ok = offsets_outside_collide(forms, free);
     EXPECT_FALSE(ok.has_value()) << "seed " << seed << ": " << *ok;
