@@ -18,7 +18,9 @@ namespace {
 
 const gridlock::Instance& fuzz_instance() {
   static const gridlock::Instance inst = [] {
-    const std::string path = std::string(GRIDLOCK_SOURCE_DIR) + "/fuzz/certificate_instance.grid";
+    // Beside this source file (the fuzz targets run from a source tree).
+    const std::string here = __FILE__;
+    const std::string path = here.substr(0, here.rfind('/') + 1) + "certificate_instance.grid";
     std::ifstream in(path);
     gridlock::Instance i;
     if (!in || gridlock::read_instance(in, path, i)) __builtin_trap();
