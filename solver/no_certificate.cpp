@@ -1,6 +1,7 @@
 #include "solver/no_certificate.hpp"
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -55,6 +56,25 @@ std::string region_text(const Instance& inst, const Regions& regions, uint32_t r
   return sh.kind == RegionKind::Node ? cell_text(inst, sh.id) : "+" + inst.ops()[sh.id].name;
 }
 
+// Reads the text DRAT proof in f from its start and calls each(line) for
+// every line (without its newline) up to and including the first empty
+// clause "0" (CaDiCaL may repeat it: the proof ends there). True iff that
+// empty clause was met.
+bool each_drat_line(std::FILE* f, const std::function<void(const std::string&)>& each) {
+  std::rewind(f);
+  std::string line;
+  for (int ch; (ch = std::fgetc(f)) != EOF;) {
+    if (ch != '\n') {
+      line += static_cast<char>(ch);
+      continue;
+    }
+    each(line);
+    if (line == "0") return true;
+    line.clear();
+  }
+  return false;
+}
+
 // One DRAT line ("1 -2 0"; "d ..." deletions are skipped: a forward RUP
 // check only gets stricter with fewer clauses, and never needs them) as an
 // "l" line of order literals.
@@ -104,18 +124,8 @@ std::string pairs_certificate(const PreparedInstance& prep, const SolveOptions& 
               " " + inst.couplings()[a.runner].name;
       append_lemma(text, '\0', inst, a.lits);
     }
-    std::rewind(drat.get());
-    std::string line;
-    bool empty_clause = false;
-    for (int ch; !empty_clause && (ch = std::fgetc(drat.get())) != EOF;) {
-      if (ch != '\n') {
-        line += static_cast<char>(ch);
-        continue;
-      }
-      empty_clause = line == "0";  // CaDiCaL may repeat it: the proof ends there
-      append_drat_line(text, inst, proof, line);
-      line.clear();
-    }
+    const bool empty_clause = each_drat_line(
+        drat.get(), [&](const std::string& line) { append_drat_line(text, inst, proof, line); });
     if (!empty_clause) text += "l\n";
     return text;
   } catch (const LimitReached&) {
@@ -180,18 +190,10 @@ std::string bounds_drat(const ContinuousProof& p) {
   if (sat.solve([](uint64_t) { return false; }) != Verdict::No)
     throw std::logic_error("NO certificate: the continuous proof's clauses are satisfiable");
   sat.flush_proof();
-  std::rewind(drat.get());
-  std::string text, line;
-  bool empty_clause = false;
-  for (int ch; !empty_clause && (ch = std::fgetc(drat.get())) != EOF;) {
-    if (ch != '\n') {
-      line += static_cast<char>(ch);
-      continue;
-    }
-    empty_clause = line == "0";  // the proof ends there
-    if (!empty_clause && line.size() > 2 && line[0] != 'd') text += "l " + line.substr(0, line.size() - 2) + "\n";
-    line.clear();
-  }
+  std::string text;
+  each_drat_line(drat.get(), [&](const std::string& line) {
+    if (line != "0" && line.size() > 2 && line[0] != 'd') text += "l " + line.substr(0, line.size() - 2) + "\n";
+  });
   return text + "l\n";
 }
 
