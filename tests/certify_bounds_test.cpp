@@ -28,6 +28,7 @@
 #include "solver/continuous_pairs.hpp"
 #include "solver/no_certificate.hpp"
 #include "support/cli.hpp"
+#include "support/general_params.hpp"
 #include "support/reference_continuous.hpp"
 #include "support/test_scale.hpp"
 #include "support/text_lines.hpp"
@@ -38,16 +39,7 @@ namespace {
 using test::join_lines;
 using test::lines_of;
 
-RandomInstanceParams general_params(uint64_t seed) {
-  RandomInstanceParams p;
-  p.nodes = 5 + static_cast<uint32_t>(seed % 10);
-  p.ops = 3 + static_cast<uint32_t>(seed % 7);
-  p.max_coupling = 1 + static_cast<uint32_t>(seed % 3);
-  p.couplings = 2 + static_cast<uint32_t>(seed % 6);
-  p.extra_edge_percent = static_cast<uint32_t>(seed % 3) * 20;
-  p.spread = static_cast<uint32_t>(seed % 3);
-  return p;
-}
+RandomInstanceParams general_params(uint64_t seed) { return test::general_params(seed, 7, 6); }
 
 struct Counts {
   int rich = 0;  // certificates with event or theory lines (not a lone pair that always collides)

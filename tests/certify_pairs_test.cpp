@@ -20,6 +20,7 @@
 #include "reductions/to_lsat.hpp"
 #include "solver/no_certificate.hpp"
 #include "support/cli.hpp"
+#include "support/general_params.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
 #include "support/text_lines.hpp"
@@ -32,16 +33,7 @@ using test::lines_of;
 
 // Small instances with operations in all four directions (at most 6
 // couplings, so that the all-orders reference labels them).
-RandomInstanceParams general_params(uint64_t seed) {
-  RandomInstanceParams p;
-  p.nodes = 5 + static_cast<uint32_t>(seed % 10);
-  p.ops = 3 + static_cast<uint32_t>(seed % 6);
-  p.max_coupling = 1 + static_cast<uint32_t>(seed % 3);
-  p.couplings = 2 + static_cast<uint32_t>(seed % 5);
-  p.extra_edge_percent = static_cast<uint32_t>(seed % 3) * 20;
-  p.spread = static_cast<uint32_t>(seed % 3);
-  return p;
-}
+RandomInstanceParams general_params(uint64_t seed) { return test::general_params(seed, 6, 5); }
 
 struct Counts {
   int no = 0, yes = 0, breakers = 0, pairs = 0, with_o = 0, mutations = 0, rejected = 0, drops = 0, drops_rejected = 0;
