@@ -1,11 +1,13 @@
 #include "solver/no_certificate.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <memory>
 #include <stdexcept>
 
 #include "cnf/incremental_sat.hpp"
+#include "common/limits.hpp"
 #include "solver/constraints.hpp"
 #include "solver/continuous_sat.hpp"
 #include "solver/gaps.hpp"
@@ -179,16 +181,18 @@ std::string bounds_text(const Instance& inst, const Regions& regions, const Cont
 }
 
 // CaDiCaL's DRAT proof that the clauses of p are unsatisfiable, as "l"
-// lines (deletions left out), ending with "l" alone.
-std::string bounds_drat(const ContinuousProof& p) {
+// lines (deletions left out), ending with "l" alone; empty if dl expires
+// first (the time left of --timeout, or a stop request).
+std::string bounds_drat(const ContinuousProof& p, const Deadline& dl) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> drat(std::tmpfile(), &std::fclose);
   if (!drat) throw std::runtime_error("NO certificate: cannot open a temporary file for the proof");
   IncrementalSat sat;
   sat.trace_proof(drat.get());
   for (size_t i = 0; i < p.vars.size(); ++i) sat.new_var();
   for (const ContinuousProof::Clause& c : p.clauses) sat.add_clause(c.lits);
-  if (sat.solve([](uint64_t) { return false; }) != Verdict::No)
-    throw std::logic_error("NO certificate: the continuous proof's clauses are satisfiable");
+  const Verdict v = sat.solve([&](uint64_t) { return dl.expired(); });
+  if (v == Verdict::Unknown) return {};
+  if (v != Verdict::No) throw std::logic_error("NO certificate: the continuous proof's clauses are satisfiable");
   sat.flush_proof();
   std::string text;
   each_drat_line(drat.get(), [&](const std::string& line) {
@@ -277,8 +281,14 @@ CertifiedContinuous solve_continuous_certified(const Instance& inst, const Solve
     out.why_none = proof.why_none;
     return out;
   }
+  const Deadline dl(opt.seconds > 0 ? std::max(opt.seconds - out.result.stats.seconds, 1e-6) : 0);
+  const std::string drat = bounds_drat(proof, dl);
+  if (drat.empty()) {
+    out.why_none = "limit reached while CaDiCaL wrote the certificate's proof";
+    return out;
+  }
   const Regions regions = Regions::build(inst);
-  out.certificate = header(inst, "continuous") + bounds_text(inst, regions, proof) + bounds_drat(proof);
+  out.certificate = header(inst, "continuous") + bounds_text(inst, regions, proof) + drat;
   return out;
 }
 
