@@ -89,7 +89,9 @@ class BoundsChecker {
       if (w[0] == "a" || w[0] == "s" || w[0] == "g") continue;
       if (ended) return at(line, "a line after the empty clause");
       std::vector<int> lits;
-      const size_t first = w[0] == "i" || w[0] == "e" ? 5 : w[0] == "f" ? 3 : 1;
+      size_t first = w[0] == "i" || w[0] == "e" ? 5 : w[0] == "f" ? 3 : w[0] == "w" ? 2 : 1;
+      if (w[0] == "w")  // the walk's cells, then the literals
+        while (first < w.size() && w[first].find(',') != std::string::npos) ++first;
       if (w.size() < first) return at(line, "too few words for an " + w[0] + " line");
       if (auto e = literals(w, first, lits)) return at(line, *e);
       if (w[0] == "l") {
@@ -101,6 +103,7 @@ class BoundsChecker {
       std::optional<std::string> e = w[0] == "i"   ? interval_clause(w, lits)
                                      : w[0] == "e" ? event_clause(w, lits)
                                      : w[0] == "f" ? forms_clause(w, lits)
+                                     : w[0] == "w" ? face_clause(w, first, lits)
                                                    : theory_clause(lits);
       if (e) return at(line, *e);
       proof.add_axiom(lits);
@@ -372,6 +375,56 @@ class BoundsChecker {
         if (listed[i] && listed[j] && least(i, j) <= 0)
           return "forms " + std::to_string(i + 1) + " and " + std::to_string(j + 1) + " can be <= 0 together";
     }
+    return std::nullopt;
+  }
+
+  // w Q CELLS LITS: the cells are a closed walk; with every literal false
+  // each coupling with a non-zero net around it starts before, with or
+  // after Q (each literal a bound between Q and it, of constant 0), and the
+  // nets of Q and of those that start with Q do not sum to zero. In a
+  // collision-free schedule the walk stays closed: its net
+  // sum_q progress_q(t) * net_q is zero at every t, so at each start time
+  // the nets of the couplings starting then sum to zero (certificates.md).
+  std::optional<std::string> face_clause(const std::vector<std::string>& w, size_t first,
+                                         const std::vector<int>& lits) const {
+    CouplingId runner = kNone;
+    if (auto e = read_coupling(inst_, w[1], runner)) return e;
+    std::vector<NodeId> walk;
+    for (size_t i = 2; i < first; ++i) {
+      NodeId v = kNone;
+      if (auto e = read_cell(inst_, w[i], v)) return e;
+      walk.push_back(v);
+    }
+    if (walk.size() < 3) return std::string("a closed walk needs three cells or more");
+    std::vector<Vec2> nets;
+    if (auto e = geo_.walk_nets(walk, nets)) return e;
+    std::vector<DiffBound> neg;
+    if (auto e = negations(lits, neg)) return e;
+    std::map<CouplingId, Range> range;  // of t_q - t_Q
+    for (const DiffBound& b : neg) {
+      if (b.v != Rational(0) || (b.x != runner && b.y != runner))
+        return "literal bound " + inst_.couplings()[b.x].name + " - " + inst_.couplings()[b.y].name +
+               " is not against " + w[1] + " with constant 0";
+      Range& r = range[b.x == runner ? b.y : b.x];
+      if (b.x == runner) {  // t_Q - t_q <= 0 (< 0): t_q - t_Q >= 0 (> 0)
+        if (r.lo_inf || r.lo_open < b.strict) r.lo_inf = false, r.lo = Rational(0), r.lo_open = b.strict;
+      } else if (r.hi_inf || r.hi_open < b.strict) {  // t_q - t_Q <= 0 (< 0)
+        r.hi_inf = false, r.hi = Rational(0), r.hi_open = b.strict;
+      }
+    }
+    Vec2 sum = nets[runner];
+    for (size_t q = 0; q < nets.size(); ++q) {
+      if (q == runner || nets[q].is_zero()) continue;
+      auto it = range.find(static_cast<CouplingId>(q));
+      if (it == range.end()) return "coupling " + inst_.couplings()[q].name + " has a net but no bound against " + w[1];
+      const Range& r = it->second;
+      if (r.empty()) return std::nullopt;        // the negations contradict each other: the clause always holds
+      const bool with = !r.lo_inf && !r.hi_inf;  // 0 <= t_q - t_Q <= 0
+      const bool apart = (!r.lo_inf && r.lo_open) || (!r.hi_inf && r.hi_open);
+      if (!with && !apart) return "coupling " + inst_.couplings()[q].name + " may or may not start with " + w[1];
+      if (with) sum = sum + nets[q];
+    }
+    if (sum.is_zero()) return "the nets of " + w[1] + " and the couplings that start with it sum to zero";
     return std::nullopt;
   }
 

@@ -145,6 +145,10 @@ std::optional<std::string> read_coupling(const Instance& inst, std::string_view 
   return coupling(inst, w, out);
 }
 
+std::optional<std::string> read_cell(const Instance& inst, std::string_view w, NodeId& out) {
+  return cell_node(inst, w, out);
+}
+
 std::optional<std::string> read_region(const Instance& inst, const Regions& regions, std::string_view w,
                                        uint32_t& out) {
   return region(inst, regions, w, out);
@@ -174,7 +178,7 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
       e = header_line(inst, w, line, out);
       digest_seen |= w[0] == "couplings";
     } else if (out.kind == "bounds" && w[0].size() == 1 &&
-               std::string_view("asietlgf").find(w[0][0]) != std::string_view::npos) {
+               std::string_view("asietlgfw").find(w[0][0]) != std::string_view::npos) {
       out.body.emplace_back(line, std::vector<std::string>(w.begin(), w.end()));
     } else if (w[0] == "o" || w[0] == "l" || w[0] == "x") {
       if (regions.size() == 0) regions = Regions::build(inst);

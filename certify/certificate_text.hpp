@@ -41,10 +41,11 @@ struct CertificateText {
 // Parses text against inst. Returns the reason on failure ("line N: ...").
 std::optional<std::string> read_certificate(const Instance& inst, std::string_view text, CertificateText& out);
 
-// A coupling by name, and a region as the certificate writes it ("x,y":
-// the node in that cell; "+NAME": the region operation NAME inserts or
-// grows): the reason if there is none.
+// A coupling by name, a node by its cell ("x,y"), and a region as the
+// certificate writes it ("x,y": the node in that cell; "+NAME": the region
+// operation NAME inserts or grows): the reason if there is none.
 std::optional<std::string> read_coupling(const Instance& inst, std::string_view w, CouplingId& out);
+std::optional<std::string> read_cell(const Instance& inst, std::string_view w, NodeId& out);
 std::optional<std::string> read_region(const Instance& inst, const Regions& regions, std::string_view w, uint32_t& out);
 
 // FNV-1a (64 bits) of the coupling names in instance order, each followed

@@ -42,7 +42,16 @@ void CertifyGeometry::add_path(NodeId p, NodeId q, int64_t sign, CouplingForm& f
 
 std::optional<std::string> CertifyGeometry::walk_net(const std::vector<NodeId>& walk, const std::vector<char>& in,
                                                      Vec2& net) const {
+  std::vector<Vec2> nets;
+  if (auto e = walk_nets(walk, nets)) return e;
   net = {0, 0};
+  for (size_t q = 0; q < nets.size(); ++q)
+    if (in[q]) net = net + nets[q];
+  return std::nullopt;
+}
+
+std::optional<std::string> CertifyGeometry::walk_nets(const std::vector<NodeId>& walk, std::vector<Vec2>& nets) const {
+  nets.assign(inst_.couplings().size(), Vec2{0, 0});
   for (size_t i = 0; i < walk.size(); ++i) {
     const NodeId a = walk[i], b = walk[(i + 1) % walk.size()];
     uint32_t e = kNone;
@@ -50,12 +59,12 @@ std::optional<std::string> CertifyGeometry::walk_net(const std::vector<NodeId>& 
       if (inst_.neighbour(a, d) == b) e = inst_.edge_index(a, d);
     if (e == kNone) return inst_.node_label(a) + " and " + inst_.node_label(b) + " are not joined by an edge";
     const OpId k = inst_.edges()[e].op;
-    if (k == kNone || !in[inst_.ops()[k].coupling]) continue;
+    if (k == kNone) continue;
     const Operation& op = inst_.ops()[k];
     // b relative to a: an expansion u->v moves v away from u, a contraction toward it.
     const Vec2 d = unit(op.dir);
     const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
-    net = net + Vec2{s * d.x, s * d.y};
+    nets[op.coupling] = nets[op.coupling] + Vec2{s * d.x, s * d.y};
   }
   return std::nullopt;
 }

@@ -39,6 +39,10 @@ class CertifyGeometry {
   // Reason if two consecutive nodes are not joined by an edge.
   std::optional<std::string> walk_net(const std::vector<NodeId>& walk, const std::vector<char>& in, Vec2& net) const;
 
+  // The same for every coupling at once: nets[q] is coupling q's net around
+  // the walk (alone done). O(walk + couplings).
+  std::optional<std::string> walk_nets(const std::vector<NodeId>& walk, std::vector<Vec2>& nets) const;
+
   // Overlap form of the row neighbours a (left) and b: right(a) - left(b)
   // with a's growth toward +x and b's toward -x counted as part of the node
   // (> 0: the two overlap).

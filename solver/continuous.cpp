@@ -516,6 +516,36 @@ bool no_shortcuts(ContinuousEngine e) {
   return e == ContinuousEngine::SatNoShortcuts || e == ContinuousEngine::DlNoShortcuts;
 }
 
+// A proof of a NO that Z3 found on the clamped encoding: the learning
+// engine on its relaxation (ContinuousSatOptions::relax_covers), if it takes
+// the component and finds the NO too; else why_none says why there is none.
+void prove_clamped_no(GeneralRun& run, const Component& comp, const ConstraintSystem& sys,
+                      const ComponentFaces& comp_faces) {
+  *run.proof = {};
+  const auto why = continuous_sat_unsupported(sys, comp.pairs, comp_faces);
+  const std::string none = "decided by Z3 on the clamped encoding" + (why ? " (" + *why + ")" : std::string());
+  if (!continuous_sat_unsupported(sys, comp.pairs, comp_faces, true)) {
+    ContinuousSatOptions o;
+    o.proof = run.proof;
+    o.relax_covers = true;
+    ContinuousSatOutcome got;
+    try {
+      got = solve_component_sat(sys, comp.couplings, comp.pairs, comp_faces, run.offsets_cache, run.budget,
+                                run.res.stats, o);
+    } catch (const LimitReached&) {  // the NO stands; only its proof is missing
+      *run.proof = {};
+      run.proof->why_none = none + "; the limit came before the learning engine's proof";
+      return;
+    }
+    if (got.verdict == Verdict::No && run.proof->complete) return;
+    *run.proof = {};
+    run.proof->why_none = none + "; the learning engine's relaxation of its pairs of several forms " +
+                          (got.verdict == Verdict::No ? "found no proof" : "has a model") + ", so no proof";
+    return;
+  }
+  run.proof->why_none = none + ", which writes no proof";
+}
+
 // Decides one component that the cheap tests did not settle: the discrete
 // order (once per instance), then the sat engine or Z3. Writes the times
 // into run.res.schedule; returns the verdict.
@@ -532,28 +562,25 @@ Verdict solve_hard_component(GeneralRun& run, const Component& comp, const Const
     }
   }
   ++run.res.stats.states;
+  ComponentFaces comp_faces;
+  for (uint32_t fi : comp.faces) comp_faces.push_back(&faces.faces[fi]);
   const bool sat_ok = run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::Z3 &&
-                      !continuous_sat_unsupported(sys, comp.pairs, comp.faces.size());
+                      !continuous_sat_unsupported(sys, comp.pairs, comp_faces);
   if (sat_ok) {
     ContinuousSatOptions o;
     o.difference_logic = run.engine != ContinuousEngine::Sat && run.engine != ContinuousEngine::SatNoShortcuts;
     o.z3_for_linear = no_shortcuts(run.engine);
     o.proof = run.proof;
     (o.difference_logic || o.proof ? run.used_dl : run.used_sat) = true;
-    ContinuousSatOutcome got = solve_component_sat(sys, comp.couplings, comp.pairs, run.offsets_cache, run.budget,
-                                                   run.res.stats, o);
+    ContinuousSatOutcome got = solve_component_sat(sys, comp.couplings, comp.pairs, comp_faces, run.offsets_cache,
+                                                   run.budget, run.res.stats, o);
     for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
     return got.verdict;
   }
   run.used_z3 = true;
   ComponentOutcome got = solve_component_z3(ctx, comp, sys, faces, var_of, run.encoding, run.offsets_cache, run.opt,
                                             run.budget.elapsed(), conflicts, run.res.stats);
-  if (run.proof && got.verdict == Verdict::No) {
-    *run.proof = {};
-    const auto why = continuous_sat_unsupported(sys, comp.pairs, comp.faces.size());
-    run.proof->why_none = "decided by Z3 on the clamped encoding" + (why ? " (" + *why + ")" : std::string()) +
-                          ", which writes no proof";
-  }
+  if (run.proof && got.verdict == Verdict::No) prove_clamped_no(run, comp, sys, comp_faces);
   for (size_t j = 0; j < got.start.size(); ++j) run.res.schedule.start[comp.couplings[j]] = got.start[j];
   return got.verdict;
 }

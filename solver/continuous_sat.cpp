@@ -91,15 +91,34 @@ struct Edge {
   int32_t rule = -1;  // or the DiffRule it comes from
 };
 
+// Calls visit(choice) for every choice of 0, 1 or 2 per index below m but
+// `skip` (kept 0): 3^(m-1) calls (the branches of the other couplings at an
+// event, or how the other couplings of a face start).
+template <class Visit>
+void each_choice(size_t m, size_t skip, Visit visit) {
+  std::vector<int> choice(m, 0);
+  for (;;) {
+    visit(static_cast<const std::vector<int>&>(choice));
+    size_t p = 0;
+    for (; p < m; ++p) {
+      if (p == skip) continue;
+      if (++choice[p] < 3) break;
+      choice[p] = 0;
+    }
+    if (p == m) return;
+  }
+}
+
 class Engine {
  public:
   Engine(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings, const std::vector<uint32_t>& pairs,
-         FreeOffsetsCache& cache, SearchBudget& budget, SolveStats& stats)
-      : sys_(sys), couplings_(couplings), pairs_(pairs), cache_(cache), budget_(budget), stats_(stats) {
+         const ComponentFaces& faces, FreeOffsetsCache& cache, SearchBudget& budget, SolveStats& stats)
+      : sys_(sys), couplings_(couplings), pairs_(pairs), faces_(faces), cache_(cache), budget_(budget), stats_(stats) {
     for (uint32_t j = 0; j < couplings.size(); ++j) local_.emplace(couplings[j], j);
   }
 
   bool z3_for_linear = false;         // see solve_component_sat
+  bool relax_covers = false;          // see ContinuousSatOptions
   bool difference_logic = false;      // see solve_component_sat
   ContinuousProof* proof_ = nullptr;  // see ContinuousSatOptions::proof
 
@@ -184,8 +203,10 @@ class Engine {
     return v;
   }
 
-  // Encodes every pair; false if some pair can never be free (NO at once).
+  // Encodes every face and pair; false if some pair can never be free (NO
+  // at once).
   bool encode() {
+    for (uint32_t fi = 0; fi < faces_.size(); ++fi) encode_face(fi);
     for (uint32_t ci : pairs_) {
       budget_.poll();
       const CollisionConstraint& c = sys_.constraints[ci];
@@ -195,6 +216,8 @@ class Engine {
         if (!pair_free_at_offset(c, Rational(0))) return false;
       } else if (c.rel.size() == 2) {
         if (!encode_two(c)) return false;
+      } else if (c.num_forms > 1 && relax_covers && !forms_never_both_nonpositive(c)) {
+        encode_cover_events(c);
       } else if (c.num_forms == 1) {
         if (!encode_gap(c, 0, 0)) return false;
       } else {
@@ -210,6 +233,73 @@ class Engine {
       }
     }
     return true;
+  }
+
+  // Face fi stays closed (see the header): for each coupling q of the face
+  // and each way the others start (0: before q, 1: with q, 2: after q)
+  // whose nets with q's do not sum to zero, the clause "not this way".
+  void encode_face(uint32_t fi) {
+    const auto& nets = faces_[fi]->nets;
+    const size_t m = nets.size();
+    for (size_t j = 0; j < m; ++j) {
+      const uint32_t q = local_.at(nets[j].first);
+      each_choice(m, j, [&](const std::vector<int>& state) {
+        budget_.poll();
+        Vec2 sum = nets[j].second;
+        for (size_t p = 0; p < m; ++p)
+          if (p != j && state[p] == 1) sum += nets[p].second;
+        if (sum.is_zero()) return;
+        std::vector<int> clause;
+        for (size_t p = 0; p < m; ++p) {
+          if (p == j) continue;
+          const uint32_t r = local_.at(nets[p].first);
+          if (state[p] != 2) clause.push_back(-diff_lit(r, q, state[p] == 0 ? 1 : 2));  // not t_r < / <= t_q
+          if (state[p] != 0) clause.push_back(diff_lit(r, q, state[p] == 1 ? 1 : 2));   // t_r < t_q / <= t_q
+        }
+        const ClauseReason outer = reason_;
+        reason_ = {ContinuousProof::Reason::Face, fi, q, 0};
+        add_clause(clause);
+        reason_ = outer;
+      });
+    }
+  }
+
+  // The relaxation of a pair of several forms that can be <= 0 together
+  // (ContinuousSatOptions::relax_covers): at every event t_r + delta of its
+  // couplings and every branch choice of the others (0: not started, 1:
+  // done, 2: partial) that makes every form positive on the whole box, the
+  // pair collides: the clause "not this choice". 3^(r-1) per event.
+  void encode_cover_events(const CollisionConstraint& c) {
+    const size_t m = c.rel.size();
+    for (size_t j = 0; j < m; ++j)
+      for (int delta = 0; delta <= 1; ++delta)
+        each_choice(m, j, [&](const std::vector<int>& branch) {
+          budget_.poll();
+          cover_choice(c, j, delta, branch);
+        });
+  }
+
+  void cover_choice(const CollisionConstraint& c, size_t j, int delta, const std::vector<int>& branch) {
+    for (uint32_t i = 0; i < c.num_forms; ++i) {
+      int64_t k = c.base[i] + c.coef_of(j)[i] * delta, lo = 0;
+      bool partial = false;
+      for (size_t p = 0; p < c.rel.size(); ++p) {
+        if (p == j) continue;
+        const int64_t cp = c.coef_of(p)[i];
+        if (branch[p] == 1) k += cp;
+        if (branch[p] == 2 && cp != 0) partial = true, lo += std::min<int64_t>(0, cp);
+      }
+      if (partial ? k + lo < 0 : k <= 0) return;  // this form can be <= 0 here
+    }
+    const uint32_t r = local_.at(c.rel[j]);
+    std::vector<int> clause;
+    for (size_t p = 0; p < c.rel.size(); ++p)
+      if (p != j) branch_guard(r, local_.at(c.rel[p]), delta, branch[p], clause);
+    for (int& l : clause) l = -l;
+    const ClauseReason outer = reason_;
+    reason_ = {ContinuousProof::Reason::Event, outer.constraint, r, delta};
+    add_clause(clause);
+    reason_ = outer;
   }
 
   // A two-coupling pair: t_b - t_a in one of its free intervals.
@@ -261,18 +351,24 @@ class Engine {
   // not started, 1: done, 2: partial) of the other couplings.
   void encode_event(int64_t base, const std::vector<uint32_t>& qs, const std::vector<int64_t>& cs, size_t j, int delta,
                     int g) {
-    const size_t m = qs.size();
-    std::vector<int> branch(m, 0);
-    for (;;) {
+    each_choice(qs.size(), j, [&](const std::vector<int>& branch) {
       budget_.poll();
       encode_choice(base, qs, cs, j, delta, g, branch);
-      size_t p = 0;
-      for (; p < m; ++p) {
-        if (p == j) continue;
-        if (++branch[p] < 3) break;
-        branch[p] = 0;
-      }
-      if (p == m) return;
+    });
+  }
+
+  // The literals that say coupling q's clamp at the event t_r + delta is
+  // branch (0: not started, 1: done, 2: partial), appended to guard.
+  void branch_guard(uint32_t r, uint32_t q, int delta, int branch, std::vector<int>& guard) {
+    // delta 0: zero iff t_r - t_q <= 0, done iff >= 1; delta 1: <= -1 and >= 0.
+    const int zero_which = delta == 0 ? 2 : 0, below_done_which = delta == 0 ? 3 : 1;
+    if (branch == 0) {
+      guard.push_back(diff_lit(r, q, zero_which));
+    } else if (branch == 1) {
+      guard.push_back(-diff_lit(r, q, below_done_which));
+    } else {
+      guard.push_back(-diff_lit(r, q, zero_which));
+      guard.push_back(diff_lit(r, q, below_done_which));
     }
   }
 
@@ -286,16 +382,10 @@ class Engine {
     for (size_t p = 0; p < qs.size(); ++p) {
       if (p == j) continue;
       const uint32_t q = qs[p];
-      // delta 0: zero iff t_r - t_q <= 0, done iff >= 1; delta 1: <= -1 and >= 0.
-      const int zero_which = delta == 0 ? 2 : 0, below_done_which = delta == 0 ? 3 : 1;
-      if (branch[p] == 0) {
-        guard.push_back(diff_lit(r, q, zero_which));
-      } else if (branch[p] == 1) {
-        guard.push_back(-diff_lit(r, q, below_done_which));
+      branch_guard(r, q, delta, branch[p], guard);
+      if (branch[p] == 1) {
         k += cs[p];
-      } else {
-        guard.push_back(-diff_lit(r, q, zero_which));
-        guard.push_back(diff_lit(r, q, below_done_which));
+      } else if (branch[p] == 2) {
         partial.emplace_back(q, cs[p]);
         lo += std::min<int64_t>(0, cs[p]), hi += std::max<int64_t>(0, cs[p]);
       }
@@ -666,6 +756,8 @@ class Engine {
         for (uint32_t q : *movers) cl.movers.push_back(couplings_[q]);
       else if (why.reason == ContinuousProof::Reason::Interval) cl.movers = c.rel;
     }
+    if (why.reason == ContinuousProof::Reason::Face)
+      cl.runner = couplings_[why.runner], cl.walk = faces_[why.constraint]->walk;
     cl.lits = std::move(lits);
     proof_->clauses.push_back(std::move(cl));
   }
@@ -776,6 +868,7 @@ class Engine {
   // A YES of either search: times shifted so the earliest is 0, checked pair
   // by pair (verify).
   ContinuousSatOutcome answer_yes(std::vector<Rational> t) const {
+    if (relax_covers) return {};  // a model of the relaxation proves nothing
     const Rational lo = *std::min_element(t.begin(), t.end());
     for (Rational& x : t) x = x - lo;
     verify(t);
@@ -854,6 +947,13 @@ class Engine {
   }
 
   void verify(const std::vector<Rational>& t) const {
+    for (const FaceNets::Face* f : faces_)
+      for (const auto& [q, v] : f->nets) {
+        Vec2 sum{0, 0};
+        for (const auto& [r, w] : f->nets)
+          if (t[local_.at(r)] == t[local_.at(q)]) sum += w;
+        if (!sum.is_zero()) throw std::logic_error("continuous sat engine: a face opens at the times of a model");
+      }
     for (uint32_t ci : pairs_) {
       const CollisionConstraint& c = sys_.constraints[ci];
       std::vector<Rational> st;
@@ -968,6 +1068,7 @@ class Engine {
   const ConstraintSystem& sys_;
   const std::vector<CouplingId>& couplings_;
   const std::vector<uint32_t>& pairs_;
+  const ComponentFaces& faces_;
   FreeOffsetsCache& cache_;
   SearchBudget& budget_;
   SolveStats& stats_;
@@ -1000,24 +1101,28 @@ class Engine {
 }  // namespace
 
 std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sys, const std::vector<uint32_t>& pairs,
-                                                      size_t num_faces) {
-  if (num_faces > 0) return "a face with non-zero nets (cycle constraints)";
+                                                      const ComponentFaces& faces, bool relax_covers) {
+  for (const FaceNets::Face* f : faces)
+    if (f->nets.size() > kMaxFaceCouplings)
+      return "a face of more than " + std::to_string(kMaxFaceCouplings) + " couplings with non-zero nets";
   for (uint32_t ci : pairs) {
     const CollisionConstraint& c = sys.constraints[ci];
     if (c.rel.size() <= 2) continue;
     if (c.rel.size() > kMaxGapCouplings)
       return "a pair of more than " + std::to_string(kMaxGapCouplings) + " couplings";
-    if (c.num_forms > 1 && !forms_never_both_nonpositive(c))
+    if (c.num_forms > 1 && !relax_covers && !forms_never_both_nonpositive(c))
       return "a pair of three or more couplings with several forms";
   }
   return std::nullopt;
 }
 
 ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
-                                         const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
-                                         SearchBudget& budget, SolveStats& stats, ContinuousSatOptions options) {
-  Engine engine(sys, couplings, pairs, cache, budget, stats);
+                                         const std::vector<uint32_t>& pairs, const ComponentFaces& faces,
+                                         FreeOffsetsCache& cache, SearchBudget& budget, SolveStats& stats,
+                                         ContinuousSatOptions options) {
+  Engine engine(sys, couplings, pairs, faces, cache, budget, stats);
   engine.z3_for_linear = options.z3_for_linear;
+  engine.relax_covers = options.relax_covers;
   engine.difference_logic = options.difference_logic || options.proof != nullptr;
   engine.proof_ = options.proof;
   return engine.run();

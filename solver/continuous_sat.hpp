@@ -36,8 +36,18 @@
 // answer is rechecked pair by pair (pair_free_at_times) before it is
 // returned (a failure throws std::logic_error: a bug, never a wrong answer).
 //
-// Not supported (continuous_sat_supports says why; the caller uses Z3 on the
-// whole component instead): faces with non-zero nets (cycles), pairs of
+// Faces (cycles of the shape, lattice/motion.hpp FaceNets): a face stays
+// closed iff, at every start time x, the nets of the couplings that start at
+// x sum to zero (the net around the face is sum_q progress_q(t) * net_q;
+// its derivative jumps by sum_(t_q = x) net_q at x and back at x + 1, so it
+// is zero everywhere iff each of these sums is). For each coupling q of a
+// face, every way the others can start (before, with or after q) whose
+// "with q" nets do not sum to zero is excluded by one clause over the atoms
+// [t_r - t_q < 0] and [t_r - t_q <= 0]: 3^(m-1) per coupling of a face of m.
+//
+// Not supported (continuous_sat_unsupported says why; the caller uses Z3 on
+// the whole component instead): faces of more than kMaxFaceCouplings
+// couplings with non-zero nets, pairs of
 // three or more couplings with several forms unless no two of their forms can
 // be <= 0 together (then one form is a gap, picked by a selector), gaps of
 // more than kMaxGapCouplings couplings.
@@ -49,6 +59,7 @@
 #include <string>
 #include <vector>
 
+#include "lattice/motion.hpp"
 #include "lattice/rational.hpp"
 #include "solver/constraints.hpp"
 #include "solver/continuous_pairs.hpp"
@@ -63,11 +74,17 @@ using FreeOffsetsCache = std::map<std::vector<int64_t>, std::vector<OffsetInterv
 const std::vector<OffsetInterval>& cached_free_offsets(const CollisionConstraint& c, FreeOffsetsCache& cache);
 
 inline constexpr size_t kMaxGapCouplings = 8;
+inline constexpr size_t kMaxFaceCouplings = 6;
+
+// The faces of one component (pointers into a FaceNets).
+using ComponentFaces = std::vector<const FaceNets::Face*>;
 
 // nullopt if solve_component_sat can decide the component made of `pairs`
-// (indices into sys) and no faces; else the reason it cannot. O(pairs * forms^2).
+// (indices into sys) and `faces` (with relax_covers: can take it with
+// ContinuousSatOptions::relax_covers); else the reason it cannot.
+// O(pairs * forms^2 + faces).
 std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sys, const std::vector<uint32_t>& pairs,
-                                                      size_t num_faces);
+                                                      const ComponentFaces& faces, bool relax_covers = false);
 
 struct ContinuousSatOutcome {
   Verdict verdict = Verdict::Unknown;
@@ -90,7 +107,11 @@ struct ContinuousSatOutcome {
 //    be <= 0 together: the one <= 0 at any moment is <= 0 at every moment);
 //  Theory: the literals' negations, difference bounds, are contradictory
 //    (the atom chains and Z3's theory lemmas);
-//  Definition: a selector implies the bounds of its interval.
+//  Definition: a selector implies the bounds of its interval;
+//  Face: around the closed walk `walk`, the nets of the couplings that
+//    start with `runner` do not sum to zero whenever every literal is false
+//    (each false literal says whether some coupling starts before, with or
+//    after it).
 // They are unsatisfiable together (the writer asks CaDiCaL for the DRAT
 // proof).
 struct ContinuousProof {
@@ -104,12 +125,13 @@ struct ContinuousProof {
     bool strict = false;
     std::optional<Rational> lo, hi;  // selector: lo <= t_b - t_a <= hi
   };
-  enum class Reason { Interval, Event, Theory, Definition, Forms };
+  enum class Reason { Interval, Event, Theory, Definition, Forms, Face };
   struct Clause {
     Reason reason = Reason::Theory;
     uint32_t region_a = kNone, region_b = kNone;  // Interval, Event, Forms (lattice/motion.hpp Regions numbering)
-    CouplingId runner = kNone;                    // Event: the instant t_runner + delta
+    CouplingId runner = kNone;                    // Event: the instant t_runner + delta; Face: the coupling
     int delta = 0;
+    std::vector<NodeId> walk;        // Face: the face's closed walk
     std::vector<CouplingId> movers;  // Interval: a (and b)
     std::vector<int> lits;
   };
@@ -137,14 +159,22 @@ struct ContinuousProof {
 //  proof (certificates): with a NO, the encoding's clauses with their
 //    reasons and the theory lemmas of Z3's proof (Z3 runs with proofs on,
 //    about 2.5x slower) go to *proof; forces the difference-logic mode.
+//  relax_covers (certificates of NOs that Z3 found on the clamped
+//    encoding): a pair of three or more couplings with several forms that
+//    can be <= 0 together, which the engine cannot decide, is encoded only
+//    by the events at which every form is positive (a collision): clauses
+//    true in every collision-free schedule, but not all of the pair. A NO
+//    is then a NO with a proof; a model proves nothing (Unknown).
 struct ContinuousSatOptions {
   bool difference_logic = true;
   bool z3_for_linear = false;
+  bool relax_covers = false;
   ContinuousProof* proof = nullptr;
 };
 
 // Decides the component (couplings: its couplings, pairs: its pair
-// constraints; requires continuous_sat_unsupported == nullopt). Throws
+// constraints, faces: its faces; requires continuous_sat_unsupported ==
+// nullopt). Throws
 // LimitReached when budget runs out (time, stop request, nodes: one node per
 // conflict (CaDiCaL's or Z3's) and per round of the lazy loop; Z3 is
 // interrupted by a watcher thread). stats: decisions += rounds (lazy) or
@@ -154,7 +184,8 @@ struct ContinuousSatOptions {
 // linear in practice). Exponential in the worst case either way (the
 // problem is NP-hard).
 ContinuousSatOutcome solve_component_sat(const ConstraintSystem& sys, const std::vector<CouplingId>& couplings,
-                                         const std::vector<uint32_t>& pairs, FreeOffsetsCache& cache,
-                                         SearchBudget& budget, SolveStats& stats, ContinuousSatOptions options = {});
+                                         const std::vector<uint32_t>& pairs, const ComponentFaces& faces,
+                                         FreeOffsetsCache& cache, SearchBudget& budget, SolveStats& stats,
+                                         ContinuousSatOptions options = {});
 
 }  // namespace gridlock

@@ -167,6 +167,12 @@ std::string bounds_text(const Instance& inst, const Regions& regions, const Cont
       text += "t" + literals_text(c.lits) + "\n";
       continue;
     }
+    if (c.reason == Reason::Face) {
+      text += "w " + cs[c.runner].name;
+      for (NodeId w : c.walk) text += " " + cell_text(inst, w);
+      text += literals_text(c.lits) + "\n";
+      continue;
+    }
     text += std::string(c.reason == Reason::Event   ? "e "
                         : c.reason == Reason::Forms ? "f "
                                                     : "i ") +
