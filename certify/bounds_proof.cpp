@@ -28,6 +28,7 @@ struct Var {
   DiffBound bound;                  // a line
   CouplingId a = kNone, b = kNone;  // s line: lo <= t_b - t_a <= hi
   std::optional<Rational> lo, hi;
+  size_t line = 0;  // of the declaration
 };
 
 using BoundKey = std::tuple<CouplingId, CouplingId, int64_t, int64_t, bool>;
@@ -77,13 +78,15 @@ class BoundsChecker {
   // The reason the certificate fails, or empty when it proves NO.
   std::string run() {
     for (const auto& [line, w] : c_.body)
-      if (w[0] == "a" || w[0] == "s" || w[0] == "g")
+      if (w[0] == "a" || w[0] == "s" || w[0] == "g") {
         if (auto e = w[0] == "g" ? declare_guard(w) : declare(w)) return at(line, *e);
+        vars_[std::stoul(w[1])].line = line;
+      }
     ClauseProof proof(static_cast<uint32_t>(vars_.size()));
     proof_ = &proof;
     for (size_t v = 1; v < vars_.size(); ++v)
       if (vars_[v].selector)
-        if (auto e = define_selector(static_cast<int>(v))) return *e;
+        if (auto e = define_selector(static_cast<int>(v))) return at(vars_[v].line, *e);
     bool ended = false;
     for (const auto& [line, w] : c_.body) {
       if (w[0] == "a" || w[0] == "s" || w[0] == "g") continue;

@@ -522,9 +522,9 @@ bool no_shortcuts(ContinuousEngine e) {
 void prove_clamped_no(GeneralRun& run, const Component& comp, const ConstraintSystem& sys,
                       const ComponentFaces& comp_faces) {
   *run.proof = {};
-  const auto why = continuous_sat_unsupported(sys, comp.pairs, comp_faces);
+  const auto why = continuous_sat_unsupported(sys, comp.pairs);
   const std::string none = "decided by Z3 on the clamped encoding" + (why ? " (" + *why + ")" : std::string());
-  if (!continuous_sat_unsupported(sys, comp.pairs, comp_faces, true)) {
+  if (!continuous_sat_unsupported(sys, comp.pairs, true)) {
     ContinuousSatOptions o;
     o.proof = run.proof;
     o.relax_covers = true;
@@ -565,7 +565,7 @@ Verdict solve_hard_component(GeneralRun& run, const Component& comp, const Const
   ComponentFaces comp_faces;
   for (uint32_t fi : comp.faces) comp_faces.push_back(&faces.faces[fi]);
   const bool sat_ok = run.encoding == PairEncoding::Auto && run.engine != ContinuousEngine::Z3 &&
-                      !continuous_sat_unsupported(sys, comp.pairs, comp_faces);
+                      !continuous_sat_unsupported(sys, comp.pairs);
   if (sat_ok) {
     ContinuousSatOptions o;
     o.difference_logic = run.engine != ContinuousEngine::Sat && run.engine != ContinuousEngine::SatNoShortcuts;

@@ -150,7 +150,7 @@ class Engine {
       }
       if (v == Verdict::Unknown) throw LimitReached{};
       std::vector<Rational> t;
-      if (!check_model(t)) continue;
+      if (!check_model(t) || !check_faces(t)) continue;
       return answer_yes(std::move(t));
     }
   }
@@ -237,31 +237,70 @@ class Engine {
 
   // Face fi stays closed (see the header): for each coupling q of the face
   // and each way the others start (0: before q, 1: with q, 2: after q)
-  // whose nets with q's do not sum to zero, the clause "not this way".
+  // whose nets with q's do not sum to zero, the clause "not this way". A
+  // face of more than kEagerFaceCouplings couplings only gets its atoms
+  // here; check_faces adds its clauses when a model opens it.
   void encode_face(uint32_t fi) {
     const auto& nets = faces_[fi]->nets;
     const size_t m = nets.size();
-    for (size_t j = 0; j < m; ++j) {
-      const uint32_t q = local_.at(nets[j].first);
+    if (m > kEagerFaceCouplings) {
+      lazy_faces_.push_back(fi);
+      for (size_t j = 0; j < m; ++j)  // every atom now: Z3's copy of the encoding is built once
+        for (size_t p = j + 1; p < m; ++p) diff_lit(local_.at(nets[p].first), local_.at(nets[j].first), 1);
+      return;
+    }
+    for (size_t j = 0; j < m; ++j)
       each_choice(m, j, [&](const std::vector<int>& state) {
         budget_.poll();
-        Vec2 sum = nets[j].second;
-        for (size_t p = 0; p < m; ++p)
-          if (p != j && state[p] == 1) sum += nets[p].second;
-        if (sum.is_zero()) return;
-        std::vector<int> clause;
-        for (size_t p = 0; p < m; ++p) {
-          if (p == j) continue;
-          const uint32_t r = local_.at(nets[p].first);
-          if (state[p] != 2) clause.push_back(-diff_lit(r, q, state[p] == 0 ? 1 : 2));  // not t_r < / <= t_q
-          if (state[p] != 0) clause.push_back(diff_lit(r, q, state[p] == 1 ? 1 : 2));   // t_r < t_q / <= t_q
-        }
-        const ClauseReason outer = reason_;
-        reason_ = {ContinuousProof::Reason::Face, fi, q, 0};
-        add_clause(clause);
-        reason_ = outer;
+        face_clause(fi, j, state);
       });
+  }
+
+  // The clause "coupling j of face fi does not start so (state, as in
+  // encode_face)" if the nets of j and of those that start with it do not
+  // sum to zero; true if it added it.
+  bool face_clause(uint32_t fi, size_t j, const std::vector<int>& state) {
+    const auto& nets = faces_[fi]->nets;
+    Vec2 sum = nets[j].second;
+    for (size_t p = 0; p < nets.size(); ++p)
+      if (p != j && state[p] == 1) sum += nets[p].second;
+    if (sum.is_zero()) return false;
+    const uint32_t q = local_.at(nets[j].first);
+    std::vector<int> clause;
+    for (size_t p = 0; p < nets.size(); ++p) {
+      if (p == j) continue;
+      const uint32_t r = local_.at(nets[p].first);
+      if (state[p] != 2) clause.push_back(-diff_lit(r, q, state[p] == 0 ? 1 : 2));  // not t_r < / <= t_q
+      if (state[p] != 0) clause.push_back(diff_lit(r, q, state[p] == 1 ? 1 : 2));   // t_r < t_q / <= t_q
     }
+    const ClauseReason outer = reason_;
+    reason_ = {ContinuousProof::Reason::Face, fi, q, 0};
+    add_clause(clause);
+    reason_ = outer;
+    return true;
+  }
+
+  // The lazy faces at the start times t: for each face that opens, the
+  // clause of how its couplings start in t (one per face). True if none
+  // opens. O(m^2) per lazy face of m couplings.
+  bool check_faces(const std::vector<Rational>& t) {
+    bool closed = true;
+    for (uint32_t fi : lazy_faces_) {
+      const auto& nets = faces_[fi]->nets;
+      for (size_t j = 0; j < nets.size(); ++j) {
+        const Rational& tq = t[local_.at(nets[j].first)];
+        std::vector<int> state(nets.size(), 1);
+        for (size_t p = 0; p < nets.size(); ++p) {
+          const Rational& tr = t[local_.at(nets[p].first)];
+          state[p] = tr < tq ? 0 : tr == tq ? 1 : 2;
+        }
+        if (face_clause(fi, j, state)) {
+          closed = false;
+          break;
+        }
+      }
+    }
+    return closed;
   }
 
   // The relaxation of a pair of several forms that can be <= 0 together
@@ -697,32 +736,47 @@ class Engine {
     bool with_linear = false;
     for (;;) {
       build_z3(with_linear, true);
-      for (const std::vector<int>& c : clauses_) {
-        z3::expr_vector lits(*z3ctx_);
-        for (int l : c) lits.push_back(z3_lit(l));
-        z3s_->add(z3::mk_or(lits));
+      size_t given = 0;  // clauses_ given to Z3
+      for (;;) {
+        for (; given < clauses_.size(); ++given) {
+          z3::expr_vector lits(*z3ctx_);
+          for (int l : clauses_[given]) lits.push_back(z3_lit(l));
+          z3s_->add(z3::mk_or(lits));
+        }
+        if (decide_once(with_linear, out)) return out;
+        if (with_linear_next_) break;
       }
-      const z3::check_result cr = check_interruptible();
-      if (cr == z3::unknown) throw LimitReached{};
-      if (cr == z3::unsat) {
-        if (proof_) write_proof(with_linear);
-        out.verdict = Verdict::No;
-        return out;
-      }
-      const z3::model model = z3s_->get_model();
-      std::vector<Rational> t = z3_times(model);
-      bool linear_ok = true;
-      for (const LinRule& r : lin_rules_) {
-        bool guard = true;
-        for (int l : r.guard) guard = guard && model.eval(z3_lit(l), true).is_true();
-        if (guard && (z3_for_linear || !holds(r, t))) linear_ok = false;
-      }
-      if (!linear_ok && !with_linear) {
-        with_linear = true;
-        continue;
-      }
-      return answer_yes(std::move(t));
+      with_linear = true;
     }
+  }
+
+  // One Z3 call of run_difference_logic: true with out set if decided;
+  // false if check_faces added clauses (run again) or, with
+  // with_linear_next_ set, a linear rule failed (run again with them).
+  bool decide_once(bool with_linear, ContinuousSatOutcome& out) {
+    with_linear_next_ = false;
+    const z3::check_result cr = check_interruptible();
+    if (cr == z3::unknown) throw LimitReached{};
+    if (cr == z3::unsat) {
+      if (proof_) write_proof(with_linear);
+      out.verdict = Verdict::No;
+      return true;
+    }
+    const z3::model model = z3s_->get_model();
+    std::vector<Rational> t = z3_times(model);
+    if (!check_faces(t)) return false;
+    bool linear_ok = true;
+    for (const LinRule& r : lin_rules_) {
+      bool guard = true;
+      for (int l : r.guard) guard = guard && model.eval(z3_lit(l), true).is_true();
+      if (guard && (z3_for_linear || !holds(r, t))) linear_ok = false;
+    }
+    if (!linear_ok && !with_linear) {
+      with_linear_next_ = true;
+      return false;
+    }
+    out = answer_yes(std::move(t));
+    return true;
   }
 
   // Proof mode: the canonical variable of bound b (local indices) as a
@@ -855,13 +909,15 @@ class Engine {
   }
 
   // Proof mode, when a pair can never be free (encode() failed): one
-  // interval clause without literals, or no proof for a gap.
+  // interval clause without literals, or for a gap an event clause before
+  // every start.
   void proof_of_failed_pair() {
     ContinuousProof& p = *proof_;
     p = {};
     const CollisionConstraint& c = sys_.constraints[failed_];
-    if (c.rel.size() > 2) return void(p.why_none = "a gap that is open before anything starts (not certified yet)");
-    proof_clause({ContinuousProof::Reason::Interval, failed_, 0, 0}, {});
+    if (c.rel.size() > 2)  // a gap open before anything starts: the pair collides then
+      proof_clause({ContinuousProof::Reason::Event, failed_, kNone, 0}, {});
+    else proof_clause({ContinuousProof::Reason::Interval, failed_, 0, 0}, {});
     p.complete = true;
   }
 
@@ -1079,6 +1135,8 @@ class Engine {
   std::vector<Bound> static_;
   std::vector<DiffRule> diff_rules_;
   std::vector<LinRule> lin_rules_;
+  std::vector<uint32_t> lazy_faces_;  // faces of more than kEagerFaceCouplings couplings
+  bool with_linear_next_ = false;     // see decide_once
   int64_t scale_ = 1;
   std::vector<uint64_t> seen_;
   std::vector<std::vector<uint32_t>> rev_;
@@ -1101,10 +1159,7 @@ class Engine {
 }  // namespace
 
 std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sys, const std::vector<uint32_t>& pairs,
-                                                      const ComponentFaces& faces, bool relax_covers) {
-  for (const FaceNets::Face* f : faces)
-    if (f->nets.size() > kMaxFaceCouplings)
-      return "a face of more than " + std::to_string(kMaxFaceCouplings) + " couplings with non-zero nets";
+                                                      bool relax_covers) {
   for (uint32_t ci : pairs) {
     const CollisionConstraint& c = sys.constraints[ci];
     if (c.rel.size() <= 2) continue;

@@ -43,11 +43,14 @@
 // is zero everywhere iff each of these sums is). For each coupling q of a
 // face, every way the others can start (before, with or after q) whose
 // "with q" nets do not sum to zero is excluded by one clause over the atoms
-// [t_r - t_q < 0] and [t_r - t_q <= 0]: 3^(m-1) per coupling of a face of m.
+// [t_r - t_q < 0] and [t_r - t_q <= 0]: 3^(m-1) per coupling of a face of m
+// couplings with non-zero nets, all before the search when m is at most
+// kEagerFaceCouplings, else only those of the ways the models take: each
+// model is checked face by face and a face that opens gives the clause of
+// how its couplings start in that model (one per face and model).
 //
 // Not supported (continuous_sat_unsupported says why; the caller uses Z3 on
-// the whole component instead): faces of more than kMaxFaceCouplings
-// couplings with non-zero nets, pairs of
+// the whole component instead): pairs of
 // three or more couplings with several forms unless no two of their forms can
 // be <= 0 together (then one form is a gap, picked by a selector), gaps of
 // more than kMaxGapCouplings couplings.
@@ -74,17 +77,19 @@ using FreeOffsetsCache = std::map<std::vector<int64_t>, std::vector<OffsetInterv
 const std::vector<OffsetInterval>& cached_free_offsets(const CollisionConstraint& c, FreeOffsetsCache& cache);
 
 inline constexpr size_t kMaxGapCouplings = 8;
-inline constexpr size_t kMaxFaceCouplings = 6;
+// Faces of at most this many couplings with non-zero nets get every clause
+// before the search; larger ones get theirs when a model opens them.
+inline constexpr size_t kEagerFaceCouplings = 6;
 
 // The faces of one component (pointers into a FaceNets).
 using ComponentFaces = std::vector<const FaceNets::Face*>;
 
 // nullopt if solve_component_sat can decide the component made of `pairs`
-// (indices into sys) and `faces` (with relax_covers: can take it with
+// (indices into sys) and any faces (with relax_covers: can take it with
 // ContinuousSatOptions::relax_covers); else the reason it cannot.
-// O(pairs * forms^2 + faces).
+// O(pairs * forms^2).
 std::optional<std::string> continuous_sat_unsupported(const ConstraintSystem& sys, const std::vector<uint32_t>& pairs,
-                                                      const ComponentFaces& faces, bool relax_covers = false);
+                                                      bool relax_covers = false);
 
 struct ContinuousSatOutcome {
   Verdict verdict = Verdict::Unknown;

@@ -25,7 +25,9 @@
 #include "lattice/random_instance.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
+#include "solver/continuous.hpp"
 #include "solver/continuous_pairs.hpp"
+#include "solver/continuous_sat.hpp"
 #include "solver/no_certificate.hpp"
 #include "support/cli.hpp"
 #include "support/general_params.hpp"
@@ -44,7 +46,7 @@ RandomInstanceParams general_params(uint64_t seed) { return test::general_params
 struct Counts {
   int rich = 0;  // certificates with event or theory lines (not a lone pair that always collides)
   int no = 0, certified = 0, uncertified = 0, yes = 0, twin = 0, mutations = 0, rejected = 0, drops = 0,
-      drops_rejected = 0, faces = 0, face_lines = 0;
+      drops_rejected = 0, faces = 0, face_lines = 0, other_no = 0;
 };
 
 // The words of a line.
@@ -105,9 +107,12 @@ class Mutator {
     forms_line();
     theory_line();
     face_line();
+    // Another instance: refused, unless it is NO for the same reasons (the
+    // checker derives everything from the instance it is given).
     ++n_.mutations;
     if (!certify(other, join_lines(ls_), "continuous").proved) ++n_.rejected;
-    else ADD_FAILURE() << "seed " << seed_ << ": accepted for another instance";
+    else if (solve_continuous(other, SolveOptions{}).status == Verdict::No) ++n_.rejected, ++n_.other_no;
+    else ADD_FAILURE() << "seed " << seed_ << ": accepted for another instance, which is not NO";
     EXPECT_FALSE(certify(inst_, join_lines(ls_), "discrete").proved);
   }
 
@@ -307,6 +312,45 @@ TEST(CertifyBounds, RandomGeneralInstances) {
 // Random 3-SAT formulas through the continuous reduction (a tree shape with
 // one vertical operation): every unsatisfiable one is certified in
 // continuous time and accepted; satisfiable ones are YES.
+// Shapes with many faces (`gridlock random --family cycles`): faces of more
+// than kEagerFaceCouplings couplings get their clauses from the models
+// (check_faces). The default engine agrees with Z3 on the clamped encoding,
+// and every NO is certified and accepted.
+TEST(CertifyBounds, LargeFacesAgreeWithZ3AndAreCertified) {
+  const uint64_t base = test::base_seed(9500);
+  const int per_size = test::scaled(20);
+  int no = 0, yes = 0, large = 0;
+  for (uint32_t k : {8u, 12u, 16u})
+    for (int i = 0; i < per_size; ++i) {
+      const uint64_t seed = base + uint64_t{k} * 1000 + static_cast<uint64_t>(i);
+      RandomFamilyParams fp;
+      fp.family = ShapeFamily::Cycles;
+      fp.couplings = k;
+      const Instance inst = random_family_instance(fp, seed);
+      if (inst.horizontal_only()) continue;
+      const FaceNets faces = FaceNets::build(inst);
+      large += std::any_of(faces.faces.begin(), faces.faces.end(),
+                           [](const FaceNets::Face& f) { return f.nets.size() > kEagerFaceCouplings; });
+      SolveOptions opt;
+      opt.seconds = 20;
+      const CertifiedContinuous cc = solve_continuous_certified(inst, opt);
+      const ContinuousResult z3 = solve_continuous(inst, opt, ContinuousEngine::Z3);
+      ASSERT_NE(cc.result.status, Verdict::Unknown) << "seed " << seed << " k " << k;
+      EXPECT_EQ(cc.result.status, z3.status) << "seed " << seed << " k " << k;
+      if (cc.result.status == Verdict::Yes) {
+        ++yes;
+        continue;
+      }
+      ++no;
+      ASSERT_FALSE(cc.certificate.empty()) << "seed " << seed << " k " << k << ": " << cc.why_none;
+      const CertifyResult r = certify(inst, cc.certificate, "continuous");
+      EXPECT_TRUE(r.proved) << "seed " << seed << " k " << k << ": " << r.reason;
+    }
+  std::printf("large faces: %d instances with a face of more than %zu couplings; %d NO certified, %d YES\n", large,
+              kEagerFaceCouplings, no, yes);
+  EXPECT_GT(large, per_size);
+}
+
 TEST(CertifyBounds, CompiledFormulas) {
   const uint64_t base = test::base_seed(9300);
   int no = 0;
