@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "collide/collide_tree.hpp"
+#include "collide/single_coupling.hpp"
 
 namespace gridlock {
 
@@ -148,15 +149,18 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     return finish_with(res, sim, schedule_from_order(order_starting_with(inst, {f.nets.front().first})));
   }
 
-  // 2. One coupling: one schedule in both models.
+  // 2. One coupling: one schedule in both models, decided by the
+  // space-time cell sweep (single_coupling.hpp); a YES is then simulated.
   if (method == CollideMethod::Auto && nq == 1) {
     res.algorithm = "single-coupling";
-    res.complexity = "one simulation";
-    Schedule s = schedule_from_order({0});
-    SimResult run = sim.run(s);
-    if (!run.collision) return res;
-    if (run.collision->kind == Collision::Kind::Node) res.region_a = run.collision->a, res.region_b = run.collision->b;
-    return finish_with(res, sim, s);
+    res.complexity = "O(n + M log M + T): M cell-time items (total motion), T pair tests";
+    SingleCouplingStats st;
+    auto pair = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline);
+    res.stats.cell_items = st.items;
+    res.stats.pair_tests = st.tests;
+    if (!pair) return res;
+    res.region_a = pair->a, res.region_b = pair->b;
+    return finish_with(res, sim, schedule_from_order({0}));
   }
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).
