@@ -110,7 +110,8 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
   SimStats ss;
   for (auto _ : state) {
     if (how == 0 || how == 1) {
-      CollideResult r = find_collision(inst, TimeModel::Continuous, how == 1 ? CollideMethod::Pairwise : CollideMethod::Auto);
+      CollideResult r = find_collision(inst, TimeModel::Continuous,
+                                       how == 1 ? CollideMethod::Pairwise : CollideMethod::Auto);
       if (how == 0 && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
       yes = r.collides;
       st.items = r.stats.cell_items, st.tests = r.stats.pair_tests;
@@ -310,7 +311,7 @@ void register_large_serpentines() {
           ->Args({n, how})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
-  for (int64_t n : {32768, 65536, 131072})
+  for (int64_t n : {32768, 65536, 131072, 262144})
     for (int64_t how : {0, 2})
       benchmark::RegisterBenchmark("BM_DiagonalSingleCoupling", BM_DiagonalSingleCoupling)
           ->Args({n, how})

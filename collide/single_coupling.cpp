@@ -63,8 +63,8 @@ bool overlap(const Faces& A, const Faces& B) {
   if (s.empty() || b.empty()) return false;
   if (less(s.lo, b.lo)) s.lo = b.lo;
   if (less(b.hi, s.hi)) s.hi = b.hi;
-  for (int axis = 0; axis < 2; ++axis) {
-    const Lin &alo = A[2 * axis], &ahi = A[2 * axis + 1], &blo = B[2 * axis], &bhi = B[2 * axis + 1];
+  for (size_t lo = 0; lo < 4; lo += 2) {
+    const Lin &alo = A[lo], &ahi = A[lo + 1], &blo = B[lo], &bhi = B[lo + 1];
     s.cut(ahi.a - blo.a, ahi.b - blo.b);
     s.cut(bhi.a - alo.a, bhi.b - alo.b);
   }
@@ -183,15 +183,16 @@ std::optional<RegionPair> single_coupling_sweep(const Instance& inst, const Span
     const Faces& f = faces[r];
     if (alive(f).empty()) continue;
     ++st.regions;
-    const auto speed = [&](int lo) { return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b))); };
+    const auto speed = [&](int lo) {
+      return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b)));
+    };
     st.motion += 1 + speed(0) + speed(2);
     add_items(f, r, items);
   }
   if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items");
   st.items = items.size();
-  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) {
-    return x.cell != y.cell ? x.cell < y.cell : less(x.lo, y.lo);
-  });
+  std::sort(items.begin(), items.end(),
+            [](const Item& x, const Item& y) { return x.cell != y.cell ? x.cell < y.cell : less(x.lo, y.lo); });
   std::optional<RegionPair> found;
   std::vector<uint32_t> active;
   size_t cells = 0;

@@ -51,7 +51,6 @@ std::optional<RegionPair> single_coupling_sweep(const Instance& inst, const Span
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.
-std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,
-                                                   const Regions& regions);
+std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t, const Regions& regions);
 
 }  // namespace gridlock
