@@ -153,14 +153,17 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   // space-time cell sweep (single_coupling.hpp); a YES is then simulated.
   if (method == CollideMethod::Auto && nq == 1) {
     res.algorithm = "single-coupling";
-    res.complexity = "O(n + M log M + T): M cell-time items (total motion), T pair tests";
+    res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
     SingleCouplingStats st;
-    auto pair = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline);
+    const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline);
     res.stats.cell_items = st.items;
     res.stats.pair_tests = st.tests;
-    if (!pair) return res;
-    res.region_a = pair->a, res.region_b = pair->b;
-    return finish_with(res, sim, schedule_from_order({0}));
+    if (!ans.collides) return res;
+    if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
+    finish_with(res, sim, schedule_from_order({0}));
+    if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
+      res.region_a = res.simulated->a, res.region_b = res.simulated->b;
+    return res;
   }
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).

@@ -147,12 +147,18 @@ void add_items(const Faces& f, uint32_t r, std::vector<Item>& items) {
   }
 }
 
+// More items present in one cell at one moment than this prove a
+// collision (docs/collide.md, "One coupling", the packing lemma): in a
+// configuration without overlaps at most 18 regions at least 1/2 wide and
+// 25 thinner ones meet one open unit cell.
+constexpr size_t kPackingBound = 43;
+
 // One cell's items [b, e), sorted by start: each entering item is tested
 // against the items still present (open spans: present iff hi > lo of the
-// entering one).
-std::optional<RegionPair> sweep_cell(const std::vector<Item>& items, size_t b, size_t e,
-                                     const std::vector<Faces>& faces, std::vector<uint32_t>& active,
-                                     SingleCouplingStats& st) {
+// entering one). Stops at the first overlap (collides, with the pair) or
+// when more than kPackingBound items are present (collides, no pair).
+SingleCouplingAnswer sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::vector<Faces>& faces,
+                                std::vector<uint32_t>& active, SingleCouplingStats& st) {
   active.clear();
   for (size_t k = b; k < e; ++k) {
     const Item& x = items[k];
@@ -161,20 +167,22 @@ std::optional<RegionPair> sweep_cell(const std::vector<Item>& items, size_t b, s
       if (less(x.lo, items[y].hi)) active[keep++] = y;
     active.resize(keep);
     st.max_active = std::max<uint64_t>(st.max_active, keep);
+    if (keep > kPackingBound) return SingleCouplingAnswer{true, std::nullopt};
     for (uint32_t y : active) {
       ++st.tests;
       if (overlap(faces[x.region], faces[items[y].region]))
-        return RegionPair{std::min(x.region, items[y].region), std::max(x.region, items[y].region)};
+        return SingleCouplingAnswer{
+            true, RegionPair{std::min(x.region, items[y].region), std::max(x.region, items[y].region)}};
     }
     active.push_back(static_cast<uint32_t>(k));
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace
 
-std::optional<RegionPair> single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
-                                                SingleCouplingStats* stats, const Deadline* deadline) {
+SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
+                                           SingleCouplingStats* stats, const Deadline* deadline) {
   SingleCouplingStats st;
   const std::vector<Faces> faces = region_faces(inst, t, regions);
   std::vector<Item> items;
@@ -193,10 +201,10 @@ std::optional<RegionPair> single_coupling_sweep(const Instance& inst, const Span
   st.items = items.size();
   std::sort(items.begin(), items.end(),
             [](const Item& x, const Item& y) { return x.cell != y.cell ? x.cell < y.cell : less(x.lo, y.lo); });
-  std::optional<RegionPair> found;
+  SingleCouplingAnswer found;
   std::vector<uint32_t> active;
   size_t cells = 0;
-  for (size_t b = 0, e = 0; b < items.size() && !found; b = e) {
+  for (size_t b = 0, e = 0; b < items.size() && !found.collides; b = e) {
     if (deadline && ++cells % 4096 == 0) deadline->check();
     for (e = b + 1; e < items.size() && items[e].cell == items[b].cell;) ++e;
     found = sweep_cell(items, b, e, faces, active, st);

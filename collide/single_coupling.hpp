@@ -12,9 +12,9 @@
 // the cell's interior); two regions that overlap at time t meet a common
 // cell at t, so per cell a sweep over time that tests each item against
 // the items still present finds every colliding pair. Cost
-// O(n + M log M + T) for M items, M = O(sum over regions of
-// 1 + |speed_x| + |speed_y|) in that frame, and T exact pair tests
-// (proof and the bound on T: docs/collide.md).
+// O(n + mu log mu) for the total motion mu = sum over regions of
+// 1 + |speed_x| + |speed_y| in that frame: at most 6 mu items, and at most
+// 43 exact tests per item (a packing lemma; proofs in docs/collide.md).
 #pragma once
 
 #include <cstdint>
@@ -38,16 +38,24 @@ struct RegionPair {
   uint32_t a = 0, b = 0;  // a < b
 };
 
-// The pair found (some colliding pair, not necessarily the first in time),
-// or nullopt if no two regions overlap while every operation of `inst` runs
-// together from t = 0 to 1. The operations need not be in one coupling
+struct SingleCouplingAnswer {
+  bool collides = false;
+  // Set when an exact test found it (some colliding pair, not necessarily
+  // the first in time); unset with collides when the packing bound decided
+  // (more items in one cell at one moment than a configuration without
+  // overlaps allows: docs/collide.md), the pair then to be found by the
+  // simulator.
+  std::optional<RegionPair> pair;
+};
+
+// Do two regions overlap while every operation of `inst` runs together
+// from t = 0 to 1? The operations need not be in one coupling
 // (all run at once either way); with one coupling this is the node part of
 // the Colliding Schedule answer. t is the spanning tree of `inst`, regions
 // its Regions. Checks deadline (if given) every few thousand items.
 // Throws std::overflow_error when a coordinate leaves 32 bits.
-std::optional<RegionPair> single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
-                                                SingleCouplingStats* stats = nullptr,
-                                                const Deadline* deadline = nullptr);
+SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
+                                           SingleCouplingStats* stats = nullptr, const Deadline* deadline = nullptr);
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.
