@@ -114,11 +114,32 @@ struct Item {
   uint32_t region = 0;
 };
 
-uint64_t cell_key(int64_t x, int64_t y) {
-  constexpr int64_t lim = INT32_MAX - 1;
-  if (x < -lim || x > lim || y < -lim || y > lim)
-    throw std::overflow_error("single_coupling_sweep: a cell coordinate does not fit 32 bits");
-  return (static_cast<uint64_t>(static_cast<uint32_t>(x)) << 32) | static_cast<uint32_t>(y);
+// Cells are keyed relative to an origin below every region's sweep, so a
+// key needs 32 bits per axis only for the extent of the motion (O(n) for a
+// connected shape), not for the coordinates themselves.
+struct CellKeys {
+  int64_t x0 = 0, y0 = 0;
+  uint64_t key(int64_t x, int64_t y) const {
+    const int64_t dx = x - x0, dy = y - y0;
+    if (dx < 0 || dy < 0 || dx > UINT32_MAX || dy > UINT32_MAX)
+      throw std::overflow_error("single_coupling_sweep: the motion spans more than 2^32 cells");
+    return (static_cast<uint64_t>(dx) << 32) | static_cast<uint64_t>(dy);
+  }
+};
+
+// The origin: the least x and y any region reaches over [0, 1].
+CellKeys cell_keys(const std::vector<Faces>& faces) {
+  CellKeys k;
+  bool first = true;
+  for (const Faces& f : faces) {
+    const int64_t x = std::min(f[0].a, f[0].a + f[0].b), y = std::min(f[2].a, f[2].a + f[2].b);
+    if (first || x < k.x0) k.x0 = x;
+    if (first || y < k.y0) k.y0 = y;
+    first = false;
+  }
+  k.y0 -= 1;  // rows start at the floor of ylo, which may lie one below at an interval end
+  k.x0 -= 1;
+  return k;
 }
 
 // Appends r's items: for each column the region meets, the time span it
@@ -127,7 +148,7 @@ uint64_t cell_key(int64_t x, int64_t y) {
 // 3 + the y extent swept during its span, and the spans of the columns
 // cover each t at most twice (a region is at most one cell wide), so
 // O(1 + |speed_x| + |speed_y|) items.
-void add_items(const Faces& f, uint32_t r, std::vector<Item>& items) {
+void add_items(const Faces& f, uint32_t r, const CellKeys& keys, std::vector<Item>& items) {
   const Span life = alive(f);
   if (life.empty()) return;
   const int64_t x0 = std::min(f[0].a, f[0].a + f[0].b), x1 = std::max(f[1].a, f[1].a + f[1].b);
@@ -142,7 +163,7 @@ void add_items(const Faces& f, uint32_t r, std::vector<Item>& items) {
       Span s = sx;
       s.cut(j + 1 - f[2].a, -f[2].b);  // ylo < j + 1
       s.cut(f[3].a - j, f[3].b);       // yhi > j
-      if (!s.empty()) items.push_back(Item{cell_key(i, j), s.lo, s.hi, r});
+      if (!s.empty()) items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
     }
   }
 }
@@ -185,6 +206,7 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
                                            SingleCouplingStats* stats, const Deadline* deadline) {
   SingleCouplingStats st;
   const std::vector<Faces> faces = region_faces(inst, t, regions);
+  const CellKeys keys = cell_keys(faces);
   std::vector<Item> items;
   for (uint32_t r = 0; r < faces.size(); ++r) {
     if (deadline && r % 4096 == 4095) deadline->check();
@@ -195,7 +217,7 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
       return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b)));
     };
     st.motion += 1 + speed(0) + speed(2);
-    add_items(f, r, items);
+    add_items(f, r, keys, items);
   }
   if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items");
   st.items = items.size();

@@ -53,7 +53,8 @@ struct SingleCouplingAnswer {
 // (all run at once either way); with one coupling this is the node part of
 // the Colliding Schedule answer. t is the spanning tree of `inst`, regions
 // its Regions. Checks deadline (if given) every few thousand items.
-// Throws std::overflow_error when a coordinate leaves 32 bits.
+// Throws std::overflow_error if the motion spans more than 2^32 cells along
+// an axis (not with coordinates within kMaxCoordinate and n < 10^9).
 SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
                                            SingleCouplingStats* stats = nullptr, const Deadline* deadline = nullptr);
 

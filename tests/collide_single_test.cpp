@@ -151,17 +151,8 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
   EXPECT_LT(items[1], 80 * items[0]) << items[0] << " -> " << items[1];
 }
 
-// A U of four nodes, (0,0)-(1,0)-(1,1)-(0,1), with no edge between its
-// ends: contracting (1,1) into (1,0) pulls (0,1) down onto (0,0).
-TEST(SingleCouplingSweep, NamesThePairOfACollision) {
-  InstanceBuilder b;
-  for (Vec2 c : {Vec2{0, 0}, Vec2{1, 0}, Vec2{1, 1}, Vec2{0, 1}}) ASSERT_FALSE(b.add_node(c));
-  ASSERT_FALSE(b.add_edge(Vec2{0, 0}, Vec2{1, 0}));
-  ASSERT_FALSE(b.add_edge(Vec2{1, 0}, Vec2{1, 1}));
-  ASSERT_FALSE(b.add_edge(Vec2{1, 1}, Vec2{0, 1}));
-  ASSERT_FALSE(b.add_op("c", OpKind::Contract, Vec2{1, 0}, Dir::PosY));
-  Instance inst;
-  ASSERT_FALSE(b.finish(inst));
+// The U below: the sweep names (0,0) and (0,1), and so does find_collision.
+void check_u(const Instance& inst) {
   Simulator sim(inst);
   const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions());
   ASSERT_TRUE(ans.collides);
@@ -173,6 +164,24 @@ TEST(SingleCouplingSweep, NamesThePairOfACollision) {
   EXPECT_EQ(r.algorithm, "single-coupling");
   EXPECT_EQ(r.region_a, 0u);
   EXPECT_EQ(r.region_b, 3u);
+}
+
+// A U of four nodes, (0,0)-(1,0)-(1,1)-(0,1), with no edge between its
+// ends: contracting (1,1) into (1,0) pulls (0,1) down onto (0,0).
+// Also at the corner of the coordinate range (cells are keyed relative to
+// the motion's lower left).
+TEST(SingleCouplingSweep, NamesThePairOfACollision) {
+  for (Vec2 o : {Vec2{0, 0}, Vec2{kMaxCoordinate - 1, -kMaxCoordinate}}) {
+    InstanceBuilder b;
+    for (Vec2 c : {Vec2{0, 0}, Vec2{1, 0}, Vec2{1, 1}, Vec2{0, 1}}) ASSERT_FALSE(b.add_node(o + c));
+    ASSERT_FALSE(b.add_edge(o + Vec2{0, 0}, o + Vec2{1, 0}));
+    ASSERT_FALSE(b.add_edge(o + Vec2{1, 0}, o + Vec2{1, 1}));
+    ASSERT_FALSE(b.add_edge(o + Vec2{1, 1}, o + Vec2{0, 1}));
+    ASSERT_FALSE(b.add_op("c", OpKind::Contract, o + Vec2{1, 0}, Dir::PosY));
+    Instance inst;
+    ASSERT_FALSE(b.finish(inst));
+    check_u(inst);
+  }
 }
 
 }  // namespace
