@@ -119,6 +119,31 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.no, cases / 10);
 }
 
+// Larger shapes, long paths: more motion, more items per cell.
+TEST(SingleCouplingSweep, AgreesWithTwinsOnLargerInstances) {
+  const uint64_t seed0 = test::base_seed(26000);
+  const int cases = test::scaled(200);
+  Tally tally;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    Rng rng(seed * 104729 + 5);
+    RandomInstanceParams p = single_params(rng);
+    p.nodes = 100 + static_cast<uint32_t>(rng.below(300));
+    p.ops = 1 + static_cast<uint32_t>(rng.below(p.nodes / 2));
+    p.path_shape = rng.below(2) == 0;
+    if (rng.below(2) == 0) p.allow_contract = p.allow_grow = false;  // expansions only: more NO
+    const Instance inst = one_coupling(random_instance(p, seed));
+    const std::string where = "seed " + std::to_string(seed) + " (nodes " + std::to_string(p.nodes) + ", ops " +
+                              std::to_string(p.ops) + "); replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+    check_instance(inst, where, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[ info ] " << tally.cases << " instances (" << tally.yes << " node collisions, " << tally.no
+            << " none; most items present at an entry " << tally.max_active << ")\n";
+  EXPECT_GT(tally.no, cases / 10);
+  EXPECT_GT(tally.yes, cases / 10);
+}
+
 // The adversarial diagonal sweep: NO by construction (collide/adversarial.hpp),
 // for every method; the simulator meets many more candidate pairs than the
 // sweep has items once K grows.
