@@ -144,10 +144,10 @@ CellKeys cell_keys(const std::vector<Faces>& faces) {
 
 // Appends r's items: for each column the region meets, the time span it
 // does; for each row it meets during that span, the common span. Columns:
-// at most 2 + |speed of xlo| + |speed of xhi|; rows of one column: at most
+// at most 1 + |speed of xlo| + |speed of xhi|; rows of one column: at most
 // 3 + the y extent swept during its span, and the spans of the columns
-// cover each t at most twice (a region is at most one cell wide), so
-// O(1 + |speed_x| + |speed_y|) items.
+// cover each t at most twice (a region is at most one cell wide), so at
+// most 3 + 6 speed_x + 4 speed_y cells are visited (docs/collide.md).
 void add_items(const Faces& f, uint32_t r, const CellKeys& keys, std::vector<Item>& items) {
   const Span life = alive(f);
   if (life.empty()) return;
