@@ -22,6 +22,7 @@
 #include "collide/adversarial.hpp"
 #include "collide/collide.hpp"
 #include "collide/collide_tree.hpp"
+#include "collide/single_coupling.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
 
@@ -94,36 +95,58 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
   state.counters["full_tests"] = static_cast<double>(st.full_tests);
 }
 
-// One coupling (docs/collide.md, "Single coupling"): the square serpentine
-// with every operation in one coupling (Mixed: connectors and column
-// expansions together), answered by find_collision's single-coupling step,
-// one simulation; NO, so the simulation runs through the whole interval.
-// Contrast: the pairwise zonotope method on the same instance (range(1) = 1).
-void BM_SerpentineSingleCoupling(benchmark::State& state) {
-  SerpentineParams p = square_serpentine(state.range(0), 1u << 30, SerpentineCouplings::Mixed);
-  Instance inst = serpentine_instance(p, 1);
-  const bool pairwise = state.range(1) == 1;
-  CollideResult r;
-  for (auto _ : state)
-    r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
-  if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
+// One coupling (docs/performance.md, "One coupling"): every operation in
+// one coupling, NO, so every method runs to the end. range(1) picks the
+// method: 0 find_collision Auto (the space-time cell sweep), 1 the
+// pairwise zonotope method, 2 the exact simulator running the one schedule
+// (what Auto did before the sweep), 3 the sweep's all-pairs twin.
+// Counters: items (M) and tests (T) of the sweep, candidate pairs of the
+// simulator's broad phase.
+void single_coupling_bench(benchmark::State& state, const Instance& inst) {
+  const int64_t how = state.range(1);
+  Simulator sim(inst);
+  bool yes = false;
+  SingleCouplingStats st;
+  SimStats ss;
+  for (auto _ : state) {
+    if (how == 0 || how == 1) {
+      CollideResult r = find_collision(inst, TimeModel::Continuous,
+                                       how == 1 ? CollideMethod::Pairwise : CollideMethod::Auto);
+      if (how == 0 && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
+      yes = r.collides;
+      st.items = r.stats.cell_items, st.tests = r.stats.pair_tests;
+    } else if (how == 2) {
+      SimResult run = sim.run_order({0});
+      yes = run.collision.has_value(), ss = run.stats;
+    } else {
+      yes = single_coupling_pairwise(inst, sim.tree(), sim.regions()).has_value();
+    }
+  }
+  if (how == 0) (void)single_coupling_sweep(inst, sim.tree(), sim.regions(), &st);
   state.counters["n"] = static_cast<double>(inst.num_nodes());
-  state.counters["couplings"] = static_cast<double>(inst.couplings().size());
-  state.counters["yes"] = r.collides;
+  state.counters["yes"] = yes;
+  state.counters["items"] = static_cast<double>(st.items);
+  state.counters["tests"] = static_cast<double>(st.tests);
+  state.counters["motion"] = static_cast<double>(st.motion);
+  state.counters["max_active"] = static_cast<double>(st.max_active);
+  state.counters["sim_pairs"] = static_cast<double>(ss.candidate_pairs);
 }
 
-// One coupling on the mixed comb (n/4 expansions, spine and teeth, all in
-// one coupling; NO): the second single-coupling family.
-// range(1) = 1: the pairwise zonotope method on the same instance.
+// The mixed serpentine of n nodes with every operation in one coupling.
+void BM_SerpentineSingleCoupling(benchmark::State& state) {
+  SerpentineParams p = square_serpentine(state.range(0), 1u << 30, SerpentineCouplings::Mixed);
+  single_coupling_bench(state, serpentine_instance(p, 1));
+}
+
+// The mixed comb (n/4 expansions, spine and teeth, all in one coupling).
 void BM_CombSingleCoupling(benchmark::State& state) {
-  Instance inst = bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7);
-  const bool pairwise = state.range(1) == 1;
-  CollideResult r;
-  for (auto _ : state)
-    r = find_collision(inst, TimeModel::Continuous, pairwise ? CollideMethod::Pairwise : CollideMethod::Auto);
-  if (!pairwise && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
-  state.counters["n"] = static_cast<double>(inst.num_nodes());
-  state.counters["yes"] = r.collides;
+  single_coupling_bench(state, bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7));
+}
+
+// The diagonal sweep (collide/adversarial.hpp): quadratic candidate pairs
+// for the simulator, total motion O(n^{3/2}).
+void BM_DiagonalSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, diagonal_sweep_of_size(state.range(0)));
 }
 
 void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
@@ -180,9 +203,11 @@ BENCHMARK(BM_SerpentinePerPairMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Uni
 BENCHMARK(BM_SerpentinePerPairColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 
@@ -275,16 +300,23 @@ void register_large_serpentines() {
         ->Unit(benchmark::kMillisecond);
   }
   for (int64_t n : {16384, 65536})
-    for (int64_t how : {0, 1})
+    for (int64_t how : {0, 1, 2})
       benchmark::RegisterBenchmark("BM_CombSingleCoupling", BM_CombSingleCoupling)
           ->Args({n, how})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
   for (int64_t n : {32768, 65536, 131072})
-    benchmark::RegisterBenchmark("BM_SerpentineSingleCoupling", BM_SerpentineSingleCoupling)
-        ->Args({n, 0})
-        ->Iterations(1)
-        ->Unit(benchmark::kMillisecond);
+    for (int64_t how : {0, 2})
+      benchmark::RegisterBenchmark("BM_SerpentineSingleCoupling", BM_SerpentineSingleCoupling)
+          ->Args({n, how})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {32768, 65536, 131072, 262144})
+    for (int64_t how : {0, 2})
+      benchmark::RegisterBenchmark("BM_DiagonalSingleCoupling", BM_DiagonalSingleCoupling)
+          ->Args({n, how})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
   for (int64_t n : {144, 196, 256, 400, 576})
     for (int64_t c : {3, 0})
       benchmark::RegisterBenchmark("BM_SerpentineSubsetSumMixed", BM_SerpentineSubsetSumMixed)

@@ -84,4 +84,54 @@ SerpentineParams square_serpentine(int64_t n, uint32_t coupling_size, Serpentine
   return p;
 }
 
+Instance diagonal_sweep_instance(uint32_t K, uint32_t b) {
+  if (K == 0 || b < 3) throw std::invalid_argument("diagonal_sweep_instance: needs K >= 1 and b >= 3");
+  InstanceBuilder bl;
+  std::vector<std::string> ops;
+  // The staircase, anchor first.
+  Vec2 at{0, 0};
+  must(bl.add_node(at));
+  const Dir steps[4] = {Dir::PosX, Dir::PosX, Dir::PosY, Dir::PosY};
+  for (uint32_t m = 0; m < K; ++m)
+    for (int e = 0; e < 4; ++e) {
+      const Vec2 next = at + unit(steps[e]);
+      must(bl.add_node(next));
+      must(bl.add_edge(at, next));
+      if (e % 2 == 0) {
+        ops.push_back("s" + std::to_string(ops.size()));
+        must(bl.add_op(ops.back(), OpKind::Expand, at, steps[e]));
+      }
+      at = next;
+    }
+  const int64_t k = K, w = b, X = 3 * k + w + 1;
+  // The blob above the tip: rows joined along x, columns joined to the row below.
+  for (int64_t c = 0; c < w; ++c)
+    for (int64_t a = 0; a < w; ++a) {
+      const Vec2 cell{2 * k + a, 2 * k + 1 + c};
+      must(bl.add_node(cell));
+      if (a > 0) must(bl.add_edge(Vec2{cell.x - 1, cell.y}, cell));
+      if (c > 0 || a == 0) must(bl.add_edge(Vec2{cell.x, cell.y - 1}, cell));
+    }
+  // The floor and the static triangle, each row joined along x and to the row below.
+  for (int64_t y = -1; y + w + 2 <= X; ++y) {
+    const int64_t x0 = y < 0 ? 0 : y + w + 2;
+    for (int64_t x = x0; x <= X; ++x) {
+      must(bl.add_node(Vec2{x, y}));
+      if (x > x0) must(bl.add_edge(Vec2{x - 1, y}, Vec2{x, y}));
+      if (y >= 0) must(bl.add_edge(Vec2{x, y - 1}, Vec2{x, y}));
+      if (y < 0 && x == 0) must(bl.add_edge(Vec2{0, 0}, Vec2{0, -1}));
+    }
+  }
+  must(bl.add_coupling("Q", ops));
+  Instance inst;
+  if (auto e = bl.finish(inst)) throw std::logic_error("diagonal_sweep_instance: " + e->message);
+  return inst;
+}
+
+Instance diagonal_sweep_of_size(int64_t n) {
+  const auto K = static_cast<uint32_t>(
+      std::max<int64_t>(6, std::llround(std::sqrt(static_cast<double>(std::max<int64_t>(n, 1)) / 4.75))));
+  return diagonal_sweep_instance(K, K / 2);
+}
+
 }  // namespace gridlock

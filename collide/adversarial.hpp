@@ -62,4 +62,28 @@ Instance serpentine_instance(const SerpentineParams& p, uint64_t seed);
 // sqrt(n), at least 4) with the given couplings. O(1).
 SerpentineParams square_serpentine(int64_t n, uint32_t coupling_size, SerpentineCouplings couplings);
 
+// The diagonal sweep: a single-coupling family (every operation in one
+// coupling) on which the simulator's broad phase meets a quadratic number
+// of candidate pairs although nothing collides (docs/collide.md, "One
+// coupling"). Cells, for K >= 1 and b >= 3:
+//   - a staircase from the anchor (0,0): K periods of right, right, up, up
+//     (tip (2K, 2K)); an expansion on the first right and the first up edge
+//     of each period (no node in two operations), so the tip moves (K, K);
+//   - a b x b blob above the tip, cells (2K + a, 2K + 1 + c), moving (K, K)
+//     with it: each of its cells sweeps a diagonal band;
+//   - a static floor row y = -1, x = 0 .. X (X = 3K + b + 1), joined to the
+//     anchor, carrying the static triangle {0 <= y, y + b + 2 <= x <= X}.
+// Relative to the static part every moving cell keeps x - y within
+// [-b, 3] (motion along (1,1), or along an axis inside the staircase band),
+// the triangle has x - y >= b + 2: the answer is NO. But each blob cell's
+// swept box (K + 1 cells square) contains about (K - b)^2 / 2 triangle
+// cells, so the simulator tests about b^2 (K - b)^2 / 2 static pairs: with
+// b = K / 2, n ~ 4.75 K^2 nodes and ~ K^4 / 32 ~ n^2 / 720 candidate pairs,
+// while the total motion of the regions is O(K^3) = O(n^{3/2}).
+// Deterministic, O(n). Throws std::invalid_argument for K == 0 or b < 3.
+Instance diagonal_sweep_instance(uint32_t K, uint32_t b);
+
+// The diagonal sweep of about n nodes: K = max(6, round(sqrt(n / 4.75))), b = K / 2. O(n).
+Instance diagonal_sweep_of_size(int64_t n);
+
 }  // namespace gridlock

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "collide/collide_tree.hpp"
+#include "collide/single_coupling.hpp"
 
 namespace gridlock {
 
@@ -148,15 +149,21 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     return finish_with(res, sim, schedule_from_order(order_starting_with(inst, {f.nets.front().first})));
   }
 
-  // 2. One coupling: one schedule in both models.
+  // 2. One coupling: one schedule in both models, decided by the
+  // space-time cell sweep (single_coupling.hpp); a YES is then simulated.
   if (method == CollideMethod::Auto && nq == 1) {
     res.algorithm = "single-coupling";
-    res.complexity = "one simulation";
-    Schedule s = schedule_from_order({0});
-    SimResult run = sim.run(s);
-    if (!run.collision) return res;
-    if (run.collision->kind == Collision::Kind::Node) res.region_a = run.collision->a, res.region_b = run.collision->b;
-    return finish_with(res, sim, s);
+    res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
+    SingleCouplingStats st;
+    const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline);
+    res.stats.cell_items = st.items;
+    res.stats.pair_tests = st.tests;
+    if (!ans.collides) return res;
+    if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
+    finish_with(res, sim, schedule_from_order({0}));
+    if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
+      res.region_a = res.simulated->a, res.region_b = res.simulated->b;
+    return res;
   }
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).

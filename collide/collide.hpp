@@ -39,6 +39,8 @@ struct CollideStats {
   uint64_t full_tests = 0;  // pairs that passed the quick distance filter
   uint64_t levels = 0;      // centroid recursion depth (tree method)
   uint64_t rectangles = 0;  // rectangles swept (tree method)
+  uint64_t cell_items = 0;  // single coupling: (cell, time interval) items of the sweep (M)
+  uint64_t pair_tests = 0;  // single coupling: exact pair tests of the sweep (T)
 };
 
 struct CollideResult {

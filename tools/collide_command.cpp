@@ -117,6 +117,9 @@ int run_collide(const std::vector<std::string>& args) {
   if (res.stats.pairs)
     ans.comment("pairs: " + std::to_string(res.stats.pairs) + " considered, " + std::to_string(res.stats.full_tests) +
                 " tested in full");
+  if (res.stats.cell_items)
+    ans.comment("cell-time items: " + std::to_string(res.stats.cell_items) +
+                ", pair tests: " + std::to_string(res.stats.pair_tests));
   if (res.stats.levels)
     ans.comment("centroid levels: " + std::to_string(res.stats.levels) +
                 ", rectangles swept: " + std::to_string(res.stats.rectangles));

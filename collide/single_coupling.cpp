@@ -1,0 +1,247 @@
+#include "collide/single_coupling.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#include "common/int_math.hpp"
+
+namespace gridlock {
+
+namespace {
+
+// a + b t.
+struct Lin {
+  int64_t a = 0, b = 0;
+};
+// A region's faces xlo, xhi, ylo, yhi as functions of t.
+using Faces = std::array<Lin, 4>;
+
+// num / den, den > 0.
+struct Frac {
+  int64_t num = 0, den = 1;
+};
+bool less(const Frac& x, const Frac& y) {
+  return static_cast<__int128>(x.num) * y.den < static_cast<__int128>(y.num) * x.den;
+}
+
+// An open time interval (lo, hi) inside (0, 1); empty when lo >= hi.
+struct Span {
+  Frac lo{0, 1}, hi{1, 1};
+  bool empty() const { return !less(lo, hi); }
+  // Keeps the t with a + b t > 0.
+  void cut(int64_t a, int64_t b) {
+    if (b == 0) {
+      if (a <= 0) hi = lo;
+    } else if (b > 0) {  // t > -a / b
+      const Frac c{-a, b};
+      if (less(lo, c)) lo = c;
+    } else {  // t < a / -b
+      const Frac c{a, -b};
+      if (less(c, hi)) hi = c;
+    }
+  }
+};
+
+// The times in (0, 1) at which both of r's widths are positive.
+Span alive(const Faces& r) {
+  Span s;
+  s.cut(r[1].a - r[0].a, r[1].b - r[0].b);
+  s.cut(r[3].a - r[2].a, r[3].b - r[2].b);
+  return s;
+}
+
+// The exact test: do A and B overlap with positive area at some t in
+// (0, 1)? Eight strict linear inequalities (four overlaps, four widths).
+// An overlap at t = 1 is one just before it too (strict inequalities hold
+// on a neighbourhood), so the open interval loses nothing.
+bool overlap(const Faces& A, const Faces& B) {
+  Span s = alive(A);
+  const Span b = alive(B);
+  if (s.empty() || b.empty()) return false;
+  if (less(s.lo, b.lo)) s.lo = b.lo;
+  if (less(b.hi, s.hi)) s.hi = b.hi;
+  for (size_t lo = 0; lo < 4; lo += 2) {
+    const Lin &alo = A[lo], &ahi = A[lo + 1], &blo = B[lo], &bhi = B[lo + 1];
+    s.cut(ahi.a - blo.a, ahi.b - blo.b);
+    s.cut(bhi.a - alo.a, bhi.b - alo.b);
+  }
+  return !s.empty();
+}
+
+// The value of f at time q, floored / ceiled.
+int64_t floor_at(const Lin& f, const Frac& q) {
+  const __int128 num = static_cast<__int128>(f.a) * q.den + static_cast<__int128>(f.b) * q.num;
+  return static_cast<int64_t>(floor_div<__int128>(num, q.den));
+}
+int64_t ceil_at(const Lin& f, const Frac& q) {
+  const __int128 num = static_cast<__int128>(f.a) * q.den + static_cast<__int128>(f.b) * q.num;
+  return static_cast<int64_t>(ceil_div<__int128>(num, q.den));
+}
+
+// Every region's faces over t in [0, 1], all operations running, in the
+// frame moving with the coordinatewise median of the nodes' displacements.
+std::vector<Faces> region_faces(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+  const size_t n = inst.num_nodes();
+  std::vector<Vec2> disp(n, Vec2{0, 0});
+  for (NodeId w : t.order)
+    if (t.parent[w] != kNone) disp[w] = disp[t.parent[w]] + op_child_vector(inst, t, w);
+  Vec2 frame{0, 0};
+  if (n > 0) {
+    std::vector<int64_t> xs(n), ys(n);
+    for (size_t i = 0; i < n; ++i) xs[i] = disp[i].x, ys[i] = disp[i].y;
+    std::nth_element(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(n / 2), xs.end());
+    std::nth_element(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(n / 2), ys.end());
+    frame = Vec2{xs[n / 2], ys[n / 2]};
+  }
+  std::vector<Faces> out(regions.size());
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const RegionShape& sh = regions.shapes[r];
+    for (int f = 0; f < 4; ++f) {
+      const Vec2 v = disp[sh.ref[f]] - frame;
+      out[r][f] = Lin{sh.base[f], f < 2 ? v.x : v.y};
+      if (sh.grow_op != kNone && f == sh.grow_face) out[r][f].b += sh.grow_sign;
+    }
+  }
+  return out;
+}
+
+struct Item {
+  uint64_t cell = 0;
+  Frac lo, hi;
+  uint32_t region = 0;
+};
+
+// Cells are keyed relative to an origin below every region's sweep, so a
+// key needs 32 bits per axis only for the extent of the motion (O(n) for a
+// connected shape), not for the coordinates themselves.
+struct CellKeys {
+  int64_t x0 = 0, y0 = 0;
+  uint64_t key(int64_t x, int64_t y) const {
+    const int64_t dx = x - x0, dy = y - y0;
+    if (dx < 0 || dy < 0 || dx > UINT32_MAX || dy > UINT32_MAX)
+      throw std::overflow_error("single_coupling_sweep: the motion spans more than 2^32 cells");
+    return (static_cast<uint64_t>(dx) << 32) | static_cast<uint64_t>(dy);
+  }
+};
+
+// The origin: the least x and y any region reaches over [0, 1].
+CellKeys cell_keys(const std::vector<Faces>& faces) {
+  CellKeys k;
+  bool first = true;
+  for (const Faces& f : faces) {
+    const int64_t x = std::min(f[0].a, f[0].a + f[0].b), y = std::min(f[2].a, f[2].a + f[2].b);
+    if (first || x < k.x0) k.x0 = x;
+    if (first || y < k.y0) k.y0 = y;
+    first = false;
+  }
+  k.y0 -= 1;  // rows start at the floor of ylo, which may lie one below at an interval end
+  k.x0 -= 1;
+  return k;
+}
+
+// Appends r's items: for each column the region meets, the time span it
+// does; for each row it meets during that span, the common span. Columns:
+// at most 1 + |speed of xlo| + |speed of xhi|; rows of one column: at most
+// 3 + the y extent swept during its span, and the spans of the columns
+// cover each t at most twice (a region is at most one cell wide), so at
+// most 3 + 6 speed_x + 4 speed_y cells are visited (docs/collide.md).
+void add_items(const Faces& f, uint32_t r, const CellKeys& keys, std::vector<Item>& items) {
+  const Span life = alive(f);
+  if (life.empty()) return;
+  const int64_t x0 = std::min(f[0].a, f[0].a + f[0].b), x1 = std::max(f[1].a, f[1].a + f[1].b);
+  for (int64_t i = x0; i < x1; ++i) {
+    Span sx = life;
+    sx.cut(i + 1 - f[0].a, -f[0].b);  // xlo < i + 1
+    sx.cut(f[1].a - i, f[1].b);       // xhi > i
+    if (sx.empty()) continue;
+    const int64_t y0 = std::min(floor_at(f[2], sx.lo), floor_at(f[2], sx.hi));
+    const int64_t y1 = std::max(ceil_at(f[3], sx.lo), ceil_at(f[3], sx.hi));
+    for (int64_t j = y0; j < y1; ++j) {
+      Span s = sx;
+      s.cut(j + 1 - f[2].a, -f[2].b);  // ylo < j + 1
+      s.cut(f[3].a - j, f[3].b);       // yhi > j
+      if (!s.empty()) items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
+    }
+  }
+}
+
+// More items present in one cell at one moment than this prove a
+// collision (docs/collide.md, "One coupling", the packing lemma): in a
+// configuration without overlaps at most 18 regions at least 1/2 wide and
+// 25 thinner ones meet one open unit cell.
+constexpr size_t kPackingBound = 43;
+
+// One cell's items [b, e), sorted by start: each entering item is tested
+// against the items still present (open spans: present iff hi > lo of the
+// entering one). Stops at the first overlap (collides, with the pair) or
+// when more than kPackingBound items are present (collides, no pair).
+SingleCouplingAnswer sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::vector<Faces>& faces,
+                                std::vector<uint32_t>& active, SingleCouplingStats& st) {
+  active.clear();
+  for (size_t k = b; k < e; ++k) {
+    const Item& x = items[k];
+    size_t keep = 0;
+    for (uint32_t y : active)
+      if (less(x.lo, items[y].hi)) active[keep++] = y;
+    active.resize(keep);
+    st.max_active = std::max<uint64_t>(st.max_active, keep);
+    if (keep > kPackingBound) return SingleCouplingAnswer{true, std::nullopt};
+    for (uint32_t y : active) {
+      ++st.tests;
+      if (overlap(faces[x.region], faces[items[y].region]))
+        return SingleCouplingAnswer{
+            true, RegionPair{std::min(x.region, items[y].region), std::max(x.region, items[y].region)}};
+    }
+    active.push_back(static_cast<uint32_t>(k));
+  }
+  return {};
+}
+
+}  // namespace
+
+SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
+                                           SingleCouplingStats* stats, const Deadline* deadline) {
+  SingleCouplingStats st;
+  const std::vector<Faces> faces = region_faces(inst, t, regions);
+  const CellKeys keys = cell_keys(faces);
+  std::vector<Item> items;
+  for (uint32_t r = 0; r < faces.size(); ++r) {
+    if (deadline && r % 4096 == 4095) deadline->check();
+    const Faces& f = faces[r];
+    if (alive(f).empty()) continue;
+    ++st.regions;
+    const auto speed = [&](int lo) {
+      return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b)));
+    };
+    st.motion += 1 + speed(0) + speed(2);
+    add_items(f, r, keys, items);
+  }
+  if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items");
+  st.items = items.size();
+  std::sort(items.begin(), items.end(),
+            [](const Item& x, const Item& y) { return x.cell != y.cell ? x.cell < y.cell : less(x.lo, y.lo); });
+  SingleCouplingAnswer found;
+  std::vector<uint32_t> active;
+  size_t cells = 0;
+  for (size_t b = 0, e = 0; b < items.size() && !found.collides; b = e) {
+    if (deadline && ++cells % 4096 == 0) deadline->check();
+    for (e = b + 1; e < items.size() && items[e].cell == items[b].cell;) ++e;
+    found = sweep_cell(items, b, e, faces, active, st);
+  }
+  if (stats) *stats = st;
+  return found;
+}
+
+std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,
+                                                   const Regions& regions) {
+  const std::vector<Faces> faces = region_faces(inst, t, regions);
+  for (uint32_t a = 0; a < faces.size(); ++a)
+    for (uint32_t b = a + 1; b < faces.size(); ++b)
+      if (overlap(faces[a], faces[b])) return RegionPair{a, b};
+  return std::nullopt;
+}
+
+}  // namespace gridlock

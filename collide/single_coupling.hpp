@@ -1,0 +1,65 @@
+// One coupling: every operation of the instance runs together over
+// progress t in [0, 1], so every face of every region moves linearly with
+// an integer speed (docs/collide.md, "One coupling: the space-time cell
+// sweep"). Does some pair of regions overlap (positive area) at some
+// t in (0, 1]? Node collisions only: cycle collisions are the FaceNets
+// test's (collide.cpp runs it first).
+//
+// The sweep: a common motion t * f of every region changes no overlap, so
+// f is taken as the coordinatewise median of the nodes' displacements
+// (the frame that minimises the total L1 motion of the nodes). Each region
+// is cut into items (unit cell, open time interval during which it meets
+// the cell's interior); two regions that overlap at time t meet a common
+// cell at t, so per cell a sweep over time that tests each item against
+// the items still present finds every colliding pair. Cost
+// O(n + mu log mu) for the total motion mu = sum over regions of
+// 1 + |speed_x| + |speed_y| in that frame: at most 6 mu items, and at most
+// 43 exact tests per item (a packing lemma; proofs in docs/collide.md).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "common/limits.hpp"
+#include "lattice/instance.hpp"
+#include "lattice/motion.hpp"
+
+namespace gridlock {
+
+struct SingleCouplingStats {
+  uint64_t regions = 0;     // regions of positive width at some t in (0, 1)
+  uint64_t motion = 0;      // sum over regions of 1 + |speed_x| + |speed_y| (largest face speeds), in the frame
+  uint64_t items = 0;       // M: (cell, time interval) items
+  uint64_t tests = 0;       // T: exact pair tests
+  uint64_t max_active = 0;  // most items present in one cell when an item entered
+};
+
+struct RegionPair {
+  uint32_t a = 0, b = 0;  // a < b
+};
+
+struct SingleCouplingAnswer {
+  bool collides = false;
+  // Set when an exact test found it (some colliding pair, not necessarily
+  // the first in time); unset with collides when the packing bound decided
+  // (more items in one cell at one moment than a configuration without
+  // overlaps allows: docs/collide.md), the pair then to be found by the
+  // simulator.
+  std::optional<RegionPair> pair;
+};
+
+// Do two regions overlap while every operation of `inst` runs together
+// from t = 0 to 1? The operations need not be in one coupling
+// (all run at once either way); with one coupling this is the node part of
+// the Colliding Schedule answer. t is the spanning tree of `inst`, regions
+// its Regions. Checks deadline (if given) every few thousand items.
+// Throws std::overflow_error if the motion spans more than 2^32 cells along
+// an axis (not with coordinates within kMaxCoordinate and n < 10^9).
+SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
+                                           SingleCouplingStats* stats = nullptr, const Deadline* deadline = nullptr);
+
+// The brute-force twin: the same exact test on every pair of regions.
+// O(r^2) for r regions.
+std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t, const Regions& regions);
+
+}  // namespace gridlock

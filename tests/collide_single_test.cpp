@@ -1,0 +1,213 @@
+// One coupling: the space-time cell sweep (collide/single_coupling.hpp)
+// against its twins on seeded random instances with every operation in one
+// coupling: the exact Simulator running the one schedule (independent
+// code: its own broad phase and first-collision test), the all-pairs
+// exact test, and, on tiny instances, the brute-force Colliding Schedule
+// reference (tests/support/reference_collide). Failures print the seed
+// (GRIDLOCK_TEST_SEED replays, GRIDLOCK_TEST_SCALE scales the count).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "collide/adversarial.hpp"
+#include "collide/collide.hpp"
+#include "collide/single_coupling.hpp"
+#include "common/random.hpp"
+#include "lattice/random_instance.hpp"
+#include "lattice/simulate.hpp"
+#include "support/reference_collide.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+// The same shape and operations with every operation in one coupling "Q".
+Instance one_coupling(const Instance& inst) {
+  InstanceBuilder b;
+  for (Vec2 c : inst.cells()) EXPECT_FALSE(b.add_node(c));
+  for (const Edge& e : inst.edges()) EXPECT_FALSE(b.add_edge(inst.cells()[e.a], inst.cells()[e.b]));
+  std::vector<std::string> names;
+  for (const Operation& op : inst.ops()) {
+    EXPECT_FALSE(b.add_op(op.name, op.kind, inst.cells()[op.u], op.dir));
+    names.push_back(op.name);
+  }
+  if (!names.empty()) {
+    EXPECT_FALSE(b.add_coupling("Q", names));
+  }
+  if (inst.has_explicit_anchor()) {
+    EXPECT_FALSE(b.set_anchor(inst.cells()[inst.anchor()]));
+  }
+  Instance out;
+  EXPECT_FALSE(b.finish(out));
+  return out;
+}
+
+RandomInstanceParams single_params(Rng& rng) {
+  RandomInstanceParams p;
+  p.nodes = 2 + static_cast<uint32_t>(rng.below(rng.below(4) == 0 ? 60 : 14));
+  p.ops = 1 + static_cast<uint32_t>(rng.below(p.nodes));
+  p.extra_edge_percent = rng.below(4) == 0 ? 30 : 0;
+  p.horizontal_only = rng.below(8) == 0;
+  p.path_shape = rng.below(3) == 0;
+  p.spread = static_cast<uint32_t>(rng.below(3));
+  p.allow_contract = rng.below(3) != 0;
+  p.allow_grow = rng.below(3) != 0;
+  return p;
+}
+
+struct Tally {
+  int cases = 0, yes = 0, no = 0, brute = 0, cycles = 0, by_packing = 0;
+  uint64_t max_active = 0;
+};
+
+// Sweep, all pairs and the simulator (all operations from t = 0) agree on
+// whether a node collision happens; find_collision agrees with the brute
+// reference on tiny instances.
+void check_instance(const Instance& inst, const std::string& where, Tally& tally) {
+  Simulator sim(inst);
+  SingleCouplingStats st;
+  const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st);
+  const bool sweep = ans.collides;
+  const auto pairs = single_coupling_pairwise(inst, sim.tree(), sim.regions());
+  ASSERT_EQ(sweep, pairs.has_value()) << where;
+  (sweep ? tally.yes : tally.no)++;
+  ++tally.cases;
+  tally.max_active = std::max<uint64_t>(tally.max_active, st.max_active);
+  if (ans.pair) {
+    ASSERT_LT(ans.pair->a, ans.pair->b) << where;
+  } else {
+    tally.by_packing += sweep;
+  }
+  Schedule s;
+  s.start.assign(inst.couplings().size(), Rational(0));
+  if (sim.faces().faces.empty()) {
+    const SimResult run = sim.run(s);
+    ASSERT_EQ(sweep, run.collision.has_value()) << where;
+  } else {
+    ++tally.cycles;
+  }
+  if (inst.couplings().size() != 1) return;
+  const CollideResult r = find_collision(inst, TimeModel::Continuous);  // throws if a YES witness fails
+  ASSERT_EQ(r.collides, sweep || !sim.faces().faces.empty()) << where;
+  if (inst.num_nodes() <= 10) {
+    ASSERT_EQ(test::brute_continuous(inst).collides, r.collides) << where;
+    ASSERT_EQ(find_collision(inst, TimeModel::Discrete).collides, r.collides) << where;
+    ++tally.brute;
+  }
+}
+
+TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
+  const uint64_t seed0 = test::base_seed(25000);
+  const int cases = test::scaled(3000);
+  Tally tally;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    Rng rng(seed * 104729 + 3);
+    const RandomInstanceParams p = single_params(rng);
+    const Instance inst = one_coupling(random_instance(p, seed));
+    const std::string where = "seed " + std::to_string(seed) + " (nodes " + std::to_string(p.nodes) + ", ops " +
+                              std::to_string(p.ops) + "); replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+    check_instance(inst, where, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[ info ] " << tally.cases << " instances (" << tally.yes << " node collisions, " << tally.no
+            << " none; " << tally.cycles << " with a cycle net; " << tally.brute << " against the brute reference; "
+            << tally.by_packing << " decided by the packing bound; most items present at an entry " << tally.max_active
+            << ")\n";
+  // Both answers occur often, or the comparison proves little.
+  EXPECT_GT(tally.yes, cases / 10);
+  EXPECT_GT(tally.no, cases / 10);
+}
+
+// Larger shapes, long paths: more motion, more items per cell.
+TEST(SingleCouplingSweep, AgreesWithTwinsOnLargerInstances) {
+  const uint64_t seed0 = test::base_seed(26000);
+  const int cases = test::scaled(200);
+  Tally tally;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    Rng rng(seed * 104729 + 5);
+    RandomInstanceParams p = single_params(rng);
+    p.nodes = 100 + static_cast<uint32_t>(rng.below(300));
+    p.ops = 1 + static_cast<uint32_t>(rng.below(p.nodes / 2));
+    p.path_shape = rng.below(2) == 0;
+    if (rng.below(2) == 0) p.allow_contract = p.allow_grow = false;  // expansions only: more NO
+    const Instance inst = one_coupling(random_instance(p, seed));
+    const std::string where = "seed " + std::to_string(seed) + " (nodes " + std::to_string(p.nodes) + ", ops " +
+                              std::to_string(p.ops) + "); replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+    check_instance(inst, where, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[ info ] " << tally.cases << " instances (" << tally.yes << " node collisions, " << tally.no
+            << " none; most items present at an entry " << tally.max_active << ")\n";
+  EXPECT_GT(tally.no, cases / 10);
+  EXPECT_GT(tally.yes, cases / 10);
+}
+
+// The adversarial diagonal sweep: NO by construction (collide/adversarial.hpp),
+// for every method; the simulator meets many more candidate pairs than the
+// sweep has items once K grows.
+TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
+  for (uint32_t K : {1u, 2u, 5u, 12u})
+    for (uint32_t b : {3u, 4u, 7u}) {
+      const Instance inst = diagonal_sweep_instance(K, b);
+      const std::string where = "K " + std::to_string(K) + ", b " + std::to_string(b);
+      ASSERT_EQ(inst.couplings().size(), 1u) << where;
+      Simulator sim(inst);
+      SingleCouplingStats st;
+      EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions(), &st).collides) << where;
+      EXPECT_FALSE(single_coupling_pairwise(inst, sim.tree(), sim.regions())) << where;
+      EXPECT_FALSE(sim.run_order({0}).collision) << where;
+      EXPECT_FALSE(find_collision(inst, TimeModel::Continuous).collides) << where;
+    }
+  // Counts, not times: from K = 12 to 48 (b = K / 2) the simulator's
+  // candidate pairs grow as K^4 (x 256), the sweep's items as K^3 (x 64).
+  uint64_t items[2], pairs[2];
+  for (int i = 0; i < 2; ++i) {
+    const Instance inst = diagonal_sweep_instance(i == 0 ? 12 : 48, i == 0 ? 6 : 24);
+    Simulator sim(inst);
+    SingleCouplingStats st;
+    EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions(), &st).collides);
+    const SimResult run = sim.run_order({0});
+    EXPECT_FALSE(run.collision);
+    items[i] = st.items, pairs[i] = run.stats.candidate_pairs;
+  }
+  EXPECT_GT(pairs[1], 150 * pairs[0]) << pairs[0] << " -> " << pairs[1];
+  EXPECT_LT(items[1], 80 * items[0]) << items[0] << " -> " << items[1];
+}
+
+// The U below: the sweep names (0,0) and (0,1), and so does find_collision.
+void check_u(const Instance& inst) {
+  Simulator sim(inst);
+  const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions());
+  ASSERT_TRUE(ans.collides);
+  ASSERT_TRUE(ans.pair);
+  EXPECT_EQ(ans.pair->a, 0u);
+  EXPECT_EQ(ans.pair->b, 3u);
+  const CollideResult r = find_collision(inst, TimeModel::Continuous);
+  EXPECT_TRUE(r.collides);
+  EXPECT_EQ(r.algorithm, "single-coupling");
+  EXPECT_EQ(r.region_a, 0u);
+  EXPECT_EQ(r.region_b, 3u);
+}
+
+// A U of four nodes, (0,0)-(1,0)-(1,1)-(0,1), with no edge between its
+// ends: contracting (1,1) into (1,0) pulls (0,1) down onto (0,0).
+// Also at the corner of the coordinate range (cells are keyed relative to
+// the motion's lower left).
+TEST(SingleCouplingSweep, NamesThePairOfACollision) {
+  for (Vec2 o : {Vec2{0, 0}, Vec2{kMaxCoordinate - 1, -kMaxCoordinate}}) {
+    InstanceBuilder b;
+    for (Vec2 c : {Vec2{0, 0}, Vec2{1, 0}, Vec2{1, 1}, Vec2{0, 1}}) ASSERT_FALSE(b.add_node(o + c));
+    ASSERT_FALSE(b.add_edge(o + Vec2{0, 0}, o + Vec2{1, 0}));
+    ASSERT_FALSE(b.add_edge(o + Vec2{1, 0}, o + Vec2{1, 1}));
+    ASSERT_FALSE(b.add_edge(o + Vec2{1, 1}, o + Vec2{0, 1}));
+    ASSERT_FALSE(b.add_op("c", OpKind::Contract, o + Vec2{1, 0}, Dir::PosY));
+    Instance inst;
+    ASSERT_FALSE(b.finish(inst));
+    check_u(inst);
+  }
+}
+
+}  // namespace
+}  // namespace gridlock
