@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
-#include <unordered_set>
 
 #include "common/int_math.hpp"
+#include "lattice/flat_map.hpp"
 
 namespace gridlock {
 
@@ -245,7 +245,7 @@ struct Simulator::Scratch {
   // step: moving_pairs takes each pair once (the set of those taken), so it
   // stays as large as the distinct pairs, not S times that (a row of 25 000
   // expansions all running at once: 30 GB before).
-  std::unordered_set<uint64_t> pairs_taken;
+  FlatMap64 pairs_taken;  // as a set (value 0): no allocation per pair, memory kept between runs
   // Per moving index j, the last two i of pairs (i, j) already taken: most
   // repeats are the same neighbours, so these spare most set look-ups.
   std::vector<std::array<uint32_t, 2>> recent_partners;
@@ -551,7 +551,7 @@ void Simulator::Scratch::add_moving_pair(uint32_t i, uint32_t j) {
   if (recent[0] == i || recent[1] == i) return;
   recent[1] = recent[0];
   recent[0] = i;
-  if (pairs_taken.insert(ij).second) moving_pairs.push_back(ij);
+  if (pairs_taken.emplace(ij, 0).second) moving_pairs.push_back(ij);
 }
 
 // Moving region i enters dense cell d in this sub-step: pair it with every
