@@ -43,13 +43,15 @@ class FlatMap64 {
     for (; slots_[i].value != kAbsent; i = (i + 1) & mask)
       if (slots_[i].key == key) return {slots_[i].value, false};
     slots_[i] = Slot{key, value};
+    used_.push_back(static_cast<uint32_t>(i));
     ++size_;
     return {value, true};
   }
-  // Removes every entry, keeping the memory. O(capacity).
+  // Removes every entry, keeping the memory. O(size): the simulator clears
+  // a large table, grown by one long interval, after each of many short ones.
   void clear() {
-    if (size_ == 0) return;
-    for (Slot& s : slots_) s.value = kAbsent;
+    for (uint32_t i : used_) slots_[i].value = kAbsent;
+    used_.clear();
     size_ = 0;
   }
   size_t size() const { return size_; }
@@ -68,15 +70,18 @@ class FlatMap64 {
   void rehash(size_t cap) {
     std::vector<Slot> old(cap);
     old.swap(slots_);
+    used_.clear();
     const size_t mask = cap - 1;
     for (const Slot& o : old)
       if (o.value != kAbsent) {
         size_t j = hash(o.key) & mask;
         while (slots_[j].value != kAbsent) j = (j + 1) & mask;
         slots_[j] = o;
+        used_.push_back(static_cast<uint32_t>(j));
       }
   }
   std::vector<Slot> slots_;
+  std::vector<uint32_t> used_;  // the full slots, for clear()
   size_t size_ = 0;
 };
 

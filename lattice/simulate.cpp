@@ -575,9 +575,17 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
 void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
   moving_pairs.clear();
   if (moving.size() <= kAllMovingPairs) {  // few: every pair whose swept boxes overlap
-    for (size_t i = 0; i < moving.size(); ++i)
-      for (size_t j = i + 1; j < moving.size(); ++j)
-        if (boxes_overlap(swept[i], swept[j])) test_pair(moving[i], moving[j], true, span);
+    // By the left end of the swept box: each box meets only the boxes that
+    // start before its right end (the pairs and the tests are the same as
+    // over all pairs; test_pair does not depend on their order).
+    std::array<uint32_t, kAllMovingPairs> by_x;
+    const size_t m = moving.size();
+    for (uint32_t i = 0; i < m; ++i) by_x[i] = i;
+    std::sort(by_x.begin(), by_x.begin() + static_cast<std::ptrdiff_t>(m),
+              [&](uint32_t a, uint32_t b) { return swept[a][0] < swept[b][0]; });
+    for (size_t x = 0; x < m; ++x)
+      for (size_t y = x + 1; y < m && swept[by_x[y]][0] < swept[by_x[x]][1]; ++y)
+        if (boxes_overlap(swept[by_x[x]], swept[by_x[y]])) test_pair(moving[by_x[x]], moving[by_x[y]], true, span);
     return;
   }
   dedupe_pairs = S > 1;
