@@ -30,8 +30,8 @@ bool valid_name(const std::string& s) {
 }
 
 NodeId Instance::node_at(Vec2 c) const {
-  auto it = cell_index_.find(cell_key(c));
-  return it == cell_index_.end() ? kNone : it->second;
+  const uint32_t w = cell_index_.find(cell_key(c));
+  return w == FlatMap64::kAbsent ? kNone : w;
 }
 
 OpId Instance::find_op(const std::string& name) const {
@@ -89,8 +89,8 @@ std::optional<std::string> InstanceBuilder::add_node(Vec2 cell) {
   if (!in_range(cell)) return "coordinate out of range (|x|, |y| <= " + std::to_string(kMaxCoordinate) + ")";
   if (static_cast<int64_t>(inst_.cells_.size()) >= kMaxNodes)
     return "too many nodes (at most " + std::to_string(kMaxNodes) + ")";
-  auto [it, fresh] = inst_.cell_index_.emplace(cell_key(cell), static_cast<NodeId>(inst_.cells_.size()));
-  if (!fresh) return "two nodes in cell " + cell_str(cell);
+  if (!inst_.cell_index_.emplace(cell_key(cell), static_cast<NodeId>(inst_.cells_.size())).second)
+    return "two nodes in cell " + cell_str(cell);
   inst_.cells_.push_back(cell);
   for (int i = 0; i < 4; ++i) inst_.adj_.push_back(kNone), inst_.adj_edge_.push_back(kNone);
   inst_.op_of_node_.push_back(kNone);

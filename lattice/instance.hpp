@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/diagnostic.hpp"
+#include "lattice/flat_map.hpp"
 #include "lattice/geometry.hpp"
 
 namespace gridlock {
@@ -93,7 +94,7 @@ class Instance {
   std::vector<Coupling> couplings_;
   NodeId anchor_ = 0;
   bool explicit_anchor_ = false;
-  std::unordered_map<uint64_t, NodeId> cell_index_;
+  FlatMap64 cell_index_;  // cell_key -> node: no allocation per node
   std::unordered_map<std::string, OpId> op_index_;
   std::unordered_map<std::string, CouplingId> coupling_index_;
   std::vector<NodeId> adj_;         // 4 per node

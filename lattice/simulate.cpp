@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
-#include <unordered_set>
 
 #include "common/int_math.hpp"
+#include "lattice/flat_map.hpp"
 
 namespace gridlock {
 
@@ -245,7 +245,7 @@ struct Simulator::Scratch {
   // step: moving_pairs takes each pair once (the set of those taken), so it
   // stays as large as the distinct pairs, not S times that (a row of 25 000
   // expansions all running at once: 30 GB before).
-  std::unordered_set<uint64_t> pairs_taken;
+  FlatMap64 pairs_taken;  // as a set (value 0): no allocation per pair, memory kept between runs
   // Per moving index j, the last two i of pairs (i, j) already taken: most
   // repeats are the same neighbours, so these spare most set look-ups.
   std::vector<std::array<uint32_t, 2>> recent_partners;
@@ -551,7 +551,7 @@ void Simulator::Scratch::add_moving_pair(uint32_t i, uint32_t j) {
   if (recent[0] == i || recent[1] == i) return;
   recent[1] = recent[0];
   recent[0] = i;
-  if (pairs_taken.insert(ij).second) moving_pairs.push_back(ij);
+  if (pairs_taken.emplace(ij, 0).second) moving_pairs.push_back(ij);
 }
 
 // Moving region i enters dense cell d in this sub-step: pair it with every
@@ -575,9 +575,17 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
 void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
   moving_pairs.clear();
   if (moving.size() <= kAllMovingPairs) {  // few: every pair whose swept boxes overlap
-    for (size_t i = 0; i < moving.size(); ++i)
-      for (size_t j = i + 1; j < moving.size(); ++j)
-        if (boxes_overlap(swept[i], swept[j])) test_pair(moving[i], moving[j], true, span);
+    // By the left end of the swept box: each box meets only the boxes that
+    // start before its right end (the pairs and the tests are the same as
+    // over all pairs; test_pair does not depend on their order).
+    std::array<uint32_t, kAllMovingPairs> by_x;
+    const size_t m = moving.size();
+    for (uint32_t i = 0; i < m; ++i) by_x[i] = i;
+    std::sort(by_x.begin(), by_x.begin() + static_cast<std::ptrdiff_t>(m),
+              [&](uint32_t a, uint32_t b) { return swept[a][0] < swept[b][0]; });
+    for (size_t x = 0; x < m; ++x)
+      for (size_t y = x + 1; y < m && swept[by_x[y]][0] < swept[by_x[x]][1]; ++y)
+        if (boxes_overlap(swept[by_x[x]], swept[by_x[y]])) test_pair(moving[by_x[x]], moving[by_x[y]], true, span);
     return;
   }
   dedupe_pairs = S > 1;

@@ -82,6 +82,26 @@ bool make_constraint(std::vector<LinForm> forms, uint32_t ra, uint32_t rb, Colli
   return true;
 }
 
+// make_constraint for one normalised form f that is positive somewhere,
+// without its copies: what make_constraint({f}, ra, rb, out) gives (the gap
+// builder calls this for each of some thousands of neighbouring pairs).
+CollisionConstraint single_form_constraint(const LinForm& f, uint32_t ra, uint32_t rb) {
+  if (f.terms.empty()) throw std::logic_error("collision constraint with a permanent overlap");
+  CollisionConstraint out;
+  out.region_a = ra;
+  out.region_b = rb;
+  out.num_forms = 1;
+  out.form_index.assign(1, 0);
+  out.base.assign(1, f.base);
+  out.rel.reserve(f.terms.size());
+  out.coef.reserve(f.terms.size());
+  for (const auto& [q, coef] : f.terms) {  // normalised: couplings increasing, distinct, coefficients non-zero
+    out.rel.push_back(q);
+    out.coef.push_back(coef);
+  }
+  return out;
+}
+
 }  // namespace
 
 size_t ConstraintSystem::total_forms() const {
@@ -126,13 +146,14 @@ ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree,
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
   std::vector<NodeId> order = nodes_by_row(inst);
+  LinForm f;
   for (const RowRun& run : row_runs(inst, order)) {
     for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
       NodeId a = order[i], b = order[i + 1];
       if (deadline && (sys.candidate_pairs & 63) == 0) deadline->check();
       ++sys.candidate_pairs;
       // Overlap form right(a) - left(b); a growth counts as part of its node.
-      LinForm f;
+      f.terms.clear();  // one form for every pair: its memory is reused
       f.base = cells[a].x + 1 - cells[b].x;
       NodeId ra = regions.shapes[a].ref[1], lb = regions.shapes[b].ref[0];
       ot.for_each_op_on_path(ra, lb, [&](OpId k, int sign) {
@@ -146,8 +167,8 @@ ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree,
       if (kb != kNone && ops[kb].kind == OpKind::Grow && ops[kb].u == b && ops[kb].dir == Dir::NegX)
         f.terms.push_back({ops[kb].coupling, 1});
       f.normalise();
-      CollisionConstraint c;
-      if (make_constraint({f}, a, b, c)) sys.constraints.push_back(std::move(c));
+      if (f.max_value() <= 0) continue;  // never positive: the pair never overlaps
+      sys.constraints.push_back(single_form_constraint(f, a, b));
     }
   }
   sys.index();
