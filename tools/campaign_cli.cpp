@@ -2,9 +2,9 @@
 
 #include <unistd.h>
 
-#include <chrono>
 #include <iostream>
 
+#include "common/clock.hpp"
 #include "common/diagnostic.hpp"
 #include "common/limits.hpp"
 #include "common/ordered_pool.hpp"
@@ -43,17 +43,11 @@ void verify_model_args(const boost::program_options::variables_map& vm, VerifyOp
   opt.certify = vm.count("no-certificates") == 0;
 }
 
-namespace {
-double seconds_now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
-
 ProgressLine::ProgressLine(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
 
 void ProgressLine::show(const std::string& text, bool now) {
   if (!enabled_) return;
-  const double t = seconds_now();
+  const double t = monotonic_seconds();
   if (!now && last_ >= 0 && t - last_ < 0.5) return;
   last_ = t;
   std::cerr << "\r\033[K" << text << std::flush;
