@@ -25,16 +25,6 @@
 
 namespace gridlock {
 
-const char* verify_model_name(VerifyModel m) {
-  return m == VerifyModel::Discrete ? "discrete" : m == VerifyModel::Continuous ? "continuous" : "both";
-}
-
-std::optional<VerifyModel> parse_verify_model(const std::string& s) {
-  for (VerifyModel m : {VerifyModel::Discrete, VerifyModel::Continuous, VerifyModel::Both})
-    if (s == verify_model_name(m)) return m;
-  return std::nullopt;
-}
-
 int VerifyResult::witnesses_checked() const {
   return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid) +
          (no_certificate == Check::Valid) + (csat_witness == Check::Valid) + (csolver_witness == Check::Valid) +
@@ -49,8 +39,6 @@ std::vector<std::string> names_of(const Instance& inst, const std::vector<Coupli
   for (CouplingId q : order) out.push_back(inst.couplings()[q].name);
   return out;
 }
-
-Verdict tri(bool yes) { return yes ? Verdict::Yes : Verdict::No; }
 
 std::vector<std::string> times_of(const Instance& inst, const Schedule& s) {
   std::vector<std::string> out;
@@ -119,7 +107,7 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
                        std::unique_ptr<Simulator>& simulator) {
   r.ran_continuous = true;
   Stopwatch t0;
-  r.compiled_continuous = compile_formula(r.lsat, opt.mutation, ReductionModel::Continuous);
+  r.compiled_continuous = compile_formula(r.lsat, opt.mutation, TimeModel::Continuous);
   r.ms_compile += t0.milliseconds();
   const CompiledFormula& c = r.compiled_continuous;
   const Instance& inst = c.instance;
@@ -233,7 +221,7 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
   t0.restart();
   GapVerdict gv = check_gaps(inst);
   r.ms_gaps = t0.milliseconds();
-  r.continuous = tri(gv.collision_free);
+  r.continuous = gv.verdict();
   if (gv.collision_free) {
     Schedule all_at_once;
     all_at_once.start.assign(inst.couplings().size(), Rational(0));
@@ -269,8 +257,8 @@ VerifyResult Verifier::verify(const Formula& f, const std::string& name, const V
   const Lift red = lsat_form(r, opt, lsat);
   Problems p;
   if (r.sat == Verdict::Unknown) p.add("CaDiCaL gave no answer");
-  if (opt.model != VerifyModel::Continuous) verify_discrete(r, sat, red, opt, sim_, p);
-  if (opt.model != VerifyModel::Discrete) {
+  if (opt.models.has(TimeModel::Discrete)) verify_discrete(r, sat, red, opt, sim_, p);
+  if (opt.models.has(TimeModel::Continuous)) {
     verify_continuous(r, sat, red, opt, sim_);
     continuous_problems(r, p);
   }
@@ -319,7 +307,7 @@ MaybeError write_reproducer(const VerifyResult& r, const std::string& dir, const
         "solver-times.txt     the exact continuous solver's start times\n";
   }
   std::string flags;
-  if (opt.model != VerifyModel::Discrete) flags += std::string(" --model ") + verify_model_name(opt.model);
+  if (opt.models.has(TimeModel::Continuous)) flags += std::string(" --model ") + opt.models.name();
   if (opt.mutation != Mutation::None) flags += std::string(" --break-gadget ") + mutation_name(opt.mutation);
   if (opt.direct) flags += " --direct";
   write(
