@@ -41,7 +41,7 @@ Verdict expected(const benchmark::State& state) {
 }
 
 void run_continuous(benchmark::State& state, ContinuousEngine engine) {
-  const CompiledFormula c = compile_formula(lsat_formula(state), Mutation::None, ReductionModel::Continuous);
+  const CompiledFormula c = compile_formula(lsat_formula(state), Mutation::None, TimeModel::Continuous);
   SolveOptions opt;
   opt.seconds = 120;
   ContinuousResult r;

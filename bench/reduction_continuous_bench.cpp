@@ -30,7 +30,7 @@ Formula chain(int n, bool unsat) {
 
 void BM_ContinuousReduction(benchmark::State& state) {
   const Formula f = chain(static_cast<int>(state.range(0)), state.range(1) != 0);
-  const CompiledFormula c = compile_formula(f, Mutation::None, ReductionModel::Continuous);
+  const CompiledFormula c = compile_formula(f, Mutation::None, TimeModel::Continuous);
   ContinuousResult r;
   for (auto _ : state) r = solve_continuous(c.instance);
   const bool want_yes = state.range(1) == 0;

@@ -77,7 +77,7 @@ std::vector<Sample> satlib_continuous(const std::string& set) {
     Sample s;
     s.name = std::filesystem::path(path).stem().string();
     s.expect = solve_sat(f).status == Verdict::Yes ? 10 : 20;
-    s.inst = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous).instance;
+    s.inst = compile_formula(reduce_to_lsat(f).output(), Mutation::None, TimeModel::Continuous).instance;
     out.push_back(std::move(s));
   }
   return out;

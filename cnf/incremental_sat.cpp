@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "common/assert.hpp"
+
 namespace gridlock {
 
 // The learner only counts conflicts (CaDiCaL 1.5 has no public counter):
@@ -31,7 +33,7 @@ int IncrementalSat::new_var() { return ++vars_; }
 
 void IncrementalSat::add_clause(const std::vector<int>& lits) {
   for (int l : lits) {
-    if (l == 0 || l > vars_ || -l > vars_) throw std::invalid_argument("IncrementalSat: literal out of range");
+    GRIDLOCK_REQUIRE(l != 0 && l <= vars_ && -l <= vars_, "IncrementalSat: literal out of range");
     impl_->solver.add(l);
   }
   impl_->solver.add(0);

@@ -4,7 +4,6 @@
 #include <cadical.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <stdexcept>
 
@@ -14,18 +13,16 @@ namespace gridlock {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // CaDiCaL polls its terminator regularly during search; this one ends the
-// search at a wall-clock deadline or at a stop request (common/limits.hpp).
+// search when the common deadline expires: its time limit or a stop request
+// (common/limits.hpp).
 class SatDeadline : public CaDiCaL::Terminator {
  public:
-  SatDeadline(Clock::time_point at, bool limited) : at_(at), limited_(limited) {}
-  bool terminate() override { return stop_requested() || (limited_ && Clock::now() >= at_); }
+  explicit SatDeadline(const Deadline& deadline) : deadline_(deadline) {}
+  bool terminate() override { return deadline_.expired(); }
 
  private:
-  Clock::time_point at_;
-  bool limited_;
+  const Deadline& deadline_;
 };
 
 }  // namespace
@@ -43,7 +40,7 @@ std::string sat_solver_name() { return std::string("CaDiCaL ") + CaDiCaL::Solver
 
 SatResult solve_sat(const Formula& f, const SatLimits& limits) {
   if (std::string bad = validate(f); !bad.empty()) throw std::invalid_argument("solve_sat: " + bad);
-  const auto start = Clock::now();
+  const Deadline limit(limits.seconds);  // <= 0: none
   SatResult res;
   CaDiCaL::Solver solver;
   // CaDiCaL writes some messages ("c found falsified original clause") to
@@ -57,9 +54,7 @@ SatResult solve_sat(const Formula& f, const SatLimits& limits) {
     solver.add(0);
   }
   if (limits.conflicts >= 0) solver.limit("conflicts", static_cast<int>(std::min<int64_t>(limits.conflicts, INT_MAX)));
-  SatDeadline deadline(
-      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(limits.seconds, 0.0))),
-      limits.seconds > 0);
+  SatDeadline deadline(limit);
   solver.connect_terminator(&deadline);
   const int code = solver.solve();
   solver.disconnect_terminator();
@@ -71,7 +66,7 @@ SatResult solve_sat(const Formula& f, const SatLimits& limits) {
     if (bad >= 0)
       throw std::logic_error(sat_solver_name() + " returned a model that falsifies clause " + std::to_string(bad + 1));
   }
-  res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  res.seconds = limit.elapsed();
   return res;
 }
 

@@ -36,6 +36,7 @@
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/rational.hpp"
+#include "lattice/time_model.hpp"
 
 namespace gridlock {
 
@@ -90,8 +91,6 @@ bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B,
 // True iff the eight inequalities hold at p (progress of every coupling that
 // appears in A, B or nets; the others are irrelevant). For checking witnesses.
 bool pair_overlaps_at(const RegionForm& A, const RegionForm& B, const PathNets& nets, const std::vector<Rational>& p);
-
-enum class TimeModel { Continuous, Discrete };
 
 struct PairwiseStats {
   uint64_t pairs = 0;            // region pairs considered

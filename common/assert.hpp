@@ -1,4 +1,10 @@
-// GRIDLOCK_ASSERT(cond, msg): the run-time check of a contract's "Requires".
+// GRIDLOCK_ASSERT(cond, msg): the run-time check of a contract's "Requires"
+// inside the library (a bug of ours if it fails).
+// GRIDLOCK_REQUIRE(cond, msg): the always-on check of a public function's
+// precondition, for what a library user passes in: when cond is false it
+// throws std::invalid_argument(msg) (msg, a string expression, is evaluated
+// only then), in every build. The command line maps it to a message naming
+// the input; docs/architecture.md, "Conventions".
 //
 // A failed assertion is a bug in the caller, not bad input (bad input is a
 // Diagnostic, see common/diagnostic.hpp): it prints
@@ -11,6 +17,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 namespace gridlock::detail {
 
@@ -20,6 +28,11 @@ namespace gridlock::detail {
 }
 
 }  // namespace gridlock::detail
+
+#define GRIDLOCK_REQUIRE(cond, msg)                             \
+  do {                                                          \
+    if (!(cond)) throw std::invalid_argument(std::string(msg)); \
+  } while (false)
 
 #ifdef GRIDLOCK_ENABLE_ASSERT
 #define GRIDLOCK_ASSERT(cond, msg) \

@@ -16,7 +16,8 @@
 #pragma once
 
 #include <atomic>
-#include <chrono>
+
+#include "common/clock.hpp"
 
 namespace gridlock {
 
@@ -33,13 +34,13 @@ inline bool stop_requested() { return stop_signal().load(std::memory_order_relax
 
 class Deadline {
  public:
-  using Clock = std::chrono::steady_clock;
   // No time limit (stop requests still end check()).
-  Deadline() : start_(Clock::now()) {}
+  Deadline() = default;
   // A limit of `seconds` from now; seconds <= 0 means none.
-  explicit Deadline(double seconds) : start_(Clock::now()), seconds_(seconds) {}
+  explicit Deadline(double seconds) : seconds_(seconds) {}
 
-  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  // Seconds since construction (common/clock.hpp).
+  double elapsed() const { return clock_.seconds(); }
   double limit() const { return seconds_; }
   // True once the limit has passed or a stop was requested.
   bool expired() const { return stop_requested() || (seconds_ > 0 && elapsed() > seconds_); }
@@ -49,7 +50,7 @@ class Deadline {
   }
 
  private:
-  Clock::time_point start_;
+  Stopwatch clock_;
   double seconds_ = 0;
 };
 

@@ -6,6 +6,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "common/assert.hpp"
 #include "common/random.hpp"
 
 namespace gridlock {
@@ -94,7 +95,7 @@ void add_random_couplings(Rng& rng, InstanceBuilder& b, std::vector<std::string>
 }  // namespace
 
 Instance random_instance(const RandomInstanceParams& p, uint64_t seed) {
-  if (p.nodes == 0) throw std::invalid_argument("random_instance needs at least one node");
+  GRIDLOCK_REQUIRE(p.nodes > 0, "random_instance needs at least one node");
   if (!p.allow_expand && !p.allow_contract && !p.allow_grow)
     throw std::invalid_argument("random_instance needs at least one operation kind");
   // The instance stream starts from this scramble of the seed (kept so that
@@ -164,9 +165,9 @@ const char* shape_family_name(ShapeFamily f) {
 }
 
 RandomInstanceParams family_params(const RandomFamilyParams& f) {
-  if (f.couplings == 0) throw std::invalid_argument("a random family instance needs at least one coupling");
-  if (f.max_coupling == 0) throw std::invalid_argument("couplings need at least one operation");
-  if (!f.expand && !f.contract && !f.grow) throw std::invalid_argument("no operation kind allowed");
+  GRIDLOCK_REQUIRE(f.couplings > 0, "a random family instance needs at least one coupling");
+  GRIDLOCK_REQUIRE(f.max_coupling > 0, "couplings need at least one operation");
+  GRIDLOCK_REQUIRE(f.expand || f.contract || f.grow, "no operation kind allowed");
   RandomInstanceParams p;
   p.couplings = f.couplings;
   p.max_coupling = f.max_coupling;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/int_math.hpp"
+#include "common/linear_interval.hpp"
 #include "lattice/flat_map.hpp"
 
 namespace gridlock {
@@ -23,34 +24,20 @@ bool frac_less(const Frac& a, const Frac& b) { return a.num * b.den < b.num * a.
 
 // The earliest tau in [0, span] such that the rectangles A(t) = A + vA t and
 // B(t) = B + vB t overlap with positive area right after tau; none if never.
-// Eight strict inequalities a + b tau > 0: the four overlap conditions and
-// the four widths (a region of width 0 never collides).
+// Eight strict inequalities a + b tau > 0 (the four overlap conditions and
+// the four widths: a region of width 0 never collides) inside the open
+// window (0, span) (common/linear_interval.hpp); span > 0.
 Frac first_overlap(const int64_t* A, const int64_t* vA, const int64_t* B, const int64_t* vB, int64_t span) {
   const int64_t lin[8][2] = {
       {A[1] - B[0], vA[1] - vB[0]}, {B[1] - A[0], vB[1] - vA[0]}, {A[3] - B[2], vA[3] - vB[2]},
       {B[3] - A[2], vB[3] - vA[2]}, {A[1] - A[0], vA[1] - vA[0]}, {B[1] - B[0], vB[1] - vB[0]},
       {A[3] - A[2], vA[3] - vA[2]}, {B[3] - B[2], vB[3] - vB[2]},
   };
-  bool has_lo = false, has_hi = false;
-  Frac lo{0, 1}, hi{0, 1};
-  for (const auto& f : lin) {
-    __int128 a = f[0], b = f[1];
-    if (b == 0) {
-      if (a <= 0) return {};
-    } else if (b > 0) {  // tau > -a/b
-      Frac c{-a, b};
-      if (!has_lo || frac_less(lo, c)) lo = c, has_lo = true;
-    } else {  // tau < a/(-b)
-      Frac c{a, -b};
-      if (!has_hi || frac_less(c, hi)) hi = c, has_hi = true;
-    }
-  }
-  Frac zero{0, 1}, end{span, 1};
-  if (has_lo && has_hi && !frac_less(lo, hi)) return {};
-  if (has_lo && !frac_less(lo, end)) return {};
-  if (has_hi && !frac_less(zero, hi)) return {};
-  if (!has_lo || frac_less(lo, zero)) return zero;
-  return lo;
+  LinearInterval<int64_t> when(Fraction{0, 1}, Fraction{span, 1});
+  for (const auto& f : lin)
+    if (!when.add(f[0], f[1])) return {};
+  if (when.empty()) return {};
+  return {when.lower().at.num, when.lower().at.den};
 }
 
 Rational to_rational(__int128 num, __int128 den) {

@@ -167,7 +167,7 @@ py::dict compile_stats(const CompileStats& s) {
 // compiled.lift(order=... | times=...) -> the assignment (literals).
 py::object lift(const CompiledFormula& c, const py::object& assignment, const py::object& order,
                 const py::object& times) {
-  const bool continuous = c.model == ReductionModel::Continuous;
+  const bool continuous = c.model == TimeModel::Continuous;
   if (!assignment.is_none()) {
     if (!order.is_none() || !times.is_none()) raise("lift: give assignment= alone, or order= / times= alone");
     const std::vector<bool> value = assignment_arg(assignment, c.num_vars);
@@ -186,15 +186,15 @@ void bind_compile(py::module_& m) {
       .def_property_readonly(
           "instance", [](const CompiledFormula& c) -> const Instance& { return c.instance; },
           py::return_value_policy::reference_internal)
-      .def_property_readonly("model", [](const CompiledFormula& c) { return reduction_model_name(c.model); })
+      .def_property_readonly("model", [](const CompiledFormula& c) { return time_model_name(c.model); })
       .def_readonly("num_vars", &CompiledFormula::num_vars)
       .def_readonly("num_clauses", &CompiledFormula::num_clauses)
       .def_property_readonly("stats", [](const CompiledFormula& c) { return compile_stats(c.stats); })
       .def("lift", &lift, py::arg("assignment") = py::none(), py::arg("order") = py::none(),
            py::arg("times") = py::none())
       .def("__repr__", [](const CompiledFormula& c) {
-        return "<gridlock.Compiled: " + std::string(reduction_model_name(c.model)) + ", " +
-               std::to_string(c.stats.nodes) + " nodes, " + std::to_string(c.stats.couplings) + " couplings>";
+        return "<gridlock.Compiled: " + std::string(time_model_name(c.model)) + ", " + std::to_string(c.stats.nodes) +
+               " nodes, " + std::to_string(c.stats.couplings) + " couplings>";
       });
   m.def(
       "compile",
@@ -202,7 +202,7 @@ void bind_compile(py::module_& m) {
         if (model != "discrete" && model != "continuous")
           raise("model must be discrete or continuous, not '" + model + "'");
         return compile_formula(valid(f), Mutation::None,
-                               model == "discrete" ? ReductionModel::Discrete : ReductionModel::Continuous);
+                               model == "discrete" ? TimeModel::Discrete : TimeModel::Continuous);
       },
       py::arg("formula"), py::arg("model") = "discrete");
 }

@@ -150,7 +150,7 @@ py::dict gaps(const Instance& inst) {
   if (!inst.horizontal_only()) raise("gaps decides horizontal-only instances; this one has a vertical operation");
   const GapVerdict v = check_gaps(inst);
   py::dict d;
-  d["status"] = v.collision_free ? "YES" : "NO";
+  d["status"] = verdict_name(v.verdict());
   d["gaps_checked"] = v.gaps_checked;
   d["negative_gaps"] = v.negative_gaps;
   d["cycles_checked"] = v.cycles_checked;

@@ -13,10 +13,10 @@ namespace {
 
 VerifyOptions verify_options(const std::string& model, double timeout, uint64_t max_states, bool direct) {
   VerifyOptions opt;
-  auto m = parse_verify_model(model);
+  auto m = TimeModels::parse(model);
   if (!m) raise("model must be discrete, continuous or both, not '" + model + "'");
   if (!(timeout > 0)) raise("timeout must be a positive number of seconds");
-  opt.model = *m;
+  opt.models = *m;
   opt.solve_seconds = timeout;
   opt.max_states = max_states;
   opt.direct = direct;
@@ -26,7 +26,7 @@ VerifyOptions verify_options(const std::string& model, double timeout, uint64_t 
 // The row of `gridlock verify --json` for formula i.
 py::dict verify_row(const VerifyOptions& opt, size_t i, const std::string& name, const VerifyResult& r,
                     FormulaStatus status) {
-  const bool with_discrete = opt.model != VerifyModel::Continuous;
+  const bool with_discrete = opt.models.has(TimeModel::Discrete);
   py::dict row;
   row["index"] = i;
   row["formula"] = name;
@@ -55,7 +55,7 @@ py::dict verify_row(const VerifyOptions& opt, size_t i, const std::string& name,
   row["ms_gaps"] = r.ms_gaps;
   row["status"] = formula_status_name(status);
   row["problem"] = r.problem;
-  if (opt.model != VerifyModel::Discrete) {
+  if (opt.models.has(TimeModel::Continuous)) {
     row["continuous_nodes"] = r.cnodes;
     row["continuous_solver"] = verdict_name(r.continuous_solver);
     row["continuous_solver_conflicts"] = r.csolver_conflicts;
@@ -123,7 +123,7 @@ py::dict verify(const py::list& inputs, const py::object& names, const std::stri
   cb.rethrow();
   py::dict d;
   d["command"] = "verify";
-  d["model"] = verify_model_name(c.verify.model);
+  d["model"] = c.verify.models.name();
   d["formulas"] = rows;
   d["summary"] = py::dict(py::arg("formulas") = t.formulas, py::arg("sat") = t.sat, py::arg("unsat") = t.unsat,
                           py::arg("agree") = t.agree, py::arg("unknown") = t.unknown, py::arg("disagree") = t.disagree,

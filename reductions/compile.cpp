@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "common/assert.hpp"
 #include "gadgets/canvas.hpp"
 #include "gadgets/clause_gadget.hpp"
 #include "gadgets/order_gadget.hpp"
@@ -21,18 +22,14 @@ std::string literal_name(int lit) { return (lit < 0 ? "~" : "") + var_name(var_o
 
 }  // namespace
 
-uint64_t compiled_node_count(const Formula& f, ReductionModel model) {
+uint64_t compiled_node_count(const Formula& f, TimeModel model) {
   if (f.num_vars < 1) return 0;
   uint64_t literals = 0;
   for (const auto& c : f.clauses) literals += c.size();
   const auto n = static_cast<uint64_t>(f.num_vars), m = static_cast<uint64_t>(f.clauses.size());
   // The continuous reduction's separation gadget has two nodes more than
   // the order gadget it replaces.
-  return 43 * n + 5 * literals + 15 * m - (model == ReductionModel::Continuous ? 9 : 11);
-}
-
-const char* reduction_model_name(ReductionModel m) {
-  return m == ReductionModel::Continuous ? "continuous" : "discrete";
+  return 43 * n + 5 * literals + 15 * m - (model == TimeModel::Continuous ? 9 : 11);
 }
 
 namespace {
@@ -172,7 +169,7 @@ void fill_stats(CompiledFormula& out, const Formula& f, size_t separated_link, s
 
 }  // namespace
 
-CompiledFormula compile_formula(const Formula& f, Mutation mutation, ReductionModel model) {
+CompiledFormula compile_formula(const Formula& f, Mutation mutation, TimeModel model) {
   if (auto e = validate(f); !e.empty()) throw std::invalid_argument("compile: " + e);
   if (uint64_t nodes = compiled_node_count(f, model); nodes > static_cast<uint64_t>(kMaxNodes))
     throw std::invalid_argument("the compiled instance would have " + std::to_string(nodes) +
@@ -195,7 +192,7 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation, ReductionMo
   place_variable_gadgets(stack, cp, n, mutation);
   place_clause_gadgets(stack, cp, f, mutation);
   // In the continuous model the link y_n < z_1 (k = n - 1) is a separation gadget.
-  const size_t separated_link = model == ReductionModel::Continuous && n >= 1 ? static_cast<size_t>(n - 1) : SIZE_MAX;
+  const size_t separated_link = model == TimeModel::Continuous && n >= 1 ? static_cast<size_t>(n - 1) : SIZE_MAX;
   const size_t chain_size = place_order_chain(stack, cp, separated_link, mutation);
   // The spine: rows 0 .. last used row (a single node for an empty formula).
   const int64_t top = std::max<int64_t>(stack.row - 2, 0);
@@ -235,7 +232,7 @@ std::vector<CouplingId> schedule_from_assignment(const CompiledFormula& c, const
 
 std::vector<bool> assignment_from_schedule(const CompiledFormula& c, const std::vector<CouplingId>& order) {
   const size_t k = c.instance.couplings().size();
-  if (order.size() != k) throw std::invalid_argument("assignment_from_schedule: not a full order");
+  GRIDLOCK_REQUIRE(order.size() == k, "assignment_from_schedule: not a full order");
   std::vector<size_t> pos(k, k);
   for (size_t i = 0; i < order.size(); ++i) {
     if (order[i] >= k || pos[order[i]] != k) throw std::invalid_argument("assignment_from_schedule: not a permutation");

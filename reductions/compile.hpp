@@ -34,7 +34,7 @@
 // For LSAT and LSAT<=3 input every coupling has at most 3 operations (each
 // literal occurs at most twice; each chain element is in at most two links).
 //
-// The continuous model (ReductionModel::Continuous; the paper's theorem that
+// The continuous model (TimeModel::Continuous; the paper's theorem that
 // continuous Collision-free Schedule is NP-hard): the same, except that the
 // link y_n < z_1 is a separation gadget (gadgets/separation_gadget.hpp,
 // 8 nodes instead of 6, one vertical expansion): z_1 may start only once y_n
@@ -54,12 +54,12 @@
 #include "gadgets/mutation.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/schedule.hpp"
+#include "lattice/time_model.hpp"
 
 namespace gridlock {
 
-// Which Collision-free Schedule problem the instance is for.
-enum class ReductionModel { Discrete, Continuous };
-const char* reduction_model_name(ReductionModel m);  // "discrete", "continuous"
+// Which Collision-free Schedule problem the instance is for: TimeModel
+// (lattice/time_model.hpp).
 
 struct CompileStats {
   size_t nodes = 0, edges = 0, ops = 0, couplings = 0;
@@ -74,7 +74,7 @@ struct CompileStats {
 
 struct CompiledFormula {
   Instance instance;
-  ReductionModel model = ReductionModel::Discrete;
+  TimeModel model = TimeModel::Discrete;
   int num_vars = 0;
   size_t num_clauses = 0;
   // Coupling ids, indexed by variable - 1 / clause index.
@@ -87,7 +87,7 @@ struct CompiledFormula {
 // The node count of f's compiled instance, 43n + 5L + 15m - 11 (- 9 in the
 // continuous model; 0 for n = 0), computed from the counts alone, before
 // anything is drawn.
-uint64_t compiled_node_count(const Formula& f, ReductionModel model = ReductionModel::Discrete);
+uint64_t compiled_node_count(const Formula& f, TimeModel model = TimeModel::Discrete);
 
 // Compiles f. Requires validate(f) empty and every clause non-empty (throws
 // std::invalid_argument naming the first empty clause, 1-based), and
@@ -96,7 +96,7 @@ uint64_t compiled_node_count(const Formula& f, ReductionModel model = ReductionM
 // breaks one gadget kind (tests and the fuzzer's self-test only).
 // Deterministic. Time and memory O(n + m + L).
 CompiledFormula compile_formula(const Formula& f, Mutation mutation = Mutation::None,
-                                ReductionModel model = ReductionModel::Discrete);
+                                TimeModel model = TimeModel::Discrete);
 
 // Certificate, assignment -> schedule: for a satisfying assignment (indexed
 // 1..num_vars), the order  [x_i:T or x_i:F by value, i = 1..n], y_1..y_n,

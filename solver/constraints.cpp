@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "common/linear_interval.hpp"
 #include "solver/op_tree.hpp"
 #include "solver/row_order.hpp"
 
@@ -117,22 +118,11 @@ void ConstraintSystem::index() {
 }
 
 bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
-  // Each form gives tau > -s/c (c > 0) or tau < s/(-c) (c < 0), or needs
-  // s > 0 (c == 0). Fractions num/den with den > 0, compared exactly.
-  __int128 lo_n = 0, lo_d = 1;  // lower end, starts at 0
-  __int128 hi_n = 1, hi_d = 1;  // upper end, starts at 1
-  for (uint32_t i = 0; i < nf; ++i) {
-    if (c[i] == 0) {
-      if (s[i] <= 0) return false;
-    } else if (c[i] > 0) {
-      __int128 n = -static_cast<__int128>(s[i]), d = c[i];
-      if (n * lo_d > lo_n * d) lo_n = n, lo_d = d;
-    } else {
-      __int128 n = s[i], d = -static_cast<__int128>(c[i]);
-      if (n * hi_d < hi_n * d) hi_n = n, hi_d = d;
-    }
-  }
-  return lo_n * hi_d < hi_n * lo_d;
+  // Each form is s_i + c_i p > 0, inside the open window (0, 1).
+  LinearInterval<int64_t> progress(Fraction{0, 1}, Fraction{1, 1});
+  for (uint32_t i = 0; i < nf; ++i)
+    if (!progress.add(s[i], c[i])) return false;
+  return !progress.empty();
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "common/assert.hpp"
 #include "lattice/motion.hpp"
 #include "solver/op_tree.hpp"
 #include "solver/row_order.hpp"
@@ -165,7 +166,7 @@ void list_gap_changes(const Instance& inst, GapVerdict& v) {
 }  // namespace
 
 GapVerdict check_gaps(const Instance& inst) {
-  if (!inst.horizontal_only()) throw std::invalid_argument("check_gaps needs a horizontal-only instance");
+  GRIDLOCK_REQUIRE(inst.horizontal_only(), "check_gaps needs a horizontal-only instance");
   GapVerdict v;
   const BfsTree t = final_displacements(inst);
   check_cycles(inst, t, v);

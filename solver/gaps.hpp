@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "common/verdict.hpp"
 #include "lattice/instance.hpp"
 
 namespace gridlock {
@@ -33,6 +34,9 @@ struct GapChange {
 
 struct GapVerdict {
   bool collision_free = true;
+  // The answer as every decision procedure gives it (common/verdict.hpp):
+  // Yes (collision-free) or No; the checker has no limit, so never Unknown.
+  Verdict verdict() const { return collision_free ? Verdict::Yes : Verdict::No; }
   enum class Reason { None, Gap, Cycle } reason = Reason::None;
   // Reason::Gap: the first gap (by row, then x) whose final size is negative.
   int64_t row = 0;

@@ -89,23 +89,17 @@ bool OrderSat::add_order_clauses(const std::vector<std::pair<CouplingId, Couplin
 bool OrderSat::add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced,
                                    const std::vector<std::vector<std::pair<CouplingId, int>>>& partners) {
   const size_t words = (k_ + 63) / 64;
-  std::vector<std::vector<CouplingId>> succ(k_);
-  std::vector<uint32_t> indeg(k_, 0);
-  for (auto [a, b] : forced) succ[a].push_back(b), ++indeg[b];
+  const Digraph forced_graph = Digraph::from_edges(k_, forced);
   std::vector<CouplingId> topo;
-  for (CouplingId q = 0; q < k_; ++q)
-    if (indeg[q] == 0) topo.push_back(q);
-  for (size_t h = 0; h < topo.size(); ++h)
-    for (CouplingId b : succ[topo[h]])
-      if (--indeg[b] == 0) topo.push_back(b);
-  if (topo.size() < k_) return false;  // forced relations form a cycle
+  if (!topological_order(forced_graph, topo)) return false;  // forced relations form a cycle
   std::vector<uint64_t> reach(k_ * words, 0);
   auto r = [&](CouplingId a, CouplingId b) { return (reach[a * words + (b >> 6)] >> (b & 63)) & 1; };
   for (size_t h = topo.size(); h-- > 0;) {
     const CouplingId v = topo[h];
     if ((h & 1023) == 0) budget_.check(st_);
     uint64_t* row = reach.data() + v * words;
-    for (CouplingId w : succ[v]) {
+    for (uint32_t e = forced_graph.first[v]; e < forced_graph.first[v + 1]; ++e) {
+      const CouplingId w = forced_graph.target[e];
       row[w >> 6] |= uint64_t{1} << (w & 63);
       const uint64_t* wr = reach.data() + w * words;
       for (size_t i = 0; i < words; ++i) row[i] |= wr[i];
@@ -172,100 +166,41 @@ SearchOutcome OrderSat::solve(const std::function<bool(const std::vector<Couplin
 // shortest cycle through each uncovered vertex of each non-trivial strongly
 // connected component), false.
 bool OrderSat::order_of_model(std::vector<CouplingId>& out) {
-  const Orientation g = model_orientation();
-  const Components cc = components(g);
-  if (cc.cyclic.empty()) {
-    out.assign(cc.order_rev.rbegin(), cc.order_rev.rend());
+  const Digraph g = model_orientation();
+  const StrongComponents cc = strong_components(g);
+  if (cc.count() == k_) {  // every component a single coupling: acyclic
+    out.assign(cc.nodes.rbegin(), cc.nodes.rend());
     return true;
   }
   add_cycle_clauses(g, cc);
   return false;
 }
 
-// Adjacency (CSR) of the orientation the current model gives the pairs.
-OrderSat::Orientation OrderSat::model_orientation() const {
-  Orientation g;
-  g.deg.assign(k_ + 1, 0);
+Digraph OrderSat::model_orientation() const {
   std::vector<std::pair<CouplingId, CouplingId>> edges;
   edges.reserve(pair_vars_.size());
   for (const PairVar& p : pair_vars_) {
     const bool lo_first = sat_.value(p.var);
     edges.push_back(lo_first ? std::make_pair(p.lo, p.hi) : std::make_pair(p.hi, p.lo));
   }
-  for (auto [a, b] : edges) ++g.deg[a + 1];
-  for (size_t i = 0; i < k_; ++i) g.deg[i + 1] += g.deg[i];
-  g.adj.resize(edges.size());
-  std::vector<uint32_t> fill(g.deg.begin(), g.deg.end() - 1);
-  for (auto [a, b] : edges) g.adj[fill[a]++] = b;
-  return g;
-}
-
-// Tarjan's strongly connected components of g, iteratively. Components
-// come out sinks first.
-OrderSat::Components OrderSat::components(const Orientation& g) const {
-  const auto& deg = g.deg;
-  const auto& adj = g.adj;
-  Components cc;
-  cc.comp.assign(k_, UINT32_MAX);
-  std::vector<uint32_t> index(k_, UINT32_MAX), low(k_, 0);
-  std::vector<CouplingId> stack;
-  std::vector<std::pair<CouplingId, uint32_t>> call;  // (vertex, next edge)
-  std::vector<char> on_stack(k_, 0);
-  uint32_t next_index = 0, num_comp = 0;
-  for (CouplingId s = 0; s < k_; ++s) {
-    if (index[s] != UINT32_MAX) continue;
-    call.push_back({s, deg[s]});
-    index[s] = low[s] = next_index++;
-    stack.push_back(s);
-    on_stack[s] = 1;
-    while (!call.empty()) {
-      auto& [v, e] = call.back();
-      if (e < deg[v + 1]) {
-        const CouplingId w = adj[e++];
-        if (index[w] == UINT32_MAX) {
-          index[w] = low[w] = next_index++;
-          stack.push_back(w);
-          on_stack[w] = 1;
-          call.push_back({w, deg[w]});
-        } else if (on_stack[w]) {
-          low[v] = std::min(low[v], index[w]);
-        }
-        continue;
-      }
-      const CouplingId done = v;
-      call.pop_back();
-      if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[done]);
-      if (low[done] != index[done]) continue;
-      std::vector<CouplingId> members;
-      CouplingId x;
-      do {
-        x = stack.back();
-        stack.pop_back();
-        on_stack[x] = 0;
-        cc.comp[x] = num_comp;
-        members.push_back(x);
-        cc.order_rev.push_back(x);
-      } while (x != done);
-      ++num_comp;
-      if (members.size() > 1) cc.cyclic.push_back(std::move(members));
-    }
-  }
-  return cc;
+  return Digraph::from_edges(k_, edges);
 }
 
 // Shortest cycles inside each cyclic component (BFS from each vertex not
 // yet on a cycle clause of this round); adds "not all of these B's" for each.
-void OrderSat::add_cycle_clauses(const Orientation& g, const Components& cc) {
-  const auto& deg = g.deg;
-  const auto& adj = g.adj;
-  const auto& comp = cc.comp;
+void OrderSat::add_cycle_clauses(const Digraph& g, const StrongComponents& cc) {
+  const auto& deg = g.first;
+  const auto& adj = g.target;
+  const auto& comp = cc.component;
   std::vector<char> covered(k_, 0);
   std::vector<CouplingId> parent(k_, kNone), queue;
   std::vector<uint32_t> seen(k_, UINT32_MAX);
   uint32_t stamp = 0;
   std::vector<int> clause;
-  for (const auto& members : cc.cyclic) {
-    for (CouplingId s : members) {
+  for (size_t c = 0; c < cc.count(); ++c) {
+    if (cc.size_of(c) < 2) continue;
+    for (uint32_t m = cc.start[c]; m < cc.start[c + 1]; ++m) {
+      const CouplingId s = cc.nodes[m];
       if (covered[s]) continue;
       ++stamp;
       queue.assign(1, s);

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cnf/incremental_sat.hpp"
+#include "common/graph_order.hpp"
 #include "solver/search.hpp"
 
 namespace gridlock {
@@ -80,26 +81,15 @@ class OrderSat {
     int var;
     CouplingId lo, hi;  // var true: lo before hi
   };
-  // The orientation of the pairs in the model, CSR: the successors of v are
-  // adj[deg[v]] .. adj[deg[v + 1] - 1].
-  struct Orientation {
-    std::vector<uint32_t> deg;
-    std::vector<CouplingId> adj;
-  };
-  struct Components {
-    std::vector<uint32_t> comp;                   // component of each coupling
-    std::vector<CouplingId> order_rev;            // couplings, sinks first
-    std::vector<std::vector<CouplingId>> cyclic;  // members of each non-trivial component
-  };
   static uint64_t key(CouplingId a, CouplingId b) { return (uint64_t{a} << 32) | b; }
 
   bool add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced,
                            const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
   void add_triangle_clauses(const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
   bool order_of_model(std::vector<CouplingId>& out);
-  Orientation model_orientation() const;
-  Components components(const Orientation& g) const;
-  void add_cycle_clauses(const Orientation& g, const Components& cc);
+  // The orientation of the pairs in the model (common/graph_order.hpp).
+  Digraph model_orientation() const;
+  void add_cycle_clauses(const Digraph& g, const StrongComponents& cc);
 
   SearchBudget& budget_;
   SolveStats& st_;

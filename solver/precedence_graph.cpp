@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/assert.hpp"
+#include "common/graph_order.hpp"
 
 namespace gridlock {
 
@@ -19,19 +20,14 @@ void PrecedenceGraph::pop(uint32_t a, uint32_t b) {
   in_[b].pop_back();
 }
 
-// Kahn's algorithm.
+// Kahn's algorithm (common/graph_order.hpp).
 bool PrecedenceGraph::sort(std::vector<uint32_t>& order, std::vector<uint32_t>& cycle) const {
-  const size_t n = out_.size();
-  std::vector<uint32_t> indeg(n);
-  order.clear();
-  for (size_t v = 0; v < n; ++v) {
-    indeg[v] = static_cast<uint32_t>(in_[v].size());
-    if (indeg[v] == 0) order.push_back(static_cast<uint32_t>(v));
-  }
-  for (size_t h = 0; h < order.size(); ++h)
-    for (const Edge& e : out_[order[h]])
-      if (--indeg[e.node] == 0) order.push_back(e.node);
-  if (order.size() == n) return true;
+  std::vector<uint32_t> indeg(out_.size());
+  for (size_t v = 0; v < out_.size(); ++v) indeg[v] = static_cast<uint32_t>(in_[v].size());
+  const auto successors = [&](uint32_t v, auto&& f) {
+    for (const Edge& e : out_[v]) f(e.node);
+  };
+  if (topological_order(indeg, successors, order)) return true;
   find_cycle(indeg, cycle);
   return false;
 }

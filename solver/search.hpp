@@ -8,7 +8,7 @@
 #pragma once
 
 #include <cstdint>
-#include <cstdio>
+#include <cstdio>  // std::FILE (PairsProof)
 #include <functional>
 #include <vector>
 
@@ -31,7 +31,7 @@ class SearchBudget {
     ++st.states;
     if (opt_.max_states != 0 && st.states > opt_.max_states) throw LimitReached{};
     deadline_.check();
-    if (opt_.progress) show_progress(st);
+    if (opt_.on_progress) show_progress(st);
   }
   // Time and stop check without counting a node: for long loops inside one
   // node and for the set-up (constraint building).
@@ -47,22 +47,26 @@ class SearchBudget {
   void set_depth(size_t depth) { depth_ = depth; }
   // The node limit (0: none), for external solvers given it as a parameter.
   uint64_t max_states() const { return opt_.max_states; }
-  // Draws "solve: WHAT, T s" on the progress line (if progress is on), at
-  // most twice a second: for a computation that cannot tick, e.g. one call
-  // of an external solver (then only from one thread at a time).
+  // Reports WHAT through SolveOptions::on_progress (if set), at most twice
+  // a second: for a computation that cannot tick, e.g. one call of an
+  // external solver (then only from one thread at a time).
   void show_activity(const char* what) {
-    if (!opt_.progress) return;
+    if (!opt_.on_progress) return;
     const double t = elapsed();
     if (t - last_shown_ < 0.5) return;
     last_shown_ = t;
-    std::fprintf(stderr, "\r\033[Ksolve: %s, %.1f s", what, t);
-    std::fflush(stderr);
-    drawn_ = true;
+    SolveProgress p;
+    p.states = states_seen_, p.depth = depth_, p.seconds = t, p.activity = what;
+    report(p);
   }
-  // Erases the progress line (if one was drawn).
+  // The last report (finished = true), if any was made: the listener may
+  // erase what it drew.
   void clear_progress() {
-    if (drawn_) std::fputs("\r\033[K", stderr);
-    drawn_ = false;
+    if (!reported_) return;
+    SolveProgress p;
+    p.states = states_seen_, p.depth = depth_, p.seconds = elapsed(), p.finished = true;
+    reported_ = false;
+    opt_.on_progress(p);
   }
   // True when a limit is already exceeded (time, stop request, or nodes,
   // counting `extra` nodes not yet ticked). For loops that cannot tick per
@@ -78,20 +82,25 @@ class SearchBudget {
 
  private:
   void show_progress(const SolveStats& st) {
+    states_seen_ = st.states;
     const double t = elapsed();
     if (t - last_shown_ < 0.5) return;
     last_shown_ = t;
-    std::fprintf(stderr, "\r\033[Ksolve: %llu states, depth %zu, %.0f states/s, %.1f s",
-                 static_cast<unsigned long long>(st.states), depth_, static_cast<double>(st.states) / t, t);
-    std::fflush(stderr);
-    drawn_ = true;
+    SolveProgress p;
+    p.states = st.states, p.depth = depth_, p.seconds = t;
+    report(p);
+  }
+  void report(const SolveProgress& p) {
+    reported_ = true;
+    opt_.on_progress(p);
   }
   SolveOptions opt_;
   Deadline deadline_;
   size_t depth_ = 0;
   uint64_t polls_ = 0;
   double last_shown_ = 0;
-  bool drawn_ = false;
+  uint64_t states_seen_ = 0;
+  bool reported_ = false;
 };
 
 struct SearchOutcome {

@@ -24,6 +24,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "common/assert.hpp"
 #include "solver/activity_heap.hpp"
 #include "solver/gap_inequalities.hpp"
 #include "solver/precedence_graph.hpp"
@@ -105,7 +106,7 @@ class LearningSearch {
     std::vector<std::pair<int64_t, Lit>> lits;
     std::vector<PrecedenceTerm> terms;
     for (const CollisionConstraint& c : sys_.constraints) {
-      if (c.num_forms != 1) throw std::invalid_argument("precedence search needs one form per constraint");
+      GRIDLOCK_REQUIRE(c.num_forms == 1, "precedence search needs one form per constraint");
       if (c.base[0] > 0) return false;  // overlapping from the start: the first step of c collides
       const bool ok = for_each_gap_inequality(c, terms, [&](auto& ts, int64_t bound) {
         if (bound < 0) return false;

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "common/assert.hpp"
 #include "solver/search.hpp"
 
 namespace gridlock {
@@ -41,7 +42,7 @@ class PrecedenceSearch {
     terms_.resize(nc);
     for (size_t c = 0; c < nc; ++c) {
       const CollisionConstraint& cc = sys.constraints[c];
-      if (cc.num_forms != 1) throw std::invalid_argument("precedence search needs one form per constraint");
+      GRIDLOCK_REQUIRE(cc.num_forms == 1, "precedence search needs one form per constraint");
       val_[c] = cc.base[0];
       for (size_t j = 0; j < cc.rel.size(); ++j) terms_[c].push_back({cc.rel[j], cc.coef_of(j)[0]});
     }

@@ -17,6 +17,7 @@
 // excluded lazily by the order layer (solver/order_sat.hpp).
 #include <stdexcept>
 
+#include "common/assert.hpp"
 #include "solver/gap_inequalities.hpp"
 #include "solver/order_sat.hpp"
 #include "solver/search.hpp"
@@ -26,7 +27,7 @@ namespace gridlock {
 SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st) {
   SearchOutcome out;
   for (const CollisionConstraint& c : sys.constraints) {
-    if (c.num_forms != 1) throw std::invalid_argument("the SAT engine needs one form per constraint");
+    GRIDLOCK_REQUIRE(c.num_forms == 1, "the SAT engine needs one form per constraint");
     if (c.base[0] > 0) {  // overlapping from the start: the first step of c collides
       out.status = Verdict::No;
       ++st.refuted;

@@ -37,6 +37,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,12 +50,24 @@ namespace gridlock {
 
 struct PrecedenceHooks;  // solver/search.hpp
 
+// What a long solve reports through SolveOptions::on_progress. The library
+// never draws: the command line turns these into its progress line
+// (tools/progress_line.hpp).
+struct SolveProgress {
+  uint64_t states = 0;             // search nodes so far
+  size_t depth = 0;                // depth of the current search path
+  double seconds = 0;              // since the solve began
+  const char* activity = nullptr;  // set when what runs counts no nodes (e.g. one call of Z3)
+  bool finished = false;           // the last report: the solve is returning
+};
+
 struct SolveOptions {
   double seconds = 0;       // wall-clock limit; 0 = no limit
   uint64_t max_states = 0;  // limit on search nodes; 0 = none
-  // Draw a progress line (states, depth, rate) on stderr every 0.5 s; for
-  // the command line when stderr is a terminal. Erased before returning.
-  bool progress = false;
+  // Called at most twice a second while the search runs (from the thread
+  // that searches), and once with finished = true before the solve returns
+  // if it was called at all. Empty: no reports.
+  std::function<void(const SolveProgress&)> on_progress;
   // Which search to run. Auto: Sat for horizontal-only instances, Pairs
   // otherwise (measured fastest, docs/performance.md). Precedence or Sat on a
   // non-horizontal instance throws std::invalid_argument; Pairs and States

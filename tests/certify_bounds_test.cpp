@@ -356,7 +356,7 @@ TEST(CertifyBounds, CompiledFormulas) {
   int no = 0;
   Counts n;
   const Instance other = compile_formula(reduce_to_lsat(random_ksat({4, 20, 3, base + 999})).output(), Mutation::None,
-                                         ReductionModel::Continuous)
+                                         TimeModel::Continuous)
                              .instance;
   const int formulas = test::scaled(60);
   for (int i = 0; i < formulas; ++i) {
@@ -364,8 +364,7 @@ TEST(CertifyBounds, CompiledFormulas) {
     const int vars = 3 + static_cast<int>(seed % 4);
     const Formula f = random_ksat({vars, vars * 5, 3, seed});
     const bool sat = exhaustive_sat(f).status == Verdict::Yes;
-    const Instance inst =
-        compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous).instance;
+    const Instance inst = compile_formula(reduce_to_lsat(f).output(), Mutation::None, TimeModel::Continuous).instance;
     const CertifiedContinuous cc = solve_continuous_certified(inst, {});
     ASSERT_EQ(cc.result.status, sat ? Verdict::Yes : Verdict::No) << "seed " << seed;
     if (sat) continue;

@@ -207,8 +207,7 @@ TEST(CertifyPairs, CompiledContinuousReductionInDiscreteTime) {
     const int vars = 5 + static_cast<int>(seed % 4);
     const Formula f = random_ksat({vars, vars * 5, 3, seed});
     const bool sat = exhaustive_sat(f).status == Verdict::Yes;
-    const Instance inst =
-        compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous).instance;
+    const Instance inst = compile_formula(reduce_to_lsat(f).output(), Mutation::None, TimeModel::Continuous).instance;
     ASSERT_FALSE(inst.horizontal_only());
     const PreparedInstance prep(inst);
     const CertifiedSolve cs = solve_discrete_certified(prep, {});

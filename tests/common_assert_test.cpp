@@ -5,11 +5,14 @@
 
 #include <climits>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "cnf/formula.hpp"
 #include "common/assert.hpp"
 #include "common/random.hpp"
+#include "lattice/random_instance.hpp"
 #include "lattice/schedule.hpp"
 
 namespace gridlock {
@@ -43,6 +46,30 @@ TEST(AssertDeathTest, ConditionIsNotEvaluatedWhenOff) {
 }
 
 #endif
+
+// GRIDLOCK_REQUIRE is on in every build: a broken precondition of a public
+// function is an std::invalid_argument carrying the message; the message
+// is built only when the check fails.
+TEST(Require, ThrowsInvalidArgumentInEveryBuild) {
+  int built = 0;
+  auto message = [&] {
+    ++built;
+    return std::string("needs a positive count");
+  };
+  EXPECT_NO_THROW(GRIDLOCK_REQUIRE(1 > 0, message()));
+  EXPECT_EQ(built, 0);
+  try {
+    GRIDLOCK_REQUIRE(1 < 0, message());
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "needs a positive count");
+  }
+  EXPECT_EQ(built, 1);
+  // A library precondition checked by it, in an optimised build too.
+  RandomInstanceParams none;
+  none.nodes = 0;
+  EXPECT_THROW(random_instance(none, 1), std::invalid_argument);
+}
 
 }  // namespace
 }  // namespace gridlock

@@ -309,7 +309,7 @@ TEST(ParallelInstanceSet, SameFilesForOneTwoAndFourWorkers) {
   plan.vars = 6;
   plan.threshold = 6;
   plan.lsat = 3;
-  plan.models = {ReductionModel::Discrete};
+  plan.models = {TimeModel::Discrete};
   InstanceSetPlan mix = plan;  // drawn until 3 YES and 2 NO are kept
   mix.want_yes = 3;
   mix.want_no = 2;

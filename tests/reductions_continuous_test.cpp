@@ -1,4 +1,4 @@
-// The continuous reduction (compile_formula with ReductionModel::Continuous):
+// The continuous reduction (compile_formula with TimeModel::Continuous):
 // sizes, non-interference of the gadgets in continuous time (the simulator
 // collides iff some gadget's continuous contract breaks), certificates both
 // ways, and the broken separation gadget changing the answer for real.
@@ -20,7 +20,7 @@
 namespace gridlock {
 namespace {
 
-constexpr ReductionModel kCont = ReductionModel::Continuous;
+constexpr TimeModel kCont = TimeModel::Continuous;
 
 bool collides(const CompiledFormula& c, const Schedule& s) {
   return Simulator(c.instance).run(s).collision.has_value();

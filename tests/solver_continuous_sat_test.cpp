@@ -164,7 +164,7 @@ TEST(ContinuousSat, DifferenceLogicHonoursTimeAndNodes) {
   p.n = 15, p.m = 64, p.k = 3, p.seed = 1;
   while (solve_sat(random_ksat(p)).status != Verdict::No) ++p.seed;
   const Formula f = random_ksat(p);
-  const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous);
+  const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, TimeModel::Continuous);
   SolveOptions o;
   o.seconds = 2.0;
   ContinuousResult r = solve_continuous(c.instance, o);
@@ -190,7 +190,7 @@ TEST(ContinuousSat, CompiledFormulasWithoutShortcutsMatchCadical) {
     KSatParams p;
     p.n = 3, p.m = 4 + s % 3, p.k = 3, p.seed = 20261125 + static_cast<uint64_t>(s);
     const Formula f = random_ksat(p);
-    const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous);
+    const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, TimeModel::Continuous);
     for (ContinuousEngine engine : {ContinuousEngine::SatNoShortcuts, ContinuousEngine::DlNoShortcuts}) {
       ContinuousResult r = solve_continuous_general(c.instance, {}, PairEncoding::Auto, engine);
       EXPECT_EQ(r.status, solve_sat(f).status) << "seed " << p.seed;
@@ -213,7 +213,7 @@ TEST(ContinuousSat, DifferenceLogicDecidesLargerCompiledFormulas) {
     p.n = 4 + s % 4, p.k = 3, p.seed = 20261130 + static_cast<uint64_t>(s);
     p.m = (p.n * 426 + 50) / 100;
     const Formula f = random_ksat(p);
-    const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, ReductionModel::Continuous);
+    const CompiledFormula c = compile_formula(reduce_to_lsat(f).output(), Mutation::None, TimeModel::Continuous);
     ContinuousResult r = solve_continuous_general(c.instance, {}, PairEncoding::Auto, ContinuousEngine::DlNoShortcuts);
     const Verdict expected = solve_sat(f).status;
     EXPECT_EQ(r.status, expected) << "n " << p.n << " seed " << p.seed;

@@ -205,7 +205,7 @@ TEST(InstanceSet, FilesComeInASafeOrderAndEveryYesHasItsWitness) {
   plan.vars = 5;
   plan.threshold = 3;
   plan.lsat = 2;
-  plan.models = {ReductionModel::Discrete, ReductionModel::Continuous};
+  plan.models = {TimeModel::Discrete, TimeModel::Continuous};
   std::vector<std::string> order;
   std::map<std::string, std::string> files;
   InstanceSetEvents ev;

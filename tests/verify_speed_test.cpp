@@ -66,9 +66,9 @@ int same_results(uint64_t seed, int max_vars, std::vector<FuzzKind> kinds, Verif
 
 const std::vector<FuzzKind> kAllKinds = {FuzzKind::Ksat, FuzzKind::Lsat, FuzzKind::Planted};
 
-VerifyOptions with_model(VerifyModel m, bool direct = false, Mutation mutation = Mutation::None) {
+VerifyOptions with_model(TimeModels m, bool direct = false, Mutation mutation = Mutation::None) {
   VerifyOptions opt;
-  opt.model = m;
+  opt.models = m;
   opt.direct = direct;
   opt.mutation = mutation;
   return opt;
@@ -76,19 +76,20 @@ VerifyOptions with_model(VerifyModel m, bool direct = false, Mutation mutation =
 
 TEST(Verifier, ReusedVerifierMatchesFreshVerifyFormula) {
   EXPECT_EQ(same_results(15, 6, kAllKinds, VerifyOptions{}, test::scaled(300)), 0);
-  EXPECT_EQ(same_results(18, 6, kAllKinds, with_model(VerifyModel::Discrete, true), test::scaled(60)), 0);
+  EXPECT_EQ(same_results(18, 6, kAllKinds, with_model(TimeModels::only(TimeModel::Discrete), true), test::scaled(60)),
+            0);
 }
 
 // The exact continuous solver is the slow part: fewer, smaller formulas.
 TEST(Verifier, ContinuousAndBothModelsMatch) {
-  EXPECT_EQ(same_results(16, 3, kAllKinds, with_model(VerifyModel::Continuous), test::scaled(10)), 0);
-  EXPECT_EQ(same_results(19, 3, kAllKinds, with_model(VerifyModel::Both), test::scaled(10)), 0);
+  EXPECT_EQ(same_results(16, 3, kAllKinds, with_model(TimeModels::only(TimeModel::Continuous)), test::scaled(10)), 0);
+  EXPECT_EQ(same_results(19, 3, kAllKinds, with_model(TimeModels::both()), test::scaled(10)), 0);
 }
 
 // With a broken gadget the checks disagree on some formulas: the reused
 // Verifier must report the same disagreements.
 TEST(Verifier, BrokenGadgetDisagreementsMatch) {
-  const VerifyOptions broken = with_model(VerifyModel::Discrete, false, Mutation::ClauseTight);
+  const VerifyOptions broken = with_model(TimeModels::only(TimeModel::Discrete), false, Mutation::ClauseTight);
   EXPECT_GT(same_results(17, 6, {FuzzKind::Ksat, FuzzKind::Planted}, broken, test::scaled(60)), 0);
 }
 

@@ -1,8 +1,5 @@
 #include "tools/campaign_cli.hpp"
 
-#include <unistd.h>
-
-#include <chrono>
 #include <iostream>
 
 #include "common/diagnostic.hpp"
@@ -36,31 +33,11 @@ void verify_model_args(const boost::program_options::variables_map& vm, VerifyOp
   if (!mutation) throw UserError("unknown --break-gadget '" + gadget + "'");
   opt.mutation = *mutation;
   const auto& model_name = vm["model"].as<std::string>();
-  auto model = parse_verify_model(model_name);
+  auto model = TimeModels::parse(model_name);
   if (!model) throw UserError("--model must be discrete, continuous or both, not '" + model_name + "'");
-  opt.model = *model;
+  opt.models = *model;
   opt.direct = vm.count("direct") > 0;
   opt.certify = vm.count("no-certificates") == 0;
-}
-
-namespace {
-double seconds_now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
-
-ProgressLine::ProgressLine(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
-
-void ProgressLine::show(const std::string& text, bool now) {
-  if (!enabled_) return;
-  const double t = seconds_now();
-  if (!now && last_ >= 0 && t - last_ < 0.5) return;
-  last_ = t;
-  std::cerr << "\r\033[K" << text << std::flush;
-}
-
-void ProgressLine::clear() const {
-  if (enabled_) std::cerr << "\r\033[K" << std::flush;
 }
 
 void write_json_out(const boost::program_options::variables_map& vm, const nlohmann::json& j) {

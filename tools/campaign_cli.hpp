@@ -9,6 +9,7 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tools/progress_line.hpp"
 #include "tools/user_error.hpp"
 #include "verify/campaign.hpp"
 
@@ -26,22 +27,6 @@ unsigned jobs_arg(const boost::program_options::variables_map& vm);
 // vm["model"], vm["direct"] and vm["break-gadget"] into opt (UserError for
 // an unknown model or mutation).
 void verify_model_args(const boost::program_options::variables_map& vm, VerifyOptions& opt);
-
-// One line of progress on standard error, redrawn in place, when standard
-// error is a terminal (and enabled); nothing otherwise.
-class ProgressLine {
- public:
-  explicit ProgressLine(bool enabled);
-  bool enabled() const { return enabled_; }
-  // Redraws the line (at most twice a second unless now).
-  void show(const std::string& text, bool now = false);
-  // Erases the line, so that other output starts on a clean line.
-  void clear() const;
-
- private:
-  bool enabled_;
-  double last_ = -1;
-};
 
 // Writes j (indented) to vm["json-out"] when that option is given.
 void write_json_out(const boost::program_options::variables_map& vm, const nlohmann::json& j);

@@ -53,7 +53,7 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
   if (use == FormulaUse::Compile) {
     // Both models: the continuous reduction draws 2 nodes more, and verify,
     // fuzz and gen-instances may compile either (never "internal:" midway).
-    const uint64_t discrete = compiled_node_count(f), continuous = compiled_node_count(f, ReductionModel::Continuous);
+    const uint64_t discrete = compiled_node_count(f), continuous = compiled_node_count(f, TimeModel::Continuous);
     if (std::max(discrete, continuous) > static_cast<uint64_t>(kMaxNodes))
       throw UserError(Diagnostic{name, header_line,
                                  "the compiled instance would have " + std::to_string(discrete) +

@@ -27,16 +27,16 @@ std::vector<std::string> describe_compiled(const CompiledFormula& c) {
                   (s.vertical_ops ? "expansions, " + std::to_string(s.vertical_ops) + " of them vertical"
                                   : std::string("horizontal expansions")) +
                   "), " + std::to_string(s.couplings) + " couplings, " + std::to_string(s.rows) + " rows");
-  lines.push_back("model: " + std::string(reduction_model_name(c.model)) + " time" +
-                  (c.model == ReductionModel::Continuous ? " (the link y_n < z_1 is a separation gadget)" : ""));
-  lines.push_back("gadgets: " + std::to_string(s.variable_gadgets) + " variable, " + std::to_string(s.clause_gadgets) +
-                  " clause, " + std::to_string(s.order_gadgets) + " order" +
-                  (c.model == ReductionModel::Continuous ? ", " + std::to_string(s.separation_gadgets) + " separation"
-                                                         : std::string()));
+  lines.push_back("model: " + std::string(time_model_name(c.model)) + " time" +
+                  (c.model == TimeModel::Continuous ? " (the link y_n < z_1 is a separation gadget)" : ""));
+  lines.push_back(
+      "gadgets: " + std::to_string(s.variable_gadgets) + " variable, " + std::to_string(s.clause_gadgets) +
+      " clause, " + std::to_string(s.order_gadgets) + " order" +
+      (c.model == TimeModel::Continuous ? ", " + std::to_string(s.separation_gadgets) + " separation" : std::string()));
   if (c.num_vars >= 1) {
     const auto n = static_cast<long long>(c.num_vars), m = static_cast<long long>(c.num_clauses),
                L = static_cast<long long>(s.literals);
-    const bool cont = c.model == ReductionModel::Continuous;
+    const bool cont = c.model == TimeModel::Continuous;
     lines.push_back("size formulas (n=" + std::to_string(n) + ", m=" + std::to_string(m) + ", L=" + std::to_string(L) +
                     "): nodes " +
                     (cont ? "43n+5L+15m-9 = " + std::to_string(43 * n + 5 * L + 15 * m - 9)
@@ -82,7 +82,7 @@ int run_compile(const std::vector<std::string>& args) {
   const std::string model_name = vm["model"].as<std::string>();
   if (model_name != "discrete" && model_name != "continuous")
     throw UserError("--model must be discrete or continuous, not '" + model_name + "'");
-  const ReductionModel model = model_name == "continuous" ? ReductionModel::Continuous : ReductionModel::Discrete;
+  const TimeModel model = model_name == "continuous" ? TimeModel::Continuous : TimeModel::Discrete;
   if (vm.count("json") && out_path == "-") throw UserError("--json needs -o FILE for the instance");
   const std::string svg_path = vm.count("svg") ? vm["svg"].as<std::string>() : "";
   cli::refuse_overwriting_input(out_path, {path});
@@ -120,7 +120,7 @@ int run_compile(const std::vector<std::string>& args) {
   ans.data()["edges"] = s.edges;
   ans.data()["operations"] = s.ops;
   ans.data()["couplings"] = s.couplings;
-  ans.data()["model"] = reduction_model_name(model);
+  ans.data()["model"] = time_model_name(model);
   ans.data()["vertical_operations"] = s.vertical_ops;
   ans.data()["max_coupling"] = s.max_coupling;
   ans.data()["oversize"] = s.oversize;

@@ -134,7 +134,7 @@ std::string fuzz_header(const FuzzRun& run) {
   const VerifyOptions& vo = run.c.verify;
   std::string header = "gridlock fuzz: seed " + std::to_string(p.seed) + ", shard " + run.shard.str() + ", " +
                        std::to_string(p.min_vars) + ".." + std::to_string(p.max_vars) + " variables, kinds " +
-                       run.kinds + ", model " + verify_model_name(vo.model) + (vo.direct ? ", direct" : "");
+                       run.kinds + ", model " + vo.models.name() + (vo.direct ? ", direct" : "");
   if (vo.mutation != Mutation::None) header += ", BROKEN GADGET " + std::string(mutation_name(vo.mutation));
   return header;
 }
@@ -145,7 +145,7 @@ std::string replay_command(const FuzzRun& run, uint64_t index) {
   const VerifyOptions& vo = run.c.verify;
   return "gridlock fuzz --seed " + std::to_string(p.seed) + " --index " + std::to_string(index) + " --min-vars " +
          std::to_string(p.min_vars) + " --max-vars " + std::to_string(p.max_vars) + " --kinds " + run.kinds +
-         (vo.model != VerifyModel::Discrete ? std::string(" --model ") + verify_model_name(vo.model) : "") +
+         (vo.models.has(TimeModel::Continuous) ? std::string(" --model ") + vo.models.name() : "") +
          (vo.direct ? " --direct" : "") + (vo.certify ? "" : " --no-certificates") +
          (vo.mutation != Mutation::None ? std::string(" --break-gadget ") + mutation_name(vo.mutation) : "");
 }
@@ -230,7 +230,7 @@ nlohmann::json fuzz_json(const FuzzRun& run, const FuzzTally& t) {
                    {"max_states", c.verify.max_states},
                    {"keep_going", c.keep_going},
                    {"break_gadget", mutation_name(c.verify.mutation)},
-                   {"model", verify_model_name(c.verify.model)},
+                   {"model", c.verify.models.name()},
                    {"direct", c.verify.direct}};
   return j;
 }

@@ -94,8 +94,8 @@ InstanceSetPlan read_plan(const po::variables_map& vm, std::string& model_name) 
   if (model_name != "discrete" && model_name != "continuous" && model_name != "both")
     throw UserError("--model must be discrete, continuous or both, not '" + model_name + "'");
   plan.models.clear();
-  if (model_name != "continuous") plan.models.push_back(ReductionModel::Discrete);
-  if (model_name != "discrete") plan.models.push_back(ReductionModel::Continuous);
+  if (model_name != "continuous") plan.models.push_back(TimeModel::Discrete);
+  if (model_name != "discrete") plan.models.push_back(TimeModel::Continuous);
   if (vm.count("formula")) {
     cli::refuse_name_clashes(vm["formula"].as<std::vector<std::string>>(), "the files given-NAME.*");
     for (const auto& path : vm["formula"].as<std::vector<std::string>>())
@@ -109,7 +109,7 @@ nlohmann::json entry_json(const SetInstance& e) {
   nlohmann::json j;
   j["index"] = e.index;  // position in the unsharded set
   j["name"] = e.name;
-  j["model"] = reduction_model_name(e.model);
+  j["model"] = time_model_name(e.model);
   j["instance"] = e.instance_file;
   j["formula"] = e.formula_file;
   j["origin"] = e.origin;
@@ -123,7 +123,7 @@ nlohmann::json entry_json(const SetInstance& e) {
   j["couplings"] = e.couplings;
   j["max_coupling"] = e.max_coupling;
   if (e.yes) {
-    const bool cont = e.model == ReductionModel::Continuous;
+    const bool cont = e.model == TimeModel::Continuous;
     j["certificate"] = {{"kind", cont ? "start times" : "schedule"},
                         {"file", e.certificate_file},
                         {"checked_by", "gridlock simulator"}};

@@ -53,7 +53,7 @@ const char* const kLiftDescription =
 // --model: the assignment in model_arg -> a schedule, run by the simulator.
 int lift_assignment(Answer& ans, const Formula& f, const CompiledFormula& c, const std::string& model_arg) {
   const Instance& inst = c.instance;
-  const bool continuous = c.model == ReductionModel::Continuous;
+  const bool continuous = c.model == TimeModel::Continuous;
   std::vector<bool> value;
   if (auto e = read_model(model_arg, f.num_vars, value)) throw UserError(*e);
   long bad = first_falsified_clause(f, value);
@@ -89,7 +89,7 @@ int lift_assignment(Answer& ans, const Formula& f, const CompiledFormula& c, con
 // checked against the formula.
 int lift_schedule(Answer& ans, const Formula& f, const CompiledFormula& c, const po::variables_map& vm) {
   const Instance& inst = c.instance;
-  const bool continuous = c.model == ReductionModel::Continuous;
+  const bool continuous = c.model == TimeModel::Continuous;
   Schedule sched;
   if (continuous) {
     if (auto e = read_times_file(inst, vm["times"].as<std::string>(), sched)) throw UserError(*e);
@@ -135,13 +135,13 @@ int run_lift(const std::vector<std::string>& args) {
   cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {
-    c = compile_formula(f, Mutation::None, continuous ? ReductionModel::Continuous : ReductionModel::Discrete);
+    c = compile_formula(f, Mutation::None, continuous ? TimeModel::Continuous : TimeModel::Discrete);
   } catch (const std::invalid_argument& e) {
     throw UserError(Diagnostic{path, 0, e.what()});
   }
   const Instance& inst = c.instance;
   Answer ans("lift", vm.count("json") > 0);
-  ans.comment("gridlock lift " + path + ": " + summary(f) + "; " + reduction_model_name(c.model) + " instance of " +
+  ans.comment("gridlock lift " + path + ": " + summary(f) + "; " + time_model_name(c.model) + " instance of " +
               std::to_string(inst.num_nodes()) + " nodes, " + std::to_string(inst.couplings().size()) + " couplings");
   if (vm.count("model")) return lift_assignment(ans, f, c, vm["model"].as<std::string>());
   return lift_schedule(ans, f, c, vm);

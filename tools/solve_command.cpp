@@ -14,6 +14,7 @@
 #include "tools/command.hpp"
 #include "tools/options.hpp"
 #include "tools/output.hpp"
+#include "tools/progress_line.hpp"
 #include "tools/user_error.hpp"
 
 namespace gridlock {
@@ -169,7 +170,8 @@ int run_solve(const std::vector<std::string>& args) {
   SolveOptions opt;
   opt.seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
   opt.max_states = cli::count_arg_opt(vm, "max-states").value_or(0);
-  opt.progress = !vm.count("json") && isatty(STDERR_FILENO);
+  cli::ProgressLine progress(!vm.count("json"));  // drawn only on a terminal; outlives every solve below
+  opt.on_progress = cli::solve_progress_to(progress);
   const std::string engine = vm["engine"].as<std::string>();
   if (model_is_discrete(vm)) opt.engine = engine_arg(engine);
 

@@ -255,7 +255,7 @@ nlohmann::json verify_run(const VerifyCampaign& c, const std::vector<std::string
   for (size_t i = 0; i < files.size(); ++i)
     inputs.push_back(files[i] == "-" ? cli::input_list({"-"}, to_dimacs(formulas[i]))[0]
                                      : cli::input_list({files[i]})[0]);
-  const nlohmann::json options = {{"model", verify_model_name(c.verify.model)},
+  const nlohmann::json options = {{"model", c.verify.models.name()},
                                   {"direct", c.verify.direct},
                                   {"break_gadget", mutation_name(c.verify.mutation)},
                                   {"timeout", c.verify.solve_seconds},
@@ -267,7 +267,7 @@ nlohmann::json verify_json(const VerifyCampaign& c, size_t inputs, nlohmann::jso
                            const nlohmann::json& run) {
   nlohmann::json j;
   j["command"] = "verify";
-  j["model"] = verify_model_name(c.verify.model);
+  j["model"] = c.verify.models.name();
   j["shard"] = c.shard.str();
   j["inputs"] = inputs;
   j["run"] = run;
@@ -316,8 +316,8 @@ int run_verify(const std::vector<std::string>& args) {
   VerifyView v;
   v.picture_nodes = static_cast<size_t>(cli::count_arg(vm, "picture-nodes", 1));
   cli::verify_model_args(vm, c.verify);
-  v.with_discrete = c.verify.model != VerifyModel::Continuous;
-  v.with_continuous = c.verify.model != VerifyModel::Discrete;
+  v.with_discrete = c.verify.models.has(TimeModel::Discrete);
+  v.with_continuous = c.verify.models.has(TimeModel::Continuous);
   v.json = vm.count("json") > 0;
   v.rows = v.json || vm.count("json-out");
   if (vm.count("pictures")) v.pictures = vm["pictures"].as<std::string>();

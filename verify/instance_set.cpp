@@ -110,7 +110,7 @@ class FormulaLabeller {
     if (random && plan_.mix() && surely_unwanted(yes)) return out;
     LsatReduction red = reduce_to_lsat(s.formula);
     out.formula_text = to_dimacs(s.formula);
-    for (ReductionModel model : plan_.models) out.instances.push_back(make(s, red, sat, model, index));
+    for (TimeModel model : plan_.models) out.instances.push_back(make(s, red, sat, model, index));
     if (stop_requested()) return std::nullopt;
     return out;
   }
@@ -121,9 +121,9 @@ class FormulaLabeller {
                : plan_.want_no >= 0 && no_kept_.load(std::memory_order_relaxed) >= plan_.want_no;
   }
 
-  ReadyInstance make(const SetFormula& s, const LsatReduction& red, const SatResult& sat, ReductionModel model,
+  ReadyInstance make(const SetFormula& s, const LsatReduction& red, const SatResult& sat, TimeModel model,
                      uint64_t index) const {
-    const bool cont = model == ReductionModel::Continuous;
+    const bool cont = model == TimeModel::Continuous;
     ReadyInstance ready;
     SetInstance& e = ready.entry;
     e.index = index;
@@ -151,7 +151,7 @@ class FormulaLabeller {
     if (!e.yes && cont && plan_.no_certificates) confirm_continuous_no(c.instance, ready);
     std::ostringstream grid;
     write_instance(grid, c.instance,
-                   {e.name + ": " + s.origin, std::string("model: ") + reduction_model_name(model),
+                   {e.name + ": " + s.origin, std::string("model: ") + time_model_name(model),
                     std::string("answer: ") + (e.yes ? "YES" : "NO")});
     ready.files.emplace_back(e.instance_file, grid.str());
     return ready;

@@ -53,7 +53,7 @@ struct InstanceSetPlan {
   int want_yes = -1, want_no = -1;  // keep only this many YES / NO random ones; -1: all
   double sat_seconds = 60;          // CaDiCaL's limit per formula; undecided ones are skipped
   Shard shard;                      // instances i (given, threshold, lsat) with shard.has(i); not with want_*
-  std::vector<ReductionModel> models = {ReductionModel::Discrete};  // 1 or 2, compiled in this order
+  std::vector<TimeModel> models = {TimeModel::Discrete};  // 1 or 2, compiled in this order
   // Discrete NO instances: the exact solver's NO certificate (docs/certificates.md),
   // checked by certify/ and written as NAME.nocert. A NO the solver does not
   // settle within solve_seconds (0: no limit) gets none (the manifest names none).
@@ -69,7 +69,7 @@ struct InstanceSetPlan {
 struct SetInstance {
   uint64_t index = 0;  // position of its formula in the unsharded set
   std::string name;    // NAME: files NAME.grid and NAME.schedule / NAME.times
-  ReductionModel model = ReductionModel::Discrete;
+  TimeModel model = TimeModel::Discrete;
   std::string formula_file, instance_file;
   std::string origin;
   uint64_t seed = 0;

@@ -1,7 +1,6 @@
 #include "verify/verify.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "cnf/lsat.hpp"
 #include "cnf/sat_solver.hpp"
 #include "common/atomic_file.hpp"
+#include "common/clock.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/compile.hpp"
@@ -25,16 +25,6 @@
 
 namespace gridlock {
 
-const char* verify_model_name(VerifyModel m) {
-  return m == VerifyModel::Discrete ? "discrete" : m == VerifyModel::Continuous ? "continuous" : "both";
-}
-
-std::optional<VerifyModel> parse_verify_model(const std::string& s) {
-  for (VerifyModel m : {VerifyModel::Discrete, VerifyModel::Continuous, VerifyModel::Both})
-    if (s == verify_model_name(m)) return m;
-  return std::nullopt;
-}
-
 int VerifyResult::witnesses_checked() const {
   return (sat_witness == Check::Valid) + (solver_witness == Check::Valid) + (gaps_witness == Check::Valid) +
          (no_certificate == Check::Valid) + (csat_witness == Check::Valid) + (csolver_witness == Check::Valid) +
@@ -43,18 +33,12 @@ int VerifyResult::witnesses_checked() const {
 
 namespace {
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::vector<std::string> names_of(const Instance& inst, const std::vector<CouplingId>& order) {
   std::vector<std::string> out;
   out.reserve(order.size());
   for (CouplingId q : order) out.push_back(inst.couplings()[q].name);
   return out;
 }
-
-Verdict tri(bool yes) { return yes ? Verdict::Yes : Verdict::No; }
 
 std::vector<std::string> times_of(const Instance& inst, const Schedule& s) {
   std::vector<std::string> out;
@@ -103,7 +87,7 @@ struct Problems {
 // checker: Valid, or Invalid with the issue. who: "the solver" and the like.
 Check checked_certificate(const Instance& inst, const std::string& text, const std::string& why_none,
                           const std::string& model, const std::string& who, std::string& issue, double& ms) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch t0;
   Check out = Check::Valid;
   if (text.empty()) {
     out = Check::Invalid;
@@ -112,7 +96,7 @@ Check checked_certificate(const Instance& inst, const std::string& text, const s
     out = Check::Invalid;
     issue = who + "'s NO certificate is rejected: " + checked.reason;
   }
-  ms += ms_since(t0);
+  ms += t0.milliseconds();
   return out;
 }
 
@@ -122,9 +106,9 @@ Check checked_certificate(const Instance& inst, const std::string& text, const s
 void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt,
                        std::unique_ptr<Simulator>& simulator) {
   r.ran_continuous = true;
-  auto t0 = std::chrono::steady_clock::now();
-  r.compiled_continuous = compile_formula(r.lsat, opt.mutation, ReductionModel::Continuous);
-  r.ms_compile += ms_since(t0);
+  Stopwatch t0;
+  r.compiled_continuous = compile_formula(r.lsat, opt.mutation, TimeModel::Continuous);
+  r.ms_compile += t0.milliseconds();
   const CompiledFormula& c = r.compiled_continuous;
   const Instance& inst = c.instance;
   r.cnodes = c.stats.nodes;
@@ -137,12 +121,12 @@ void verify_continuous(VerifyResult& r, const SatResult& sat, const Lift& red, c
     r.csat_times = times_of(inst, s);
     r.csat_witness = sim.run(s).collision ? Check::Invalid : Check::Valid;
   }
-  t0 = std::chrono::steady_clock::now();
+  t0.restart();
   CertifiedContinuous cc;
   if (opt.certify) cc = solve_continuous_certified(inst, solve_options(opt));
   else cc.result = solve_continuous(inst, solve_options(opt));
   const ContinuousResult& cr = cc.result;
-  r.ms_csolve = ms_since(t0);
+  r.ms_csolve = t0.milliseconds();
   if (opt.certify && cr.status == Verdict::No) {
     r.ccertificate = cc.certificate;
     r.cno_certificate = checked_certificate(inst, cc.certificate, cc.why_none, "continuous", "the continuous solver",
@@ -171,7 +155,7 @@ void continuous_problems(const VerifyResult& r, Problems& p) {
 // G: F itself (VerifyOptions::direct, no empty clause) or to-lsat's output.
 Lift lsat_form(VerifyResult& r, const VerifyOptions& opt, std::optional<LsatReduction>& lsat) {
   const Formula& f = r.source;
-  auto t0 = std::chrono::steady_clock::now();
+  Stopwatch t0;
   const bool direct = opt.direct && std::none_of(f.clauses.begin(), f.clauses.end(),
                                                  [](const std::vector<int>& cl) { return cl.empty(); });
   Lift red;
@@ -183,7 +167,7 @@ Lift lsat_form(VerifyResult& r, const VerifyOptions& opt, std::optional<LsatRedu
     r.reduced = !lsat->stats().identity;
     r.lsat = lsat->output();
   }
-  r.ms_compile = ms_since(t0);
+  r.ms_compile = t0.milliseconds();
   return red;
 }
 
@@ -193,10 +177,10 @@ Lift lsat_form(VerifyResult& r, const VerifyOptions& opt, std::optional<LsatRedu
 void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, const VerifyOptions& opt,
                      std::unique_ptr<Simulator>& simulator, Problems& p) {
   r.ran_discrete = true;
-  auto t0 = std::chrono::steady_clock::now();
+  Stopwatch t0;
   r.compiled = compile_formula(r.lsat, opt.mutation);
   const CompiledFormula& c = r.compiled;
-  r.ms_compile += ms_since(t0);
+  r.ms_compile += t0.milliseconds();
   r.nodes = c.stats.nodes;
   r.ops = c.stats.ops;
   r.couplings = c.stats.couplings;
@@ -211,7 +195,7 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
     r.sat_schedule = names_of(inst, order);
     r.sat_witness = sim.run_order(order).collision ? Check::Invalid : Check::Valid;
   }
-  t0 = std::chrono::steady_clock::now();
+  t0.restart();
   CertifiedSolve cs;
   SolveOptions so = solve_options(opt);
   // The default engine decides, as without certificates (the precedence
@@ -220,7 +204,7 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
   if (opt.certify) cs = solve_discrete_certified(prep, so, &sim);
   else cs.result = solve_discrete(prep, solve_options(opt), &sim);
   const SolveResult& sr = cs.result;
-  r.ms_solve = ms_since(t0);
+  r.ms_solve = t0.milliseconds();
   if (opt.certify && sr.status == Verdict::No) {
     r.certificate = cs.certificate;
     r.no_certificate = checked_certificate(inst, cs.certificate, cs.why_none, "discrete", "the solver",
@@ -234,10 +218,10 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
     r.solver_witness = satisfies(r.source, back) ? Check::Valid : Check::Invalid;
   }
   // The gap checker (continuous model), its witness through the simulator.
-  t0 = std::chrono::steady_clock::now();
+  t0.restart();
   GapVerdict gv = check_gaps(inst);
-  r.ms_gaps = ms_since(t0);
-  r.continuous = tri(gv.collision_free);
+  r.ms_gaps = t0.milliseconds();
+  r.continuous = gv.verdict();
   if (gv.collision_free) {
     Schedule all_at_once;
     all_at_once.start.assign(inst.couplings().size(), Rational(0));
@@ -264,17 +248,17 @@ VerifyResult Verifier::verify(const Formula& f, const std::string& name, const V
   r.name = name;
   r.source = f;
   // 1. CaDiCaL on the source.
-  auto t0 = std::chrono::steady_clock::now();
+  Stopwatch t0;
   SatResult sat = solve_sat(f);
-  r.ms_sat = ms_since(t0);
+  r.ms_sat = t0.milliseconds();
   r.sat = sat.status;
   // 2. to-lsat if needed, then each reduction asked for.
   std::optional<LsatReduction> lsat;
   const Lift red = lsat_form(r, opt, lsat);
   Problems p;
   if (r.sat == Verdict::Unknown) p.add("CaDiCaL gave no answer");
-  if (opt.model != VerifyModel::Continuous) verify_discrete(r, sat, red, opt, sim_, p);
-  if (opt.model != VerifyModel::Discrete) {
+  if (opt.models.has(TimeModel::Discrete)) verify_discrete(r, sat, red, opt, sim_, p);
+  if (opt.models.has(TimeModel::Continuous)) {
     verify_continuous(r, sat, red, opt, sim_);
     continuous_problems(r, p);
   }
@@ -323,7 +307,7 @@ MaybeError write_reproducer(const VerifyResult& r, const std::string& dir, const
         "solver-times.txt     the exact continuous solver's start times\n";
   }
   std::string flags;
-  if (opt.model != VerifyModel::Discrete) flags += std::string(" --model ") + verify_model_name(opt.model);
+  if (opt.models.has(TimeModel::Continuous)) flags += std::string(" --model ") + opt.models.name();
   if (opt.mutation != Mutation::None) flags += std::string(" --break-gadget ") + mutation_name(opt.mutation);
   if (opt.direct) flags += " --direct";
   write(

@@ -13,7 +13,7 @@
 // the simulator inside the solver) -> an assignment of G -> of F -> F.
 //
 // The continuous model (VerifyOptions::model Continuous or Both): G is also
-// compiled for continuous time (compile_formula with ReductionModel::
+// compiled for continuous time (compile_formula with TimeModel::
 // Continuous) into I', and the exact continuous solver (solver/continuous.hpp)
 // decides I'. Expected: its answer is CaDiCaL's. Certificates: F's model ->
 // start times of I' (times_from_assignment) -> the simulator; the solver's
@@ -36,14 +36,12 @@
 
 namespace gridlock {
 
-// Which reductions verify checks: the discrete one (exact discrete solver and
-// gap checker), the continuous one (exact continuous solver), or both.
-enum class VerifyModel { Discrete, Continuous, Both };
-const char* verify_model_name(VerifyModel m);  // "discrete", "continuous", "both"
-std::optional<VerifyModel> parse_verify_model(const std::string& s);
+// Which reductions verify checks (VerifyOptions::models, a TimeModels of
+// lattice/time_model.hpp): the discrete one (exact discrete solver and gap
+// checker), the continuous one (exact continuous solver), or both.
 
 struct VerifyOptions {
-  VerifyModel model = VerifyModel::Discrete;
+  TimeModels models = TimeModels::only(TimeModel::Discrete);
   double solve_seconds = 60;           // limit of each exact solver (then UNKNOWN)
   uint64_t max_states = 0;             // limit of the exact solver; 0 = none
   Mutation mutation = Mutation::None;  // test only: compile with a broken gadget
