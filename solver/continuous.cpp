@@ -1,7 +1,6 @@
 #include "solver/continuous.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -10,6 +9,7 @@
 
 #include <z3++.h>
 
+#include "common/clock.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/simulate.hpp"
 #include "solver/constraints.hpp"
@@ -426,8 +426,8 @@ std::optional<ContinuousEngine> continuous_engine_named(const std::string& name)
 
 ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt, ContinuousEngine engine) {
   if (!inst.horizontal_only()) return solve_continuous_general(inst, opt, PairEncoding::Auto, engine);
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const Stopwatch clock;
+  auto elapsed = [&] { return clock.seconds(); };
   ContinuousResult res;
   const size_t k = inst.couplings().size();
   {
