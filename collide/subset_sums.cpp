@@ -101,6 +101,24 @@ void recover_witness(const PairSystem& S, const RunChoice& ch, const std::vector
   want->running = ch.var >= 0 ? S.var[ch.var] : S.gens[ch.gen].first;
 }
 
+// True iff some running progress s in [0,1] makes the eight rows
+// c_i + k_i s + sign_i Delta[axis_i] positive at the cell Delta = (x, y):
+// an exact one-variable interval test. cs is scratch space (cleared).
+bool cell_meets(const PairSystem& S, const i128 cst[8], const i128 ks[8], int64_t x, int64_t y, std::vector<Lin>& cs) {
+  cs.clear();
+  for (int i = 0; i < 8; ++i) {
+    Lin L;
+    L.a[0] = ks[i];
+    L.c = cst[i] + (S.axis[i] < 0 ? 0 : S.sign[i] * (S.axis[i] == 0 ? x : y));
+    cs.push_back(L);
+  }
+  Lin lo, hi;
+  lo.a[0] = 1, lo.strict = false;
+  hi.a[0] = -1, hi.c = 1, hi.strict = false;
+  cs.push_back(lo), cs.push_back(hi);
+  return !interval_of(cs).empty();
+}
+
 }  // namespace
 
 bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B, const PathNets& nets,
@@ -142,17 +160,7 @@ bool discrete_pair_collides_per_vector(const RegionForm& A, const RegionForm& B,
         for (int64_t y = sums.y0; y < sums.y0 + sums.H; ++y) {
           if (!sums.get(x, y)) continue;
           std::vector<Lin> cs;
-          for (int i = 0; i < 8; ++i) {
-            Lin L;
-            L.a[0] = ks[i];
-            L.c = cst[i] + (S.axis[i] < 0 ? 0 : S.sign[i] * (S.axis[i] == 0 ? x : y));
-            cs.push_back(L);
-          }
-          Lin lo, hi;
-          lo.a[0] = 1, lo.strict = false;
-          hi.a[0] = -1, hi.c = 1, hi.strict = false;
-          cs.push_back(lo), cs.push_back(hi);
-          if (interval_of(cs).empty()) continue;
+          if (!cell_meets(S, cst, ks, x, y, cs)) continue;
           if (want) recover_witness(S, ch, rest, rest_idx, val, x, y, want);
           return true;
         }
@@ -220,18 +228,7 @@ std::optional<std::pair<int64_t, int64_t>> meeting_cell(const PairSystem& S, con
   for (int64_t x = x_from; x <= x_to; ++x)
     for (int64_t y = y_from; y <= y_to; ++y) {
       if (!sums.get(x, y)) continue;
-      cs.clear();
-      for (int i = 0; i < 8; ++i) {
-        Lin L;
-        L.a[0] = ks[i];
-        L.c = cst[i] + (S.axis[i] < 0 ? 0 : S.sign[i] * (S.axis[i] == 0 ? x : y));
-        cs.push_back(L);
-      }
-      Lin lo, hi;
-      lo.a[0] = 1, lo.strict = false;
-      hi.a[0] = -1, hi.c = 1, hi.strict = false;
-      cs.push_back(lo), cs.push_back(hi);
-      if (!interval_of(cs).empty()) return std::pair{x, y};
+      if (cell_meets(S, cst, ks, x, y, cs)) return std::pair{x, y};
     }
   return std::nullopt;
 }
