@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
 
@@ -99,7 +100,9 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
 // one coupling, NO, so every method runs to the end. range(1) picks the
 // method: 0 find_collision Auto (the space-time cell sweep), 1 the
 // pairwise zonotope method, 2 the exact simulator running the one schedule
-// (what Auto did before the sweep), 3 the sweep's all-pairs twin.
+// (what Auto did before the sweep), 3 the sweep's all-pairs twin, 4 the
+// sweep with every item in memory at once (one band: its memory before
+// the column bands).
 // Counters: items (M) and tests (T) of the sweep, candidate pairs of the
 // simulator's broad phase.
 void single_coupling_bench(benchmark::State& state, const Instance& inst) {
@@ -115,6 +118,8 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
       if (how == 0 && r.algorithm != "single-coupling") state.SkipWithError("not the single-coupling step");
       yes = r.collides;
       st.items = r.stats.cell_items, st.tests = r.stats.pair_tests;
+    } else if (how == 4) {
+      yes = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, nullptr, UINT64_MAX).collides;
     } else if (how == 2) {
       SimResult run = sim.run_order({0});
       yes = run.collision.has_value(), ss = run.stats;
@@ -122,13 +127,15 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
       yes = single_coupling_pairwise(inst, sim.tree(), sim.regions()).has_value();
     }
   }
-  if (how == 0) (void)single_coupling_sweep(inst, sim.tree(), sim.regions(), &st);
+  if (how == 0) (void)single_coupling_sweep(inst, sim.tree(), sim.regions(), &st);  // the counters
   state.counters["n"] = static_cast<double>(inst.num_nodes());
   state.counters["yes"] = yes;
   state.counters["items"] = static_cast<double>(st.items);
   state.counters["tests"] = static_cast<double>(st.tests);
   state.counters["motion"] = static_cast<double>(st.motion);
   state.counters["max_active"] = static_cast<double>(st.max_active);
+  state.counters["bands"] = static_cast<double>(st.bands);
+  state.counters["peak_items"] = static_cast<double>(st.peak_items);
   state.counters["sim_pairs"] = static_cast<double>(ss.candidate_pairs);
 }
 
@@ -300,7 +307,7 @@ void register_large_serpentines() {
         ->Unit(benchmark::kMillisecond);
   }
   for (int64_t n : {16384, 65536})
-    for (int64_t how : {0, 1, 2})
+    for (int64_t how : {0, 1, 2, 4})
       benchmark::RegisterBenchmark("BM_CombSingleCoupling", BM_CombSingleCoupling)
           ->Args({n, how})
           ->Iterations(1)

@@ -142,16 +142,22 @@ CellKeys cell_keys(const std::vector<Faces>& faces) {
   return k;
 }
 
-// Appends r's items: for each column the region meets, the time span it
-// does; for each row it meets during that span, the common span. Columns:
-// at most 1 + |speed of xlo| + |speed of xhi|; rows of one column: at most
-// 3 + the y extent swept during its span, and the spans of the columns
-// cover each t at most twice (a region is at most one cell wide), so at
-// most 3 + 6 speed_x + 4 speed_y cells are visited (docs/collide.md).
-void add_items(const Faces& f, uint32_t r, const CellKeys& keys, std::vector<Item>& items) {
+// The columns a region's sweep can meet over [0, 1]: [first, last).
+int64_t first_column(const Faces& f) { return std::min(f[0].a, f[0].a + f[0].b); }
+int64_t last_column(const Faces& f) { return std::max(f[1].a, f[1].a + f[1].b); }
+
+// Visits r's items in columns [c0, c1) (absolute x): for each column the
+// region meets, the time span it does; for each row it meets during that
+// span, the common span. Columns: at most 1 + |speed of xlo| + |speed of
+// xhi|; rows of one column: at most 3 + the y extent swept during its span,
+// and the spans of the columns cover each t at most twice (a region is at
+// most one cell wide), so at most 3 + 6 speed_x + 4 speed_y cells are
+// visited (docs/collide.md).
+template <typename Sink>
+void each_item(const Faces& f, int64_t c0, int64_t c1, Sink&& sink) {
   const Span life = alive(f);
   if (life.empty()) return;
-  const int64_t x0 = std::min(f[0].a, f[0].a + f[0].b), x1 = std::max(f[1].a, f[1].a + f[1].b);
+  const int64_t x0 = std::max(c0, first_column(f)), x1 = std::min(c1, last_column(f));
   for (int64_t i = x0; i < x1; ++i) {
     Span sx = life;
     sx.cut(i + 1 - f[0].a, -f[0].b);  // xlo < i + 1
@@ -163,9 +169,39 @@ void add_items(const Faces& f, uint32_t r, const CellKeys& keys, std::vector<Ite
       Span s = sx;
       s.cut(j + 1 - f[2].a, -f[2].b);  // ylo < j + 1
       s.cut(f[3].a - j, f[3].b);       // yhi > j
-      if (!s.empty()) items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
+      if (!s.empty()) sink(i, j, s);
     }
   }
+}
+
+// Bands of whole columns, each with at most `band_items` items (or one
+// column), so that the items in memory at once are bounded by the band,
+// not by the total motion. Band b is columns [cuts[b], cuts[b + 1]).
+// Costs one counting pass over the items (O(mu) time, O(columns) memory).
+std::vector<int64_t> column_bands(const std::vector<Faces>& faces, const CellKeys& keys, uint64_t band_items,
+                                  const Deadline* deadline) {
+  int64_t hi = keys.x0;
+  for (const Faces& f : faces)
+    if (!alive(f).empty()) hi = std::max(hi, last_column(f));
+  if (hi - keys.x0 > UINT32_MAX)
+    throw std::overflow_error("single_coupling_sweep: the motion spans more than 2^32 cells");
+  std::vector<uint64_t> per_column(static_cast<size_t>(hi - keys.x0) + 1, 0);
+  for (size_t r = 0; r < faces.size(); ++r) {
+    if (deadline && r % 4096 == 4095) deadline->check();
+    each_item(faces[r], keys.x0, hi,
+              [&](int64_t i, int64_t, const Span&) { ++per_column[static_cast<size_t>(i - keys.x0)]; });
+  }
+  std::vector<int64_t> cuts{keys.x0};
+  uint64_t in_band = 0;
+  for (size_t c = 0; c < per_column.size(); ++c) {
+    if (in_band > 0 && in_band + per_column[c] > band_items) {
+      cuts.push_back(keys.x0 + static_cast<int64_t>(c));
+      in_band = 0;
+    }
+    in_band += per_column[c];
+  }
+  cuts.push_back(hi + 1);
+  return cuts;
 }
 
 // More items present in one cell at one moment than this prove a
@@ -203,33 +239,62 @@ SingleCouplingAnswer sweep_cell(const std::vector<Item>& items, size_t b, size_t
 }  // namespace
 
 SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
-                                           SingleCouplingStats* stats, const Deadline* deadline) {
+                                           SingleCouplingStats* stats, const Deadline* deadline, uint64_t band_items) {
   SingleCouplingStats st;
   const std::vector<Faces> faces = region_faces(inst, t, regions);
   const CellKeys keys = cell_keys(faces);
-  std::vector<Item> items;
+  std::vector<uint32_t> live;  // regions of positive width at some t, by first column
   for (uint32_t r = 0; r < faces.size(); ++r) {
-    if (deadline && r % 4096 == 4095) deadline->check();
     const Faces& f = faces[r];
     if (alive(f).empty()) continue;
-    ++st.regions;
+    live.push_back(r);
     const auto speed = [&](int lo) {
       return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b)));
     };
     st.motion += 1 + speed(0) + speed(2);
-    add_items(f, r, keys, items);
   }
-  if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items");
-  st.items = items.size();
-  std::sort(items.begin(), items.end(),
-            [](const Item& x, const Item& y) { return x.cell != y.cell ? x.cell < y.cell : less(x.lo, y.lo); });
+  st.regions = live.size();
+  std::stable_sort(live.begin(), live.end(),
+                   [&](uint32_t x, uint32_t y) { return first_column(faces[x]) < first_column(faces[y]); });
+  const std::vector<int64_t> cuts = column_bands(faces, keys, std::max<uint64_t>(band_items, 1), deadline);
+  st.bands = cuts.size() - 1;
+  // Bands left to right; cells are keyed by column first, so the cells are
+  // swept in the same order as one global sort would (the same answer for
+  // every band size).
   SingleCouplingAnswer found;
-  std::vector<uint32_t> active;
-  size_t cells = 0;
-  for (size_t b = 0, e = 0; b < items.size() && !found.collides; b = e) {
-    if (deadline && ++cells % 4096 == 0) deadline->check();
-    for (e = b + 1; e < items.size() && items[e].cell == items[b].cell;) ++e;
-    found = sweep_cell(items, b, e, faces, active, st);
+  std::vector<Item> items;
+  std::vector<uint32_t> active, open;  // open: live regions whose columns reach the band
+  size_t next = 0, cells = 0;
+  for (size_t band = 0; band + 1 < cuts.size() && !found.collides; ++band) {
+    const int64_t c0 = cuts[band], c1 = cuts[band + 1];
+    for (; next < live.size() && first_column(faces[live[next]]) < c1; ++next) open.push_back(live[next]);
+    size_t keep = 0;
+    for (uint32_t r : open)
+      if (last_column(faces[r]) > c0) open[keep++] = r;
+    open.resize(keep);
+    items.clear();
+    for (uint32_t r : open) {
+      if (deadline && ++cells % 4096 == 0) deadline->check();
+      each_item(faces[r], c0, c1, [&](int64_t i, int64_t j, const Span& s) {
+        items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
+      });
+    }
+    if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items in one column");
+    st.items += items.size();
+    st.peak_items = std::max<uint64_t>(st.peak_items, items.size());
+    // A total order (a region has one item per cell), so the cells are
+    // swept the same way whatever order the items were made in.
+    std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) {
+      if (x.cell != y.cell) return x.cell < y.cell;
+      if (less(x.lo, y.lo)) return true;
+      if (less(y.lo, x.lo)) return false;
+      return x.region < y.region;
+    });
+    for (size_t b = 0, e = 0; b < items.size() && !found.collides; b = e) {
+      if (deadline && ++cells % 4096 == 0) deadline->check();
+      for (e = b + 1; e < items.size() && items[e].cell == items[b].cell;) ++e;
+      found = sweep_cell(items, b, e, faces, active, st);
+    }
   }
   if (stats) *stats = st;
   return found;

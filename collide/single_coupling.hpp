@@ -32,7 +32,12 @@ struct SingleCouplingStats {
   uint64_t items = 0;       // M: (cell, time interval) items
   uint64_t tests = 0;       // T: exact pair tests
   uint64_t max_active = 0;  // most items present in one cell when an item entered
+  uint64_t bands = 0;       // column bands swept one after another
+  uint64_t peak_items = 0;  // most items in memory at once (the largest band)
 };
+
+// Items held in memory at once by default: 2^20 items of 48 bytes.
+constexpr uint64_t kSingleCouplingBandItems = uint64_t{1} << 20;
 
 struct RegionPair {
   uint32_t a = 0, b = 0;  // a < b
@@ -53,10 +58,16 @@ struct SingleCouplingAnswer {
 // (all run at once either way); with one coupling this is the node part of
 // the Colliding Schedule answer. t is the spanning tree of `inst`, regions
 // its Regions. Checks deadline (if given) every few thousand items.
+// Memory: O(n + columns + band_items + the items of the fullest column):
+// the cells are swept in bands of whole columns holding at most band_items
+// items each (one counting pass decides the bands), so the O(mu) items are
+// never all in memory; time stays O(n + mu log mu). The answer (pair
+// included) is the same for every band_items >= 1.
 // Throws std::overflow_error if the motion spans more than 2^32 cells along
 // an axis (not with coordinates within kMaxCoordinate and n < 10^9).
 SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
-                                           SingleCouplingStats* stats = nullptr, const Deadline* deadline = nullptr);
+                                           SingleCouplingStats* stats = nullptr, const Deadline* deadline = nullptr,
+                                           uint64_t band_items = kSingleCouplingBandItems);
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.
