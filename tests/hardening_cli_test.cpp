@@ -675,7 +675,8 @@ std::string expansion_row(const std::string& path, int k) {
 
 // 18. One limit for everything: --timeout covers the final simulator check
 // of a solution (before: `solve --timeout 5` on a 25 000-expansion row took
-// 53 s), collide has a --timeout (before: none; 37 s at 40 000 nodes), and
+// 53 s), collide and check have a --timeout (before: none; 37 s at 40 000
+// nodes for collide), and
 // `cnf solve --time/--conflicts` bind every solver (before: dpll ignored
 // both). Bounds are loose (shared machines): they catch an ignored limit.
 TEST(HardeningCli, EveryDecisionCommandHonoursItsLimit) {
@@ -693,6 +694,17 @@ TEST(HardeningCli, EveryDecisionCommandHonoursItsLimit) {
   wall = seconds_since(t0);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("s UNKNOWN"), std::string::npos) << r.out;
+  EXPECT_LT(wall, 10.0);
+  // check: the simulator's deadline (before: no --timeout; 25 000 couplings
+  // run one after another take minutes).
+  std::string order;
+  for (int i = 0; i < 25000; ++i) order += "x" + std::to_string(i) + " ";
+  const std::string order_file = test::write_file(dir + "/row.order", order + "\n");
+  t0 = std::chrono::steady_clock::now();
+  r = run_gridlock({"check", row, "--order-file", order_file, "--timeout", "1", "--json"});
+  wall = seconds_since(t0);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "UNKNOWN");
   EXPECT_LT(wall, 10.0);
   auto bad = run_gridlock({"collide", row, "--timeout", "0"});
   EXPECT_EQ(bad.exit_code, 1);
