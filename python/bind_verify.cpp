@@ -4,6 +4,7 @@
 // GIL for its call, and an exception it raises stops the campaign (through
 // the stop request) and is raised by the call.
 #include "cnf/dimacs.hpp"
+#include "common/ordered_pool.hpp"
 #include "python/bindings.hpp"
 #include "verify/campaign.hpp"
 #include "verify/fuzz.hpp"
@@ -87,9 +88,18 @@ struct Callback {
   }
 };
 
+// jobs: None for the cores available (as the command line), else 1..1024.
+unsigned jobs_of(const py::object& jobs) {
+  if (jobs.is_none()) return available_cores();
+  const long long n = jobs.cast<long long>();
+  if (n < 1 || n > 1024) raise("jobs: want 1 to 1024 worker threads, got " + std::to_string(n));
+  return static_cast<unsigned>(n);
+}
+
 py::dict verify(const py::list& inputs, const py::object& names, const std::string& model, double timeout,
-                uint64_t max_states, bool direct, const py::object& progress) {
+                uint64_t max_states, bool direct, const py::object& jobs, const py::object& progress) {
   VerifyCampaign c;
+  c.jobs = jobs_of(jobs);
   c.verify = verify_options(model, timeout, max_states, direct);
   c.reproducers = "";
   std::vector<Formula> formulas;
@@ -161,7 +171,7 @@ py::dict tally_dict(const FuzzTally& t) {
 
 py::dict fuzz(uint64_t count, uint64_t seed, int min_vars, int max_vars, const std::vector<std::string>& kinds,
               const std::string& model, double timeout, uint64_t max_states, bool direct, bool keep_going, double time,
-              const py::object& progress) {
+              const py::object& jobs, const py::object& progress) {
   if (min_vars < 1 || max_vars > 64 || min_vars > max_vars) raise("fuzz: need 1 <= min_vars <= max_vars <= 64");
   if (count < 1) raise("fuzz: count must be at least 1");
   FuzzCampaign c;
@@ -170,6 +180,7 @@ py::dict fuzz(uint64_t count, uint64_t seed, int min_vars, int max_vars, const s
   c.last = count;
   c.seconds = time;
   c.keep_going = keep_going;
+  c.jobs = jobs_of(jobs);
   Callback cb{progress, nullptr};
   FuzzEvents ev;
   ev.progress = [&](const FuzzTally& t) { cb([&] { return tally_dict(t); }); };
@@ -193,12 +204,12 @@ py::dict fuzz(uint64_t count, uint64_t seed, int min_vars, int max_vars, const s
 
 void bind_verify(py::module_& m) {
   m.def("verify", &verify, py::arg("formulas"), py::arg("names") = py::none(), py::arg("model") = "discrete",
-        py::arg("timeout") = 60.0, py::arg("max_states") = 0, py::arg("direct") = false,
+        py::arg("timeout") = 60.0, py::arg("max_states") = 0, py::arg("direct") = false, py::arg("jobs") = py::none(),
         py::arg("progress") = py::none());
   m.def("fuzz", &fuzz, py::arg("count") = 1000, py::arg("seed") = 1, py::arg("min_vars") = 3, py::arg("max_vars") = 6,
         py::arg("kinds") = std::vector<std::string>{"mix"}, py::arg("model") = "discrete", py::arg("timeout") = 10.0,
         py::arg("max_states") = 2000000, py::arg("direct") = false, py::arg("keep_going") = false,
-        py::arg("time") = 0.0, py::arg("progress") = py::none());
+        py::arg("time") = 0.0, py::arg("jobs") = py::none(), py::arg("progress") = py::none());
   m.def(
       "fuzz_formula",
       [](uint64_t seed, uint64_t index, int min_vars, int max_vars, const std::vector<std::string>& kinds) {

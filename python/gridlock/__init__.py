@@ -199,30 +199,34 @@ def lift(compiled: Compiled, assignment: Optional[Sequence[int]] = None,
 
 def verify(formulas: Sequence[Union[Formula, str]], names: Optional[Sequence[str]] = None,
            model: str = "discrete", timeout: float = 60.0, max_states: int = 0, direct: bool = False,
-           progress: Optional[Callable[[dict], None]] = None) -> dict:
+           jobs: Optional[int] = None, progress: Optional[Callable[[dict], None]] = None) -> dict:
     """Checks the reduction end to end on each formula (docs/verify.md).
 
     formulas: Formula objects or DIMACS paths. Returns the record of
     `gridlock verify --json` (rows under "formulas", the "summary");
-    progress(row) is called after each formula.
+    progress(row) is called after each formula, in order. jobs: worker
+    threads (None: the cores available, like --jobs); the result is the
+    same for every number.
     """
     return _core.verify(list(formulas), names=None if names is None else list(names), model=model,
-                        timeout=timeout, max_states=max_states, direct=direct, progress=progress)
+                        timeout=timeout, max_states=max_states, direct=direct, jobs=jobs, progress=progress)
 
 
 def fuzz(count: int = 1000, seed: int = 1, min_vars: int = 3, max_vars: int = 6,
          kinds: Sequence[str] = ("mix",), model: str = "discrete", timeout: float = 10.0,
          max_states: int = 2000000, direct: bool = False, keep_going: bool = False, time: float = 0.0,
-         progress: Optional[Callable[[dict], None]] = None) -> dict:
+         jobs: Optional[int] = None, progress: Optional[Callable[[dict], None]] = None) -> dict:
     """A fuzz campaign over formulas 0..count-1 of the seed (docs/verify.md).
 
     Returns the counts of `gridlock fuzz --json` (formulas, sat, unsat, unknown,
     certificates_checked, disagreements, findings, status); progress(tally) is
-    called after each formula. The defaults are the command line's.
+    called after each formula. jobs: worker threads (None: the cores
+    available, like --jobs); the counts are the same for every number. The
+    defaults are the command line's.
     """
     return _core.fuzz(count=count, seed=seed, min_vars=min_vars, max_vars=max_vars, kinds=list(kinds),
                       model=model, timeout=timeout, max_states=max_states, direct=direct,
-                      keep_going=keep_going, time=time, progress=progress)
+                      keep_going=keep_going, time=time, jobs=jobs, progress=progress)
 
 
 def _names(order):

@@ -51,6 +51,25 @@ def test_fuzz_equals_cli():
     assert got["formulas"] == got["sat"] + got["unsat"] == 30
 
 
+def test_jobs_give_the_same_records():
+    one = gridlock.fuzz(count=40, seed=SEED, jobs=1)
+    two = gridlock.fuzz(count=40, seed=SEED, jobs=2)
+    for key in ("formulas", "sat", "unsat", "unknown", "certificates_checked", "no_certificates_checked",
+                "disagreements", "status", "seed"):
+        assert one[key] == two[key], key
+    rows = []
+    got = gridlock.verify([str(p) for p in SMALL], jobs=2, progress=rows.append)
+    alone = gridlock.verify([str(p) for p in SMALL], jobs=1)
+    assert got["summary"] == alone["summary"]
+    strip = [{k: v for k, v in r.items() if k not in TIMES} for r in got["formulas"]]
+    assert strip == [{k: v for k, v in r.items() if k not in TIMES} for r in alone["formulas"]]
+    assert [r["formula"] for r in rows] == [str(p) for p in SMALL]  # in order, whatever finished first
+    with pytest.raises(gridlock.Error, match="jobs"):
+        gridlock.fuzz(count=1, jobs=0)
+    with pytest.raises(gridlock.Error, match="jobs"):
+        gridlock.verify([], jobs=2000)
+
+
 def test_fuzz_formula_is_the_campaigns():
     f = gridlock.fuzz_formula(SEED, 4)
     assert f == gridlock.fuzz_formula(SEED, 4) and f.num_vars >= 3
