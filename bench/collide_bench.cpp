@@ -79,7 +79,9 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
   // distinct net directions on a path (D) largest: about n^(2/3).
   const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0))))
                                          : state.range(1);
-  SerpentineParams p = square_serpentine(state.range(0), static_cast<uint32_t>(c), how);
+  SerpentineParams p = how == SerpentineCouplings::Fan
+                           ? fan_serpentine(state.range(0))
+                           : square_serpentine(state.range(0), static_cast<uint32_t>(c), how);
   Instance inst = serpentine_instance(p, 1);
   Simulator sim(inst);
   bool yes = false;
@@ -91,6 +93,9 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
   }
   state.counters["n"] = static_cast<double>(inst.num_nodes());
   state.counters["couplings"] = static_cast<double>(inst.couplings().size());
+  double grouped = 0;  // couplings of more than one operation (Fan: the directions (a, b) with a + b >= 2)
+  for (const auto& q : inst.couplings()) grouped += q.ops.size() > 1 ? 1 : 0;
+  state.counters["grouped"] = grouped;
   state.counters["yes"] = yes;
   state.counters["pairs"] = static_cast<double>(st.pairs);
   state.counters["full_tests"] = static_cast<double>(st.full_tests);
@@ -172,6 +177,17 @@ void BM_SerpentineZonotopeMixed(benchmark::State& s) {
 void BM_SerpentineZonotopeColumns(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Columns, TimeModel::Continuous, ZonotopeTest::Incremental);
 }
+// The fan serpentine (collide/adversarial.hpp): D = Theta(n^{2/3}) distinct
+// directions; range(1) is unused (0).
+void BM_FanZonotope(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Fan, TimeModel::Continuous, ZonotopeTest::Incremental);
+}
+void BM_FanAngleTree(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Fan, TimeModel::Continuous, ZonotopeTest::AngleTree);
+}
+void BM_FanPerPair(benchmark::State& s) {
+  serpentine_bench(s, SerpentineCouplings::Fan, TimeModel::Continuous, ZonotopeTest::PerPair);
+}
 void BM_SerpentinePerPairMixed(benchmark::State& s) {
   serpentine_bench(s, SerpentineCouplings::Mixed, TimeModel::Continuous, ZonotopeTest::PerPair);
 }
@@ -210,6 +226,9 @@ BENCHMARK(BM_SerpentinePerPairMixed)->ArgsProduct({{64, 144, 256}, {3, 0}})->Uni
 BENCHMARK(BM_SerpentinePerPairColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineAngleTreeMixed)->ArgsProduct({{64, 144, 256}, {3, 0, -3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineAngleTreeColumns)->ArgsProduct({{64, 144, 256}, {3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FanZonotope)->ArgsProduct({{256, 576}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FanAngleTree)->ArgsProduct({{256, 576}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FanPerPair)->ArgsProduct({{256}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
@@ -221,6 +240,7 @@ BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Un
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
 // (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
 void register_large_serpentines();
+void register_large_fans();
 
 void register_large() {
   for (int64_t n : {300000, 1000000}) {
@@ -255,6 +275,17 @@ void register_large() {
         ->Unit(benchmark::kMillisecond);
   }
   register_large_serpentines();
+  register_large_fans();
+}
+
+// The fan serpentines' large sizes (docs/performance.md, issue 25).
+void register_large_fans() {
+  for (int64_t n : {1024, 1600, 2304, 3136, 4096})
+    for (auto* f : {BM_FanZonotope, BM_FanAngleTree})
+      benchmark::RegisterBenchmark(f == BM_FanZonotope ? "BM_FanZonotope" : "BM_FanAngleTree", f)
+          ->Args({n, 0})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
 }
 
 // The serpentines' large sizes (docs/performance.md, issue 25).

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/random.hpp"
@@ -31,7 +34,43 @@ void add_groups(InstanceBuilder& b, std::vector<std::string> ops, size_t size, R
   }
 }
 
+// The fan's directions (a, b): coprime, 1 <= a + b <= L.
+std::vector<std::pair<uint32_t, uint32_t>> fan_directions(uint32_t L) {
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  for (uint32_t s = 1; s <= L; ++s)
+    for (uint32_t a = 0; a <= s; ++a)
+      if (std::gcd(a, s - a) == 1) out.emplace_back(a, s - a);
+  return out;
+}
+
+// Fan couplings: per direction (a, b) of the largest fan that fits, a of
+// the (shuffled) connectors and b of the column operations.
+void add_fan(InstanceBuilder& b, std::vector<std::string> connectors, std::vector<std::string> column_ops, Rng& rng) {
+  rng.shuffle(connectors);
+  rng.shuffle(column_ops);
+  size_t x = 0, y = 0;
+  for (const auto& [a, c] : fan_directions(fan_size(connectors.size(), column_ops.size()))) {
+    std::vector<std::string> g(connectors.begin() + static_cast<std::ptrdiff_t>(x),
+                               connectors.begin() + static_cast<std::ptrdiff_t>(x + a));
+    g.insert(g.end(), column_ops.begin() + static_cast<std::ptrdiff_t>(y),
+             column_ops.begin() + static_cast<std::ptrdiff_t>(y + c));
+    x += a, y += c;
+    if (g.size() > 1) must(b.add_coupling("F" + std::to_string(a) + "_" + std::to_string(c), g));
+  }
+}
+
 }  // namespace
+
+uint32_t fan_size(uint64_t x, uint64_t y) {
+  uint32_t L = 0;
+  uint64_t need_x = 0, need_y = 0;
+  for (uint32_t s = L + 1;; ++s) {
+    for (uint32_t a = 0; a <= s; ++a)
+      if (std::gcd(a, s - a) == 1) need_x += a, need_y += s - a;
+    if (need_x > x || need_y > y) return L;
+    L = s;
+  }
+}
 
 Instance serpentine_instance(const SerpentineParams& p, uint64_t seed) {
   if (p.columns == 0 || p.height < 2 || p.contract_percent > 100)
@@ -63,7 +102,9 @@ Instance serpentine_instance(const SerpentineParams& p, uint64_t seed) {
     size_t total = connectors.size() + column_ops.size();
     size = static_cast<size_t>(std::ceil(std::sqrt(static_cast<double>(total))));
   }
-  if (size > 1) {
+  if (p.couplings == SerpentineCouplings::Fan) {
+    add_fan(b, connectors, column_ops, rng);
+  } else if (size > 1) {
     if (p.couplings == SerpentineCouplings::Mixed)
       column_ops.insert(column_ops.end(), connectors.begin(), connectors.end());
     add_groups(b, column_ops, size, rng);
@@ -81,6 +122,14 @@ SerpentineParams square_serpentine(int64_t n, uint32_t coupling_size, Serpentine
   p.height = static_cast<uint32_t>(side);
   p.coupling_size = coupling_size;
   p.couplings = couplings;
+  return p;
+}
+
+SerpentineParams fan_serpentine(int64_t n) {
+  SerpentineParams p;
+  p.columns = static_cast<uint32_t>(std::max<int64_t>(2, n / 4));
+  p.height = 4;
+  p.couplings = SerpentineCouplings::Fan;
   return p;
 }
 

@@ -42,6 +42,15 @@ namespace gridlock {
 enum class SerpentineCouplings {
   Mixed,    // connectors and column operations shuffled together
   Columns,  // only column operations grouped; connectors are singletons
+  // One coupling per direction (a, b), a, b >= 0 coprime, 1 <= a + b <= L
+  // for the largest L the operations allow: a connectors and b column
+  // operations (shuffled); the rest stay singletons; coupling_size is
+  // ignored. The net of such a coupling on a long path points in about
+  // its own direction (column operations count + or - by the column), so
+  // the paths carry D = Theta(L^2) distinct directions with L^3 / 5
+  // operations: D = Theta(n^{2/3}), the support table's worst case, on
+  // the flat serpentine (fan_serpentine).
+  Fan,
 };
 
 struct SerpentineParams {
@@ -61,6 +70,15 @@ Instance serpentine_instance(const SerpentineParams& p, uint64_t seed);
 // A square serpentine of about n nodes (C = H = the even number nearest
 // sqrt(n), at least 4) with the given couplings. O(1).
 SerpentineParams square_serpentine(int64_t n, uint32_t coupling_size, SerpentineCouplings couplings);
+
+// The flat serpentine of about n nodes with Fan couplings: height 4 (one
+// column operation per column), C = max(2, n / 4) columns, so connectors
+// and column operations are about n / 4 each. O(1).
+SerpentineParams fan_serpentine(int64_t n);
+
+// The largest L whose fan needs at most x connectors and y column
+// operations (each side needs sum over the directions of a, resp. b). O(L^2 log L).
+uint32_t fan_size(uint64_t x, uint64_t y);
 
 // The diagonal sweep: a single-coupling family (every operation in one
 // coupling) on which the simulator's broad phase meets a quadratic number
