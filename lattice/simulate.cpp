@@ -200,6 +200,7 @@ struct Simulator::Scratch {
   };
   const PreparedInstance* prep = nullptr;
   const Deadline* deadline = nullptr;  // checked between intervals (Simulator::set_deadline)
+  bool skip_rigid = true;              // Simulator::set_skip_rigid_pairs
   CellLists initial_grid;              // every region at its base cell (independent of D)
   std::vector<uint64_t> initial_key;
   // The state of the sweep. Between runs every region is back at its base
@@ -304,6 +305,7 @@ struct Simulator::Scratch {
   int64_t moving_against_static(int64_t span);
   void moving_against_moving(int64_t span, int64_t S);
   void pairs_in_dense_cell(size_t d, uint32_t i);
+  bool rigid_apart(uint32_t a, uint32_t b) const;
   void add_moving_pair(uint32_t i, uint32_t j);
   void advance(int64_t span);
   SimResult cycle_result() const;
@@ -527,8 +529,22 @@ int64_t Simulator::Scratch::moving_against_static(int64_t span) {
   return vmax;
 }
 
+// Regions a and b can first overlap inside this interval only if they move
+// relative to each other or already overlap: when both translate (no face
+// moves against its opposite one) with the same velocity, every one of the
+// eight conditions of first_overlap keeps its value, so the pair never
+// overlaps if it does not now. Skipping such pairs is exact (not a filter
+// resting on an assumption about the shape). All couplings at once move
+// whole gadgets rigidly: most neighbours then translate alike, and they
+// share cells in every sub-step.
+bool Simulator::Scratch::rigid_apart(uint32_t a, uint32_t b) const {
+  const auto& va = rvel[a];
+  return skip_rigid && va[0] == va[1] && va[2] == va[3] && va == rvel[b] && !boxes_overlap(rect[a], rect[b]);
+}
+
 // Moving regions i < j share a cell in some sub-step: a candidate pair.
 void Simulator::Scratch::add_moving_pair(uint32_t i, uint32_t j) {
+  if (rigid_apart(moving[i], moving[j])) return;
   const uint64_t ij = (static_cast<uint64_t>(i) << 32) | j;
   if (!dedupe_pairs) {
     moving_pairs.push_back(ij);
@@ -572,7 +588,8 @@ void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
               [&](uint32_t a, uint32_t b) { return swept[a][0] < swept[b][0]; });
     for (size_t x = 0; x < m; ++x)
       for (size_t y = x + 1; y < m && swept[by_x[y]][0] < swept[by_x[x]][1]; ++y)
-        if (boxes_overlap(swept[by_x[x]], swept[by_x[y]])) test_pair(moving[by_x[x]], moving[by_x[y]], true, span);
+        if (boxes_overlap(swept[by_x[x]], swept[by_x[y]]) && !rigid_apart(moving[by_x[x]], moving[by_x[y]]))
+          test_pair(moving[by_x[x]], moving[by_x[y]], true, span);
     return;
   }
   dedupe_pairs = S > 1;
@@ -730,6 +747,7 @@ SimResult Simulator::run(const Schedule& s) {
   if (auto problem = check_schedule_bounds(prep_->inst, s)) throw std::invalid_argument(*problem);
   if (!scratch_) scratch_ = std::make_unique<Scratch>(*prep_);
   scratch_->deadline = deadline_;
+  scratch_->skip_rigid = skip_rigid_;
   return scratch_->run(s);
 }
 

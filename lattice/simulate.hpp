@@ -86,6 +86,12 @@ class Simulator {
   // finishing. nullptr (the default): no limit. d must outlive the runs.
   void set_deadline(const Deadline* d) { deadline_ = d; }
 
+  // Whether the broad phase drops pairs of moving regions that share their
+  // four face velocities and do not overlap now (they cannot meet in the
+  // interval: exact). On by default; off only for the twin tests, which
+  // compare both paths.
+  void set_skip_rigid_pairs(bool on) { skip_rigid_ = on; }
+
   // Simulates prep from now on (its tables must outlive the simulator),
   // keeping the work arrays' memory: one simulator serves many instances
   // (verify's Verifier, one formula after another). O(n + r).
@@ -103,6 +109,7 @@ class Simulator {
   const PreparedInstance* prep_;
   std::unique_ptr<Scratch> scratch_;
   const Deadline* deadline_ = nullptr;
+  bool skip_rigid_ = true;
 };
 
 // An exact rectangle, for drawing the configuration at a moment.
