@@ -1,4 +1,4 @@
-#include "certify/order_proof.hpp"
+#include "certify/internal/order_proof.hpp"
 
 #include <algorithm>
 

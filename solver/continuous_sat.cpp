@@ -1,4 +1,4 @@
-#include "solver/continuous_sat.hpp"
+#include "solver/internal/continuous_sat.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,8 +13,8 @@
 
 #include <z3++.h>
 
-#include "cnf/incremental_sat.hpp"
-#include "solver/z3_lemmas.hpp"
+#include "cnf/internal/incremental_sat.hpp"
+#include "solver/internal/z3_lemmas.hpp"
 
 namespace gridlock {
 

@@ -28,7 +28,7 @@
 #include <stdexcept>
 
 #include "common/assert.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 namespace {

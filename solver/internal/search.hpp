@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common/limits.hpp"
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {
@@ -160,7 +160,7 @@ SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, Solv
 // (the running coupling and which of the others ran before it, decided by
 // step_collides), larger ones lazily, pattern by pattern, as an acyclic
 // model's order meets them; order literals, transitivity and lazy cycle
-// clauses from solver/order_sat.hpp. Statistics as search_sat, propagations
+// clauses from solver/internal/order_sat.hpp. Statistics as search_sat, propagations
 // also counting lazy pattern clauses. eager_limit: constraints of more
 // couplings than this are handled lazily (tests use 0 to run the lazy path
 // on every multi-form constraint).
