@@ -45,6 +45,7 @@
 #include "solver/internal/constraints.hpp"
 #include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
+#include "support/search_precedence_chronological.hpp"
 
 namespace gridlock {
 namespace {

@@ -20,6 +20,7 @@
 #include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
+#include "support/search_precedence_chronological.hpp"
 #include "support/test_scale.hpp"
 
 namespace gridlock {

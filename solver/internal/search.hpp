@@ -138,12 +138,6 @@ struct PrecedenceHooks {
 SearchOutcome search_precedence(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
                                 const PrecedenceHooks* hooks = nullptr);
 
-// The chronological precedence search (no learning; the twin in tests):
-// a transitively closed partial order on the couplings not yet done, safe
-// moves, branching on requirements (docs/solver.md). Gap systems only;
-// throws std::invalid_argument for a system with more forms.
-SearchOutcome search_precedence_chronological(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
-
 // SAT back end, gap systems only: the system as clauses over order literals
 // "a before b" for couplings sharing a gap (one weighted at-most-K counter per
 // narrower and gap), solved by CaDiCaL incrementally; cycles among the order
