@@ -19,7 +19,7 @@
 #include "lattice/simulate.hpp"
 #include "reductions/to_lsat.hpp"
 #include "solver/gaps.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {

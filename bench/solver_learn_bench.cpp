@@ -42,9 +42,10 @@
 #include "lattice/motion.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
-#include "solver/constraints.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/constraints.hpp"
+#include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
+#include "support/search_precedence_chronological.hpp"
 
 namespace gridlock {
 namespace {

@@ -36,7 +36,7 @@
 #include "lattice/random_instance.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 #include "solver/planted.hpp"
 #include "solver/solve.hpp"
 

@@ -1,4 +1,4 @@
-#include "certify/bounds_proof.hpp"
+#include "certify/internal/bounds_proof.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "certify/clause_proof.hpp"
-#include "certify/geometry.hpp"
-#include "certify/offsets.hpp"
+#include "certify/internal/clause_proof.hpp"
+#include "certify/internal/geometry.hpp"
+#include "certify/internal/offsets.hpp"
 #include "lattice/rational.hpp"
 
 namespace gridlock {

@@ -1,4 +1,4 @@
-#include "certify/certificate_text.hpp"
+#include "certify/internal/certificate_text.hpp"
 
 #include "lattice/motion.hpp"
 

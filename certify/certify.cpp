@@ -1,11 +1,11 @@
 // Which evidence proves what (docs/certificates.md, "Why each kind proves NO").
 #include "certify/certify.hpp"
 
-#include "certify/bounds_proof.hpp"
-#include "certify/certificate_text.hpp"
-#include "certify/geometry.hpp"
-#include "certify/order_proof.hpp"
-#include "certify/pair_pattern.hpp"
+#include "certify/internal/bounds_proof.hpp"
+#include "certify/internal/certificate_text.hpp"
+#include "certify/internal/geometry.hpp"
+#include "certify/internal/order_proof.hpp"
+#include "certify/internal/pair_pattern.hpp"
 
 namespace gridlock {
 namespace {

@@ -1,4 +1,4 @@
-#include "certify/clause_proof.hpp"
+#include "certify/internal/clause_proof.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "certify/geometry.hpp"
+#include "certify/internal/geometry.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "certify/offsets.hpp"
+#include "certify/internal/offsets.hpp"
 
 #include <algorithm>
 

@@ -1,34 +1,30 @@
-#include "certify/order_proof.hpp"
+#include "certify/internal/order_proof.hpp"
 
 #include <algorithm>
+#include <utility>
+
+#include "common/internal/graph_order.hpp"
 
 namespace gridlock {
 namespace {
 
 uint64_t pair_key(CouplingId a, CouplingId b) { return (uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
-// True iff the edges a -> b contain a directed cycle (Kahn's algorithm
-// cannot remove every node).
+// True iff the edges a -> b contain a directed cycle (Kahn's algorithm,
+// common/internal/graph_order.hpp, cannot order every node). O(E log E).
 bool has_cycle(const std::vector<OrderLiteral>& edges) {
   std::vector<CouplingId> nodes;
   for (auto [a, b] : edges) nodes.push_back(a), nodes.push_back(b);
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  auto id = [&](CouplingId c) { return std::lower_bound(nodes.begin(), nodes.end(), c) - nodes.begin(); };
-  std::vector<uint32_t> indeg(nodes.size(), 0);
-  for (auto [a, b] : edges) ++indeg[id(b)];
-  std::vector<size_t> ready;
-  for (size_t i = 0; i < nodes.size(); ++i)
-    if (indeg[i] == 0) ready.push_back(i);
-  size_t removed = 0;
-  while (!ready.empty()) {
-    const size_t v = ready.back();
-    ready.pop_back();
-    ++removed;
-    for (auto [a, b] : edges)
-      if (static_cast<size_t>(id(a)) == v && --indeg[id(b)] == 0) ready.push_back(id(b));
-  }
-  return removed < nodes.size();
+  auto id = [&](CouplingId c) {
+    return static_cast<uint32_t>(std::lower_bound(nodes.begin(), nodes.end(), c) - nodes.begin());
+  };
+  std::vector<std::pair<uint32_t, uint32_t>> dense;
+  dense.reserve(edges.size());
+  for (auto [a, b] : edges) dense.emplace_back(id(a), id(b));
+  std::vector<uint32_t> order;
+  return !topological_order(Digraph::from_edges(nodes.size(), dense), order);
 }
 
 }  // namespace
@@ -186,22 +182,19 @@ bool OrderProof::start() {
 
 // The root relations, closed transitively (bit rows, k^2 / 8 bytes).
 bool OrderProof::add_closure() {
-  std::vector<std::vector<CouplingId>> succ(k_);
-  std::vector<uint32_t> indeg(k_, 0);
-  for (Lit l : trail_) succ[from(l)].push_back(to(l)), ++indeg[to(l)];
-  std::vector<CouplingId> topo;
-  for (CouplingId c = 0; c < k_; ++c)
-    if (indeg[c] == 0) topo.push_back(c);
-  for (size_t h = 0; h < topo.size(); ++h)
-    for (CouplingId b : succ[topo[h]])
-      if (--indeg[b] == 0) topo.push_back(b);
-  if (topo.size() < k_) return false;  // the root relations form a cycle
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  edges.reserve(trail_.size());
+  for (Lit l : trail_) edges.emplace_back(from(l), to(l));
+  const Digraph succ = Digraph::from_edges(k_, edges);
+  std::vector<uint32_t> topo;
+  if (!topological_order(succ, topo)) return false;  // the root relations form a cycle
   const size_t words = (k_ + 63) / 64;
   std::vector<uint64_t> reach(k_ * words, 0);
   auto before = [&](CouplingId a, CouplingId b) { return (reach[a * words + (b >> 6)] >> (b & 63)) & 1; };
   for (size_t h = k_; h-- > 0;) {
     uint64_t* row = reach.data() + topo[h] * words;
-    for (CouplingId b : succ[topo[h]]) {
+    for (uint32_t e = succ.first[topo[h]]; e < succ.first[topo[h] + 1]; ++e) {
+      const CouplingId b = succ.target[e];
       row[b >> 6] |= uint64_t{1} << (b & 63);
       for (size_t i = 0; i < words; ++i) row[i] |= reach[b * words + i];
     }

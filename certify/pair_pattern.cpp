@@ -1,4 +1,4 @@
-#include "certify/pair_pattern.hpp"
+#include "certify/internal/pair_pattern.hpp"
 
 #include <algorithm>
 #include <map>

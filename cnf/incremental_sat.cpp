@@ -1,4 +1,4 @@
-#include "cnf/incremental_sat.hpp"
+#include "cnf/internal/incremental_sat.hpp"
 
 #include <cadical.hpp>
 

@@ -1,4 +1,4 @@
-#include "collide/angle_tree.hpp"
+#include "collide/internal/angle_tree.hpp"
 
 #include <algorithm>
 #include <numeric>

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "collide/collide_tree.hpp"
+#include "collide/internal/collide_pairs.hpp"
+#include "collide/internal/collide_tree.hpp"
 #include "collide/single_coupling.hpp"
 
 namespace gridlock {

@@ -20,10 +20,11 @@
 #include <string>
 #include <vector>
 
-#include "collide/collide_pairs.hpp"
 #include "lattice/instance.hpp"
+#include "lattice/prepared.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
+#include "lattice/time_model.hpp"
 
 namespace gridlock {
 

@@ -1,10 +1,10 @@
-// The pair's inequalities (collide/collide_pairs.hpp): region forms, the
+// The pair's inequalities (collide/internal/collide_pairs.hpp): region forms, the
 // quick filter, the exact check of a witness, and the system the pair tests
 // eliminate (collide/internal/pair_system.hpp). The tests themselves:
 // collide/zonotope.cpp (continuous), collide/subset_sums.cpp (discrete),
 // collide/pair_traversal.cpp (every pair of an instance);
 // collide/lp_elimination.cpp their exact linear programming.
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/collide_pairs.hpp"
 
 #include <algorithm>
 #include <stdexcept>

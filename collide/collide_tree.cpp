@@ -1,4 +1,4 @@
-#include "collide/collide_tree.hpp"
+#include "collide/internal/collide_tree.hpp"
 
 #include <algorithm>
 #include <stdexcept>

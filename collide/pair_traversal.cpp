@@ -1,4 +1,4 @@
-// The O(n^2)-pairs traversal (collide/collide_pairs.hpp, pairwise_collision):
+// The O(n^2)-pairs traversal (collide/internal/collide_pairs.hpp, pairwise_collision):
 // a walk of the spanning tree from every node keeping the path's nets (and,
 // in the continuous model, their zonotope's supports or angle tree), with
 // every pair of regions met tested.
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "collide/angle_tree.hpp"
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/angle_tree.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/zonotope.hpp"
 
 namespace gridlock {

@@ -1,11 +1,11 @@
-// The discrete pair tests (collide/collide_pairs.hpp): subset sums of the
+// The discrete pair tests (collide/internal/collide_pairs.hpp): subset sums of the
 // path's vectors, per running choice, and the one-variable test per cell.
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/pair_system.hpp"
 
 namespace gridlock {

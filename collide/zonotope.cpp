@@ -1,4 +1,4 @@
-// The continuous pair test (collide/collide_pairs.hpp) and its zonotope
+// The continuous pair test (collide/internal/collide_pairs.hpp) and its zonotope
 // geometry (collide/internal/zonotope.hpp).
 #include "collide/internal/zonotope.hpp"
 

@@ -21,7 +21,7 @@
 
 namespace gridlock {
 
-// Thrown by Deadline::check (and by SearchBudget, solver/search.hpp).
+// Thrown by Deadline::check (and by SearchBudget, solver/internal/search.hpp).
 struct LimitReached {};
 
 // The signal number that asked the process to stop, or 0. Lock-free, so a

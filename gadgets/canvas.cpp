@@ -1,4 +1,4 @@
-#include "gadgets/canvas.hpp"
+#include "gadgets/internal/canvas.hpp"
 
 #include <stdexcept>
 

@@ -1,8 +1,8 @@
-#include "gadgets/clause_gadget.hpp"
+#include "gadgets/internal/clause_gadget.hpp"
 
 #include <stdexcept>
 
-#include "gadgets/gap_gadget.hpp"
+#include "gadgets/internal/gap_gadget.hpp"
 
 namespace gridlock {
 

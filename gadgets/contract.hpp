@@ -39,7 +39,7 @@ struct GapSpec {
   }
 };
 
-// The separation gadget's promise (gadgets/separation_gadget.hpp): in
+// The separation gadget's promise (gadgets/internal/separation_gadget.hpp): in
 // continuous time, collision-free iff t_second >= t_first + 1 (second starts
 // no earlier than first has finished); in discrete time (one coupling at a
 // time) iff first runs before second.

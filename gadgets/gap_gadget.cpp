@@ -1,4 +1,4 @@
-#include "gadgets/gap_gadget.hpp"
+#include "gadgets/internal/gap_gadget.hpp"
 
 #include <algorithm>
 #include <stdexcept>

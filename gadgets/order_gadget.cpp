@@ -1,6 +1,6 @@
-#include "gadgets/order_gadget.hpp"
+#include "gadgets/internal/order_gadget.hpp"
 
-#include "gadgets/gap_gadget.hpp"
+#include "gadgets/internal/gap_gadget.hpp"
 
 namespace gridlock {
 

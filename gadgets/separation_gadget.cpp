@@ -1,4 +1,4 @@
-#include "gadgets/separation_gadget.hpp"
+#include "gadgets/internal/separation_gadget.hpp"
 
 namespace gridlock {
 

@@ -1,4 +1,4 @@
-#include "gadgets/variable_gadget.hpp"
+#include "gadgets/internal/variable_gadget.hpp"
 
 namespace gridlock {
 

@@ -1,7 +1,7 @@
 // A prepared instance: the motion tables every exact check needs (the
 // spanning tree, the regions, the face walks; lattice/motion.hpp), built once
 // and shared by the simulator (lattice/simulate.hpp), the exact solver
-// (solver/solve.hpp), the constraint builders (solver/constraints.hpp) and
+// (solver/solve.hpp), the constraint builders (solver/internal/constraints.hpp) and
 // collide (solver/collide.hpp). verify builds one per formula instead of one
 // per check (docs/performance.md, "Fuzzing throughput").
 //

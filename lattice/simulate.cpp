@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "common/int_math.hpp"
-#include "common/linear_interval.hpp"
+#include "common/internal/linear_interval.hpp"
 #include "lattice/flat_map.hpp"
 
 namespace gridlock {

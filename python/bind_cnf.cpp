@@ -6,7 +6,7 @@
 #include "cnf/generate.hpp"
 #include "cnf/lsat.hpp"
 #include "cnf/sat_solver.hpp"
-#include "common/atomic_file.hpp"
+#include "common/internal/atomic_file.hpp"
 #include "python/bindings.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"

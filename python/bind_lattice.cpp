@@ -2,7 +2,7 @@
 // (lattice/, render/).
 #include <sstream>
 
-#include "common/atomic_file.hpp"
+#include "common/internal/atomic_file.hpp"
 #include "lattice/animation.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"

@@ -5,11 +5,11 @@
 #include <stdexcept>
 
 #include "common/assert.hpp"
-#include "gadgets/canvas.hpp"
-#include "gadgets/clause_gadget.hpp"
-#include "gadgets/order_gadget.hpp"
-#include "gadgets/separation_gadget.hpp"
-#include "gadgets/variable_gadget.hpp"
+#include "gadgets/internal/canvas.hpp"
+#include "gadgets/internal/clause_gadget.hpp"
+#include "gadgets/internal/order_gadget.hpp"
+#include "gadgets/internal/separation_gadget.hpp"
+#include "gadgets/internal/variable_gadget.hpp"
 
 namespace gridlock {
 

@@ -36,7 +36,7 @@
 //
 // The continuous model (TimeModel::Continuous; the paper's theorem that
 // continuous Collision-free Schedule is NP-hard): the same, except that the
-// link y_n < z_1 is a separation gadget (gadgets/separation_gadget.hpp,
+// link y_n < z_1 is a separation gadget (gadgets/internal/separation_gadget.hpp,
 // 8 nodes instead of 6, one vertical expansion): z_1 may start only once y_n
 // has finished. That one separation is all the proof needs (docs/gadgets.md,
 // "The continuous reduction"): at the moment y_n finishes every y_i is done

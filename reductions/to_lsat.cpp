@@ -66,7 +66,7 @@ class LsatBuilder {
 
  private:
   int fresh() {
-    if (next_var_ > INT_MAX) throw std::length_error("to-lsat: the output would have more than INT_MAX variables");
+    if (next_var_ > INT_MAX) throw InputTooLarge("to-lsat: the output would have more than INT_MAX variables");
     return static_cast<int>(next_var_++);
   }
 

@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "cnf/formula.hpp"
+#include "common/input_too_large.hpp"
 
 namespace gridlock {
 
@@ -120,8 +121,8 @@ class LsatReduction {
 
 // Builds the reduction of `in` (clauses of any length, including empty and
 // tautological ones). Requires validate(in) empty (throws
-// std::invalid_argument); throws std::length_error if the output would have
-// more than INT_MAX variables. Time and memory O(n + L) for L literal
+// std::invalid_argument); throws InputTooLarge (common/input_too_large.hpp)
+// if the output would have more than INT_MAX variables. Time and memory O(n + L) for L literal
 // occurrences (plus O(L log L) for the LSAT<=3 pass-through test and the
 // duplicate test).
 LsatReduction reduce_to_lsat(const Formula& in, const ToLsatOptions& opt = {});

@@ -58,6 +58,8 @@ fi
 
 echo "== the API example against the installed package"
 cmake --install "$copy/build" --prefix "$work/prefix" >/dev/null
+# The installed headers include only installed headers (no internal/ one).
+python3 scripts/check_public_headers.py --prefix "$work/prefix"
 # The package names its dependencies by target (CaDiCaL::cadical, Z3::z3),
 # found again by its config: no library path of this machine is installed.
 if grep -nE '/[^";]*lib(z3|cadical)[^";]*' "$work/prefix/lib/cmake/gridlock/"*.cmake | grep -v 'find_library'; then

@@ -1,12 +1,12 @@
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
 
-#include "common/linear_interval.hpp"
-#include "solver/op_tree.hpp"
-#include "solver/row_order.hpp"
+#include "common/internal/linear_interval.hpp"
+#include "solver/internal/op_tree.hpp"
+#include "solver/internal/row_order.hpp"
 
 namespace gridlock {
 

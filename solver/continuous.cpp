@@ -12,11 +12,11 @@
 #include "common/clock.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/simulate.hpp"
-#include "solver/constraints.hpp"
-#include "solver/continuous_pairs.hpp"
-#include "solver/continuous_sat.hpp"
 #include "solver/gaps.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/constraints.hpp"
+#include "solver/internal/continuous_pairs.hpp"
+#include "solver/internal/continuous_sat.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 

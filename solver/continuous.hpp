@@ -11,7 +11,7 @@
 //  1. horizontal-only instances: the linear gap checker (solver/gaps.hpp);
 //     YES with every coupling at time 0, or NO;
 //  2. otherwise the collision constraints of build_pair_constraints
-//     (solver/constraints.hpp): every pair of regions that can come close,
+//     (solver/internal/constraints.hpp): every pair of regions that can come close,
 //     with up to eight linear forms f_i = s_i + sum_q c_iq p_q, and a
 //     collision of the pair at t iff every f_i(t) > 0. With progress
 //     p_q(t) = clamp(t - t_q, 0, 1) the same forms describe the continuous
@@ -28,14 +28,14 @@
 //  4b. then the discrete solver's order (solve_discrete, at most 20 000
 //     search nodes and a third of the time left, once per instance) as
 //     start times 0, 1, 2, ..., checked exactly per pair;
-//  4c. then the learning engine (solver/continuous_sat.hpp: CaDiCaL over
+//  4c. then the learning engine (solver/internal/continuous_sat.hpp: CaDiCaL over
 //     difference atoms, Bellman-Ford and Z3 on conjunctions) for every
 //     component it supports (no faces with non-zero nets; see its header);
 //  5. otherwise (or with ContinuousEngine::Z3) Z3 (QF_LRA, exact rationals) decides the component: start
 //     times t_q in [0, k] (k couplings; idle time can always be cut out).
 //     A pair of two couplings depends only on the offset of their start
 //     times; its collision-free offsets are computed exactly beforehand
-//     (solver/continuous_pairs.hpp) and asserted as difference bounds. A
+//     (solver/internal/continuous_pairs.hpp) and asserted as difference bounds. A
 //     pair of three or more couplings gets a cover of the time axis by at most 4r - 2 segments
 //     (r couplings in the pair) with switch times as auxiliary variables,
 //     each segment assigned one form that is <= 0 on it (checked at its ends
@@ -83,7 +83,7 @@
 
 namespace gridlock {
 
-struct ContinuousProof;  // solver/continuous_sat.hpp
+struct ContinuousProof;  // solver/internal/continuous_sat.hpp
 
 struct ContinuousResult {
   Verdict status = Verdict::Unknown;
@@ -102,7 +102,7 @@ struct ContinuousResult {
 // stats.propagations: learned theory clauses; stats.safe_moves: components
 // settled by a cheap test (steps 4, 4b).
 // Which search decides a component that the cheap tests do not settle.
-// Auto and Dl: the learning engine (solver/continuous_sat.hpp) in its
+// Auto and Dl: the learning engine (solver/internal/continuous_sat.hpp) in its
 // difference-logic mode (Z3 QF_RDL over the atoms) when it supports the
 // component, else Z3 on the clamped encoding; Sat: the learning engine's
 // lazy loop (CaDiCaL + Bellman-Ford) instead; Z3: the Z3 encoding of step 5
@@ -125,7 +125,7 @@ ContinuousResult solve_continuous(const Instance& inst, const SolveOptions& opt 
 // How the general path encodes a pair constraint for Z3. Auto: a pair of
 // one coupling is decided at once; a pair of two couplings becomes "the
 // offset of their start times lies in one of these closed intervals"
-// (free_offsets, solver/continuous_pairs.hpp: difference bounds, which Z3
+// (free_offsets, solver/internal/continuous_pairs.hpp: difference bounds, which Z3
 // handles in near-linear time); larger pairs get the segment cover.
 // Segments: no shortcut after the all-at-once test: no layered candidate,
 // and the segment cover for every pair (tests compare the two).

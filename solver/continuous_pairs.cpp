@@ -1,4 +1,4 @@
-#include "solver/continuous_pairs.hpp"
+#include "solver/internal/continuous_pairs.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "solver/continuous_sat.hpp"
+#include "solver/internal/continuous_sat.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,8 +13,9 @@
 
 #include <z3++.h>
 
-#include "cnf/incremental_sat.hpp"
-#include "solver/z3_lemmas.hpp"
+#include "cnf/internal/incremental_sat.hpp"
+#include "common/input_too_large.hpp"
+#include "solver/internal/z3_lemmas.hpp"
 
 namespace gridlock {
 
@@ -469,7 +470,7 @@ class Engine {
       }
     }
     for (const DiffRule& r : diff_rules_) add(r.b);
-    if (l > (int64_t{1} << 20)) throw std::overflow_error("continuous sat: denominators too large");
+    if (l > (int64_t{1} << 20)) throw InputTooLarge("continuous sat: denominators too large");
     scale_ = static_cast<int64_t>(couplings_.size() + 1) * l;
   }
 
@@ -543,7 +544,7 @@ class Engine {
 
   int64_t scaled(const Bound& b) const {
     __int128 w = static_cast<__int128>(b.v.num()) * (scale_ / b.v.den()) - (b.strict ? 1 : 0);
-    if (w > (int64_t{1} << 50) || w < -(int64_t{1} << 50)) throw std::overflow_error("continuous sat: bound too large");
+    if (w > (int64_t{1} << 50) || w < -(int64_t{1} << 50)) throw InputTooLarge("continuous sat: bound too large");
     return static_cast<int64_t>(w);
   }
 
@@ -881,6 +882,9 @@ class Engine {
     } catch (const std::runtime_error& e) {
       p = {};
       return void(p.why_none = e.what());
+    } catch (const InputTooLarge& e) {  // a bound past 2^50: no proof, the NO stands
+      p = {};
+      return void(p.why_none = e.what());
     }
     p.complete = true;
   }
@@ -996,7 +1000,7 @@ class Engine {
     std::vector<Rational> t(couplings_.size(), Rational(0));
     for (size_t q = 0; q < couplings_.size(); ++q) {
       auto parsed = Rational::parse(Z3_get_numeral_string((*z3ctx_), model.eval(zt_[q], true)));
-      if (!parsed) throw std::overflow_error("continuous sat: a Z3 time is no 64-bit rational");
+      if (!parsed) throw InputTooLarge("continuous sat: a Z3 time is no 64-bit rational");
       t[q] = *parsed;
     }
     return t;

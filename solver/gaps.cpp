@@ -5,8 +5,8 @@
 
 #include "common/assert.hpp"
 #include "lattice/motion.hpp"
-#include "solver/op_tree.hpp"
-#include "solver/row_order.hpp"
+#include "solver/internal/op_tree.hpp"
+#include "solver/internal/row_order.hpp"
 
 namespace gridlock {
 

@@ -15,7 +15,7 @@
 //     operation that narrows it (a growth into the gap narrows it; a
 //     contracting node's face bound to its partner is taken into account).
 //
-// No comparison sort: rows come from a radix sort (solver/row_order.hpp).
+// No comparison sort: rows come from a radix sort (solver/internal/row_order.hpp).
 #pragma once
 
 #include <cstdint>

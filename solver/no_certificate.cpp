@@ -6,12 +6,12 @@
 #include <memory>
 #include <stdexcept>
 
-#include "cnf/incremental_sat.hpp"
+#include "cnf/internal/incremental_sat.hpp"
 #include "common/limits.hpp"
-#include "solver/constraints.hpp"
-#include "solver/continuous_sat.hpp"
 #include "solver/gaps.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/constraints.hpp"
+#include "solver/internal/continuous_sat.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 namespace {

@@ -1,4 +1,4 @@
-#include "solver/op_tree.hpp"
+#include "solver/internal/op_tree.hpp"
 
 namespace gridlock {
 

@@ -1,10 +1,10 @@
-// The order-literal layer shared by the SAT engines (solver/order_sat.hpp).
-#include "solver/order_sat.hpp"
+// The order-literal layer shared by the SAT engines (solver/internal/order_sat.hpp).
+#include "solver/internal/order_sat.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "solver/gap_inequalities.hpp"
+#include "solver/internal/gap_inequalities.hpp"
 
 namespace gridlock {
 

@@ -4,7 +4,7 @@
 
 #include "common/random.hpp"
 #include "lattice/prepared.hpp"
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 
 namespace gridlock {
 namespace {

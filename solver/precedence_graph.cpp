@@ -1,9 +1,9 @@
-#include "solver/precedence_graph.hpp"
+#include "solver/internal/precedence_graph.hpp"
 
 #include <algorithm>
 
 #include "common/assert.hpp"
-#include "common/graph_order.hpp"
+#include "common/internal/graph_order.hpp"
 
 namespace gridlock {
 
@@ -20,7 +20,7 @@ void PrecedenceGraph::pop(uint32_t a, uint32_t b) {
   in_[b].pop_back();
 }
 
-// Kahn's algorithm (common/graph_order.hpp).
+// Kahn's algorithm (common/internal/graph_order.hpp).
 bool PrecedenceGraph::sort(std::vector<uint32_t>& order, std::vector<uint32_t>& cycle) const {
   std::vector<uint32_t> indeg(out_.size());
   for (size_t v = 0; v < out_.size(); ++v) indeg[v] = static_cast<uint32_t>(in_[v].size());

@@ -1,4 +1,4 @@
-#include "solver/row_order.hpp"
+#include "solver/internal/row_order.hpp"
 
 #include <algorithm>
 #include <bit>

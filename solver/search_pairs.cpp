@@ -13,16 +13,16 @@
 // pair). Clauses cover cubes of colliding patterns: a literal is dropped when
 // every pattern with either value of it collides too.
 //  - one-form constraints: the sat engine's weighted counters (exact for one
-//    form with base <= 0, solver/gap_inequalities.hpp);
+//    form with base <= 0, solver/internal/gap_inequalities.hpp);
 //  - up to eager_limit (8) couplings: every colliding pattern up front;
 //  - larger ones: lazily, for the patterns an acyclic model's order hits.
-// Transitivity, forced closure and lazy cycle clauses: solver/order_sat.hpp.
+// Transitivity, forced closure and lazy cycle clauses: solver/internal/order_sat.hpp.
 #include <algorithm>
 #include <stdexcept>
 
-#include "solver/gap_inequalities.hpp"
-#include "solver/order_sat.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/gap_inequalities.hpp"
+#include "solver/internal/order_sat.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 namespace {

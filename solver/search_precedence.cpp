@@ -3,7 +3,7 @@
 //
 // Variables: one per pair of couplings that share a gap; its two literals
 // are "a before b" and "b before a". The gap system is a set of weighted
-// inequalities over them (solver/gap_inequalities.hpp, one per narrower and
+// inequalities over them (solver/internal/gap_inequalities.hpp, one per narrower and
 // gap). An assignment of every variable that meets every inequality and
 // whose edges form no cycle gives a solution: any topological order of its
 // edges (couplings that share no gap are free relative to each other).
@@ -25,10 +25,10 @@
 #include <unordered_map>
 
 #include "common/assert.hpp"
-#include "solver/activity_heap.hpp"
-#include "solver/gap_inequalities.hpp"
-#include "solver/precedence_graph.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/activity_heap.hpp"
+#include "solver/internal/gap_inequalities.hpp"
+#include "solver/internal/precedence_graph.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 namespace {

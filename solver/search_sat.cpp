@@ -14,13 +14,13 @@
 // encoded by a weighted sequential counter. Only the relative order of
 // couplings that share a gap matters, so any topological order of an acyclic
 // orientation of those pairs satisfies the system; cyclic orientations are
-// excluded lazily by the order layer (solver/order_sat.hpp).
+// excluded lazily by the order layer (solver/internal/order_sat.hpp).
 #include <stdexcept>
 
 #include "common/assert.hpp"
-#include "solver/gap_inequalities.hpp"
-#include "solver/order_sat.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/gap_inequalities.hpp"
+#include "solver/internal/order_sat.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 

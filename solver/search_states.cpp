@@ -4,7 +4,7 @@
 #include <unordered_set>
 #include "common/random.hpp"
 
-#include "solver/search.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "lattice/motion.hpp"
 #include "lattice/simulate.hpp"
-#include "solver/constraints.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/constraints.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 

@@ -11,7 +11,7 @@
 // Pipeline:
 //  1. a coupling whose operations sum to a non-zero vector around some face
 //     (FaceNets::coupling_breaks_cycle) collides whenever it runs: NO at once;
-//  2. the collision constraints (solver/constraints.hpp): gap constraints for
+//  2. the collision constraints (solver/internal/constraints.hpp): gap constraints for
 //     horizontal-only instances, pair constraints otherwise;
 //  3. one of two exact searches over "the set of couplings done":
 //     - Precedence (gap systems only, the default there): a DPLL-like search
@@ -48,7 +48,7 @@
 
 namespace gridlock {
 
-struct PrecedenceHooks;  // solver/search.hpp
+struct PrecedenceHooks;  // solver/internal/search.hpp
 
 // What a long solve reports through SolveOptions::on_progress. The library
 // never draws: the command line turns these into its progress line

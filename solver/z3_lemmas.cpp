@@ -1,4 +1,4 @@
-#include "solver/z3_lemmas.hpp"
+#include "solver/internal/z3_lemmas.hpp"
 
 #include <algorithm>
 #include <map>

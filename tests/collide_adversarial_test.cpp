@@ -11,7 +11,8 @@
 
 #include "collide/adversarial.hpp"
 #include "collide/collide.hpp"
-#include "collide/collide_tree.hpp"
+#include "collide/internal/collide_pairs.hpp"
+#include "collide/internal/collide_tree.hpp"
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"

@@ -1,4 +1,4 @@
-// The paper's angle-sorted augmented tree (collide/angle_tree.hpp) against
+// The paper's angle-sorted augmented tree (collide/internal/angle_tree.hpp) against
 // brute force, and the pairwise method with it (ZonotopeTest::AngleTree)
 // against the per-pair rebuild (the twin) on random instances and the
 // adversarial serpentines.
@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "collide/adversarial.hpp"
-#include "collide/angle_tree.hpp"
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/angle_tree.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"

@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "support/reference_collide.hpp"

@@ -4,7 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "collide/collide.hpp"
-#include "collide/collide_tree.hpp"
+#include "collide/internal/collide_pairs.hpp"
+#include "collide/internal/collide_tree.hpp"
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "support/reference_collide.hpp"

@@ -1,4 +1,4 @@
-// topological_order and strong_components (common/graph_order.hpp) against
+// topological_order and strong_components (common/internal/graph_order.hpp) against
 // a naive reference: the transitive closure (Floyd–Warshall on booleans).
 // A graph is acyclic iff no node reaches itself; u, v share a component iff
 // each reaches the other; Kahn's order leaves out exactly the nodes some
@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/graph_order.hpp"
+#include "common/internal/graph_order.hpp"
 #include "common/random.hpp"
 #include "support/test_scale.hpp"
 

@@ -1,4 +1,4 @@
-// LinearInterval and compare_fractions (common/linear_interval.hpp) against
+// LinearInterval and compare_fractions (common/internal/linear_interval.hpp) against
 // a naive reference: the solution set of one-variable linear constraints is
 // decided by evaluating every constraint exactly at each breakpoint -a/b, at
 // the midpoints between consecutive breakpoints and beyond the outermost.
@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/linear_interval.hpp"
+#include "common/internal/linear_interval.hpp"
 #include "common/random.hpp"
 #include "support/test_scale.hpp"
 

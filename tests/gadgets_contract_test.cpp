@@ -10,12 +10,12 @@
 #include <functional>
 #include <set>
 
-#include "gadgets/canvas.hpp"
-#include "gadgets/clause_gadget.hpp"
-#include "gadgets/gap_gadget.hpp"
-#include "gadgets/order_gadget.hpp"
-#include "gadgets/separation_gadget.hpp"
-#include "gadgets/variable_gadget.hpp"
+#include "gadgets/internal/canvas.hpp"
+#include "gadgets/internal/clause_gadget.hpp"
+#include "gadgets/internal/gap_gadget.hpp"
+#include "gadgets/internal/order_gadget.hpp"
+#include "gadgets/internal/separation_gadget.hpp"
+#include "gadgets/internal/variable_gadget.hpp"
 #include "lattice/simulate.hpp"
 #include "solver/gaps.hpp"
 

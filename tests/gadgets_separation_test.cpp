@@ -1,4 +1,4 @@
-// The separation gadget (gadgets/separation_gadget.hpp) and the continuous
+// The separation gadget (gadgets/internal/separation_gadget.hpp) and the continuous
 // contracts of every gadget.
 //
 // Separation: its contract "collision-free iff t_b >= t_a + 1" quantifies
@@ -22,12 +22,12 @@
 #include <map>
 #include <set>
 
-#include "gadgets/canvas.hpp"
-#include "gadgets/clause_gadget.hpp"
-#include "gadgets/gap_gadget.hpp"
-#include "gadgets/order_gadget.hpp"
-#include "gadgets/separation_gadget.hpp"
-#include "gadgets/variable_gadget.hpp"
+#include "gadgets/internal/canvas.hpp"
+#include "gadgets/internal/clause_gadget.hpp"
+#include "gadgets/internal/gap_gadget.hpp"
+#include "gadgets/internal/order_gadget.hpp"
+#include "gadgets/internal/separation_gadget.hpp"
+#include "gadgets/internal/variable_gadget.hpp"
 #include "lattice/simulate.hpp"
 
 namespace gridlock {

@@ -1,4 +1,4 @@
-// The parallel campaigns (common/ordered_pool.hpp, verify/campaign.hpp,
+// The parallel campaigns (common/internal/ordered_pool.hpp, verify/campaign.hpp,
 // verify/instance_set.hpp with jobs > 1), in process: the same seeded
 // campaign gives the same events, tallies, findings and files with 1, 2 and
 // 4 workers; a stop request with several workers leaves a consistent partial
@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "cnf/dimacs.hpp"
+#include "common/internal/ordered_pool.hpp"
 #include "common/limits.hpp"
-#include "common/ordered_pool.hpp"
 #include "support/test_scale.hpp"
 #include "verify/campaign.hpp"
 #include "verify/instance_set.hpp"

@@ -1,4 +1,4 @@
-// The learning engine of the continuous solver (solver/continuous_sat.hpp)
+// The learning engine of the continuous solver (solver/internal/continuous_sat.hpp)
 // against the Z3 encoding and the quantified-Z3 twin on seeded random
 // instances (every cheap shortcut off, so the engine meets every component
 // it supports), and on compiled formulas against CaDiCaL through the real

@@ -9,9 +9,9 @@
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
-#include "solver/constraints.hpp"
 #include "solver/gaps.hpp"
-#include "solver/row_order.hpp"
+#include "solver/internal/constraints.hpp"
+#include "solver/internal/row_order.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
 

@@ -17,9 +17,10 @@
 #include "lattice/random_instance.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
+#include "support/search_precedence_chronological.hpp"
 #include "support/test_scale.hpp"
 
 namespace gridlock {

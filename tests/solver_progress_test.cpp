@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "lattice/random_instance.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {

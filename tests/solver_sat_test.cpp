@@ -14,7 +14,7 @@
 #include "cnf/sat_solver.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
 #include "support/test_scale.hpp"

@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "common/diagnostic.hpp"
+#include "common/internal/ordered_pool.hpp"
 #include "common/limits.hpp"
-#include "common/ordered_pool.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/options.hpp"
 #include "tools/user_error.hpp"

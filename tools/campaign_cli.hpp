@@ -20,7 +20,7 @@ Shard shard_arg(const boost::program_options::variables_map& vm);
 
 // Adds --jobs N (worker threads; default: the cores available) to opts.
 void add_jobs_option(boost::program_options::options_description& opts);
-// vm["jobs"] (1 to 1024), or the cores available (common/ordered_pool.hpp
+// vm["jobs"] (1 to 1024), or the cores available (common/internal/ordered_pool.hpp
 // available_cores) when not given; UserError when out of range.
 unsigned jobs_arg(const boost::program_options::variables_map& vm);
 

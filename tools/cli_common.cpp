@@ -16,8 +16,8 @@
 #include <sstream>
 
 #include "cnf/dimacs.hpp"
-#include "common/atomic_file.hpp"
 #include "common/diagnostic.hpp"
+#include "common/internal/atomic_file.hpp"
 #include "common/limits.hpp"
 #include "lattice/grid_format.hpp"
 #include "reductions/compile.hpp"

@@ -54,7 +54,7 @@ bool parse_args_one_input(const std::vector<std::string>& args, const po::option
 void parse_shard(const std::string& text, uint64_t& k, uint64_t& n);
 
 // Writes text to path ("-" = stdout) or throws UserError. A file is written
-// atomically and checked (common/atomic_file.hpp): a temporary file in the
+// atomically and checked (common/internal/atomic_file.hpp): a temporary file in the
 // same folder renamed into place; a full disk is
 // "PATH: write failed: No space left on device", never a success.
 void write_text_file(const std::string& path, const std::string& text);
@@ -72,7 +72,7 @@ void refuse_overwriting_input(const std::string& out, const std::vector<std::str
 // Inputs are sacred (docs/errors.md). parse_args calls guard_paths on every
 // command line: each file named by an input option (instance, formula, file,
 // inputs, times, order-file, schedule, model) is protected
-// (common/atomic_file.hpp's protect_input: no write, rename or removal of
+// (common/internal/atomic_file.hpp's protect_input: no write, rename or removal of
 // that file by device and inode, wherever the write comes from), and each
 // output option (output, out, svg, json-out, reproducers, pictures) goes
 // through check_output_path and refuse_overwriting_input. load_formula and

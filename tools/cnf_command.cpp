@@ -14,6 +14,7 @@
 #include "cnf/lsat.hpp"
 #include "cnf/sat_solver.hpp"
 #include "common/diagnostic.hpp"
+#include "common/input_too_large.hpp"
 #include "reductions/to_lsat.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
@@ -255,7 +256,7 @@ int run_to_lsat(const std::vector<std::string>& args) {
   LsatReduction red = [&] {
     try {
       return reduce_to_lsat(in, opt);
-    } catch (const std::length_error& e) {
+    } catch (const InputTooLarge& e) {
       throw UserError(Diagnostic{path, 0, e.what()});
     }
   }();

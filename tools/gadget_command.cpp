@@ -3,11 +3,11 @@
 // its own coupling, so `gridlock check --order` can try any order of them.
 #include <sstream>
 
-#include "gadgets/canvas.hpp"
-#include "gadgets/clause_gadget.hpp"
-#include "gadgets/order_gadget.hpp"
-#include "gadgets/separation_gadget.hpp"
-#include "gadgets/variable_gadget.hpp"
+#include "gadgets/internal/canvas.hpp"
+#include "gadgets/internal/clause_gadget.hpp"
+#include "gadgets/internal/order_gadget.hpp"
+#include "gadgets/internal/separation_gadget.hpp"
+#include "gadgets/internal/variable_gadget.hpp"
 #include "lattice/grid_format.hpp"
 #include "render/picture.hpp"
 #include "tools/cli_common.hpp"

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "common/atomic_file.hpp"
+#include "common/internal/atomic_file.hpp"
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/user_error.hpp"

@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "common/assert.hpp"
+#include "common/internal/ordered_pool.hpp"
 #include "common/limits.hpp"
-#include "common/ordered_pool.hpp"
 
 namespace gridlock {
 

@@ -9,7 +9,7 @@
 // (common/limits.hpp); an item cut short by a stop is not counted, and the
 // tally comes back marked interrupted.
 //
-// Items run on `jobs` worker threads (common/ordered_pool.hpp), each with its
+// Items run on `jobs` worker threads (common/internal/ordered_pool.hpp), each with its
 // own Verifier; every event is called on the calling thread, in item order,
 // so events, tallies and findings are the same for every number of jobs.
 #pragma once

@@ -13,8 +13,8 @@
 #include "cnf/generate.hpp"
 #include "cnf/sat_solver.hpp"
 #include "common/assert.hpp"
+#include "common/internal/ordered_pool.hpp"
 #include "common/limits.hpp"
-#include "common/ordered_pool.hpp"
 #include "lattice/grid_format.hpp"
 #include "lattice/simulate.hpp"
 #include "reductions/to_lsat.hpp"
@@ -87,7 +87,7 @@ struct LabelledFormula {
   std::vector<ReadyInstance> instances;  // empty when skipped or unwanted
 };
 
-// The labelling of one formula, the workers' part (common/ordered_pool.hpp):
+// The labelling of one formula, the workers' part (common/internal/ordered_pool.hpp):
 // pure but for the kept counts, which it only reads as a hint (they grow
 // only, so a formula of an answer already full when the worker looks is
 // unwanted when its turn comes too, and is not compiled).

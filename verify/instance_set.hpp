@@ -16,7 +16,7 @@
 // and the manifest last. Between formulas it polls stop_requested()
 // (common/limits.hpp): the set is then partial and marked interrupted.
 // Formulas are labelled and compiled on plan.jobs worker threads
-// (common/ordered_pool.hpp); every event, the callback writes included, is
+// (common/internal/ordered_pool.hpp); every event, the callback writes included, is
 // called on the calling thread in set order, so files, events and tally
 // are the same for every number of jobs.
 #pragma once

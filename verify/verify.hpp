@@ -134,7 +134,7 @@ class Verifier {
 // saying what disagreed, and run.sh replaying it with `gridlock verify`.
 // A file that cannot be written (or a folder that cannot be created) is the
 // returned Diagnostic naming it ("DIR/FILE: write failed: REASON"); files
-// written before it stay (each one whole: common/atomic_file.hpp).
+// written before it stay (each one whole: common/internal/atomic_file.hpp).
 MaybeError write_reproducer(const VerifyResult& r, const std::string& dir, const VerifyOptions& opt);
 
 }  // namespace gridlock

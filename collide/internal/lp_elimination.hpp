@@ -2,7 +2,7 @@
 // Colliding Schedule (collide/zonotope.cpp, collide/subset_sums.cpp):
 // constraints a0 v0 + a1 v1 + c (>, >=) 0 in 128-bit integers, one variable
 // eliminated by Fourier-Motzkin, the last one's interval from the kernel
-// (common/linear_interval.hpp), witness values on the 2^-20 grid, and the
+// (common/internal/linear_interval.hpp), witness values on the 2^-20 grid, and the
 // vertices of the closed feasible polygon. Internal to collide/ (not
 // installed).
 #pragma once
@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "common/linear_interval.hpp"
+#include "common/internal/linear_interval.hpp"
 
 namespace gridlock::pairs {
 
@@ -26,7 +26,7 @@ struct Lin {
 };
 
 // Feasible set of one variable from constraints a v + c (>, >=) 0 (a[1] == 0),
-// exactly (common/linear_interval.hpp). O(c log) for c constraints.
+// exactly (common/internal/linear_interval.hpp). O(c log) for c constraints.
 LinearInterval<i128> interval_of(const std::vector<Lin>& cons);
 
 // Fourier-Motzkin: eliminates v1, returns the constraints on v0 alone.

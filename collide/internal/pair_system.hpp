@@ -1,4 +1,4 @@
-// The eight inequalities of one pair of regions (collide/collide_pairs.hpp)
+// The eight inequalities of one pair of regions (collide/internal/collide_pairs.hpp)
 // in the variables the pair tests eliminate: the progresses of the pair's
 // own couplings (at most two) and Delta', the sum of the other couplings'
 // nets on the tree path. Internal to collide/ (not installed).
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/lp_elimination.hpp"
 
 namespace gridlock::pairs {

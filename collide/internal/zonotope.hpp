@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "collide/angle_tree.hpp"
+#include "collide/internal/angle_tree.hpp"
 #include "collide/internal/pair_system.hpp"
 
 namespace gridlock::pairs {

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "collide/collide_pairs.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
@@ -45,7 +45,7 @@ CouplingDisplacements coupling_displacements(const Instance& inst);
 // at full progress (zero without an operation).
 Vec2 edge_vector(const Instance& inst, uint32_t e, NodeId from);
 
-// One pair of region forms (collide/collide_pairs.hpp) with the path's nets,
+// One pair of region forms (collide/internal/collide_pairs.hpp) with the path's nets,
 // couplings numbered below nq: continuous by vertex enumeration over the
 // cube; discrete by every done set S and running coupling q, each a vertex
 // enumeration in the one variable s.

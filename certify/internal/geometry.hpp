@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "certify/certificate_text.hpp"
+#include "certify/internal/certificate_text.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
 

@@ -2,7 +2,7 @@
 // NP-completeness theorem): one operation per literal occurrence, coupled
 // with the operation that makes the literal false, and a release u.
 //
-// It is the one-gap gadget (gadgets/gap_gadget.hpp) with gap k - 1, u on the
+// It is the one-gap gadget (gadgets/internal/gap_gadget.hpp) with gap k - 1, u on the
 // backbone (widens) and the k literal operations on the hook (narrow):
 //
 //   row+1:  o . . B =l1= o - o =l2= o - o =l3= o     (k = 3: two empty cells)
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "gadgets/canvas.hpp"
 #include "gadgets/contract.hpp"
+#include "gadgets/internal/canvas.hpp"
 #include "gadgets/mutation.hpp"
 
 namespace gridlock {

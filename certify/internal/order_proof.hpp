@@ -26,8 +26,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "certify/certificate_text.hpp"
-#include "certify/geometry.hpp"
+#include "certify/internal/certificate_text.hpp"
+#include "certify/internal/geometry.hpp"
 
 namespace gridlock {
 

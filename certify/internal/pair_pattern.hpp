@@ -3,7 +3,7 @@
 //
 // The clause's literals order other couplings against the runner: "q<R"
 // false means q runs after R, "R<q" false means q runs before it. The two
-// regions' eight forms (certify/geometry.hpp) depend only on which
+// regions' eight forms (certify/internal/geometry.hpp) depend only on which
 // couplings ran before R; those the clause does not fix are free. A free
 // coupling whose coefficients are all >= 0 (all <= 0) can only raise
 // (lower) every form, and raising every form never ends a collision, so the
@@ -17,8 +17,8 @@
 #include <optional>
 #include <string>
 
-#include "certify/certificate_text.hpp"
-#include "certify/geometry.hpp"
+#include "certify/internal/certificate_text.hpp"
+#include "certify/internal/geometry.hpp"
 
 namespace gridlock {
 

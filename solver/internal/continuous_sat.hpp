@@ -8,7 +8,7 @@
 // event e = t_r + delta (delta in {0, 1}) the clamp of another coupling q of
 // the gap is 0 (e <= t_q), 1 (e >= t_q + 1) or partial, and which one is a
 // conjunction of these atoms. A two-coupling pair depends only on the offset
-// of its two start times (free_offsets, solver/continuous_pairs.hpp): one
+// of its two start times (free_offsets, solver/internal/continuous_pairs.hpp): one
 // interval is a fixed pair of difference bounds, several get one selector
 // atom each ("the offset lies in interval i") and a clause "some selector".
 //
@@ -64,9 +64,9 @@
 
 #include "lattice/motion.hpp"
 #include "lattice/rational.hpp"
-#include "solver/constraints.hpp"
-#include "solver/continuous_pairs.hpp"
-#include "solver/search.hpp"
+#include "solver/internal/constraints.hpp"
+#include "solver/internal/continuous_pairs.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 

@@ -1,8 +1,9 @@
 // Orders of directed graphs on nodes 0..n-1: a topological order (Kahn) and
 // the strongly connected components (Tarjan, iterative), the one
-// implementation of each for the solvers (solver/order_sat.cpp: the cycles
+// implementation of each (solver/order_sat.cpp: the cycles
 // of a SAT model's orientation and of the forced relations;
-// solver/precedence_graph.cpp: the precedence search's set literals).
+// solver/precedence_graph.cpp: the precedence search's set literals; and
+// certify/order_proof.cpp: the NO-certificate checker's cycle tests).
 #pragma once
 
 #include <algorithm>

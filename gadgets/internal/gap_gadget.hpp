@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "gadgets/canvas.hpp"
 #include "gadgets/contract.hpp"
+#include "gadgets/internal/canvas.hpp"
 
 namespace gridlock {
 

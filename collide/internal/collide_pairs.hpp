@@ -117,7 +117,7 @@ enum class ZonotopeTest {
   PerPair,
   // Both on every pair; std::logic_error if they ever disagree (the twin).
   Both,
-  // The paper's angle-sorted augmented tree (collide/angle_tree.hpp): the
+  // The paper's angle-sorted augmented tree (collide/internal/angle_tree.hpp): the
   // traversal keeps the path's nets sorted by angle with subtree sums,
   // O(log m) per step; per pair the own couplings' nets are taken out
   // (O(log m)), the own progresses are projected out exactly into a

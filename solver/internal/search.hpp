@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common/limits.hpp"
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock {
@@ -138,12 +138,6 @@ struct PrecedenceHooks {
 SearchOutcome search_precedence(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st,
                                 const PrecedenceHooks* hooks = nullptr);
 
-// The chronological precedence search (no learning; the twin in tests):
-// a transitively closed partial order on the couplings not yet done, safe
-// moves, branching on requirements (docs/solver.md). Gap systems only;
-// throws std::invalid_argument for a system with more forms.
-SearchOutcome search_precedence_chronological(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st);
-
 // SAT back end, gap systems only: the system as clauses over order literals
 // "a before b" for couplings sharing a gap (one weighted at-most-K counter per
 // narrower and gap), solved by CaDiCaL incrementally; cycles among the order
@@ -160,7 +154,7 @@ SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, Solv
 // (the running coupling and which of the others ran before it, decided by
 // step_collides), larger ones lazily, pattern by pattern, as an acyclic
 // model's order meets them; order literals, transitivity and lazy cycle
-// clauses from solver/order_sat.hpp. Statistics as search_sat, propagations
+// clauses from solver/internal/order_sat.hpp. Statistics as search_sat, propagations
 // also counting lazy pattern clauses. eager_limit: constraints of more
 // couplings than this are handled lazily (tests use 0 to run the lazy path
 // on every multi-form constraint).

@@ -5,20 +5,20 @@
 // from the instance with exact rationals, and a clausal proof (RUP) that
 // they cannot all hold.
 //   i lines  the pair collides at every offset outside the intervals
-//            (certify/offsets.hpp: exact projection of the colliding set)
+//            (certify/internal/offsets.hpp: exact projection of the colliding set)
 //   e lines  at the instant t_Q + delta the pair collides whenever every
 //            literal is false (the literals bound each clamp; every form's
 //            infimum over the box of clamps is positive)
 //   t lines  the literals' negations are contradictory (a negative cycle,
 //            found by Bellman-Ford over exact weights)
-//   l lines  RUP lemmas (certify/clause_proof.hpp), the last one empty
+//   l lines  RUP lemmas (certify/internal/clause_proof.hpp), the last one empty
 // Sound only when every cycle of the shape closes for each coupling alone
 // (then the tree displacements are the positions at every moment): checked
 // first (CertifyGeometry::cycles_close).
 #pragma once
 
-#include "certify/certificate_text.hpp"
 #include "certify/certify.hpp"
+#include "certify/internal/certificate_text.hpp"
 
 namespace gridlock {
 

@@ -1,7 +1,7 @@
 // The order gadget a < b (paper, proof of the NP-completeness theorem, and
 // docs/model.md worked case 2): b collides unless a ran before it.
 //
-// It is the one-gap gadget (gadgets/gap_gadget.hpp) with gap 0, a on the
+// It is the one-gap gadget (gadgets/internal/gap_gadget.hpp) with gap 0, a on the
 // backbone (widens) and b on the hook (narrows):
 //
 //   row+1:  A B =b= o
@@ -17,8 +17,8 @@
 #include <cstdint>
 #include <string>
 
-#include "gadgets/canvas.hpp"
 #include "gadgets/contract.hpp"
+#include "gadgets/internal/canvas.hpp"
 #include "gadgets/mutation.hpp"
 
 namespace gridlock {

@@ -1,5 +1,6 @@
 // Chronological precedence search for gap systems (the twin of the learning
-// engine in search_precedence.cpp). Why each rule keeps the answer exact:
+// engine in solver/search_precedence.cpp; used by tests and bench only, so it
+// lives here, not in the library). Why each rule keeps the answer exact:
 // docs/solver.md, "Chronological precedence search".
 //
 // In a gap system a state S is valid iff every form v_c(S) <= 0 (no gap is
@@ -28,7 +29,7 @@
 #include <stdexcept>
 
 #include "common/assert.hpp"
-#include "solver/search.hpp"
+#include "support/search_precedence_chronological.hpp"
 
 namespace gridlock {
 namespace {

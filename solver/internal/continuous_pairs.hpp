@@ -1,4 +1,4 @@
-// Exact analysis of one collision constraint (solver/constraints.hpp) with at
+// Exact analysis of one collision constraint (solver/internal/constraints.hpp) with at
 // most two couplings, in the continuous model: it depends only on the offset
 // d = t_(rel[1]) - t_(rel[0]) of the two start times.
 //
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "lattice/rational.hpp"
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 
 namespace gridlock {
 

@@ -28,8 +28,8 @@
 #include <cstdint>
 #include <string>
 
-#include "gadgets/canvas.hpp"
 #include "gadgets/contract.hpp"
+#include "gadgets/internal/canvas.hpp"
 #include "gadgets/mutation.hpp"
 
 namespace gridlock {

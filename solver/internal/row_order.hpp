@@ -1,7 +1,7 @@
 // Nodes grouped by row and ordered by x, in linear time.
 //
 // Both gap checkers (the continuous one in solver/gaps.hpp and the discrete
-// gap constraints in solver/constraints.hpp) need, for every row, its nodes
+// gap constraints in solver/internal/constraints.hpp) need, for every row, its nodes
 // from left to right. A comparison sort would cost O(n log n); the gap checker
 // is promised linear time (solver/gaps.hpp), so this is an LSD radix sort on the key (y, x) shifted to
 // start at zero: coordinates are bounded by kMaxCoordinate < 2^30, so the

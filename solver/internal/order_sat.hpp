@@ -20,9 +20,9 @@
 #include <utility>
 #include <vector>
 
-#include "cnf/incremental_sat.hpp"
-#include "common/graph_order.hpp"
-#include "solver/search.hpp"
+#include "cnf/internal/incremental_sat.hpp"
+#include "common/internal/graph_order.hpp"
+#include "solver/internal/search.hpp"
 
 namespace gridlock {
 
@@ -87,7 +87,7 @@ class OrderSat {
                            const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
   void add_triangle_clauses(const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
   bool order_of_model(std::vector<CouplingId>& out);
-  // The orientation of the pairs in the model (common/graph_order.hpp).
+  // The orientation of the pairs in the model (common/internal/graph_order.hpp).
   Digraph model_orientation() const;
   void add_cycle_clauses(const Digraph& g, const StrongComponents& cc);
 
@@ -108,7 +108,7 @@ class OrderSat {
 
 // A one-form constraint (a gap, or a pair of regions with one changing
 // form) as clauses: one weighted at-most counter per narrower (the
-// inequalities of solver/gap_inequalities.hpp). Requires c.num_forms == 1 and
+// inequalities of solver/internal/gap_inequalities.hpp). Requires c.num_forms == 1 and
 // c.base[0] <= 0. False iff some bound is negative (no order exists).
 bool encode_gap_constraint(const CollisionConstraint& c, OrderSat& os);
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "common/assert.hpp"
-#include "solver/constraints.hpp"
+#include "solver/internal/constraints.hpp"
 
 namespace gridlock {
 

@@ -1,5 +1,5 @@
 // The theory lemmas of a Z3 proof, as clauses of difference bounds: what a
-// continuous NO certificate needs from Z3 (solver/continuous_sat.hpp,
+// continuous NO certificate needs from Z3 (solver/internal/continuous_sat.hpp,
 // ContinuousProof). Z3 (with proof=true) proves unsatisfiability by
 // resolution over the input clauses and its theory lemmas (th-lemma steps:
 // "these arithmetic facts cannot hold together"); the rest of its proof is
