@@ -4,7 +4,7 @@
 // GIL for its call, and an exception it raises stops the campaign (through
 // the stop request) and is raised by the call.
 #include "cnf/dimacs.hpp"
-#include "common/ordered_pool.hpp"
+#include "common/internal/ordered_pool.hpp"
 #include "python/bindings.hpp"
 #include "verify/campaign.hpp"
 #include "verify/fuzz.hpp"
