@@ -1,11 +1,14 @@
 #include "collide/collide.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
+#include <string>
 
 #include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/collide_tree.hpp"
 #include "collide/single_coupling.hpp"
+#include "common/clock.hpp"
 
 namespace gridlock {
 
@@ -40,6 +43,30 @@ CollideResult finish_with(CollideResult& res, Simulator& sim, Schedule s) {
   res.simulated = run.collision;
   return res;
 }
+
+// Turns a step's (done, total) into at most four CollideProgress reports a
+// second, plus every report with done == total.
+class Reporter {
+ public:
+  explicit Reporter(const CollideProgressFn& fn) : fn_(fn) {}
+  // The (done, total) callback of one step; empty without a listener.
+  std::function<void(uint64_t, uint64_t)> step(const std::string& name) {
+    if (!fn_) return {};
+    return [this, name](uint64_t done, uint64_t total) { report(name, done, total); };
+  }
+  void report(const std::string& name, uint64_t done, uint64_t total) {
+    if (!fn_) return;
+    const double t = clock_.seconds();
+    if (done < total && last_ >= 0 && t - last_ < 0.25) return;
+    last_ = t;
+    fn_(CollideProgress{name, done, total, t});
+  }
+
+ private:
+  const CollideProgressFn& fn_;
+  Stopwatch clock_;
+  double last_ = -1;
+};
 
 // Step 3, no couplings: the centroid algorithm (or, for TreePairwise, its
 // all-pairs twin naming the pair and the centroid run giving the witness).
@@ -86,7 +113,7 @@ Schedule schedule_reaching(size_t nq, const std::vector<std::pair<CouplingId, Ra
 
 // Steps 4/5, couplings: all pairs, exact per-pair tests in the model's sense.
 CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res,
-                            const Deadline* deadline) {
+                            const Deadline* deadline, Reporter& progress) {
   PairwiseStats ps;
   // Continuous: couplings of at most 3 operations give at most 6 non-axis
   // directions, so the support table is O(1) per step and pair (proven
@@ -95,10 +122,6 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
   size_t largest = 0;
   for (const Coupling& c : inst.couplings()) largest = std::max(largest, c.ops.size());
   const bool angles = model == TimeModel::Continuous && largest > 3;
-  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps, deadline,
-                               angles ? ZonotopeTest::AngleTree : ZonotopeTest::Incremental);
-  res.stats.pairs = ps.pairs;
-  res.stats.full_tests = ps.full_tests;
   if (angles) {
     res.algorithm = "pairwise-angle-tree";
     res.complexity = "O(n^2 log^2 n) expected (treap sorted by angle, one fan search per pair)";
@@ -109,7 +132,15 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
     res.algorithm = "pairwise-subset-sum";
     res.complexity = "O(n^2 (c^2 A + c L^2)) <= O(n^(16/3)) for c distinct vectors, grid area A, L operations per path";
   }
-  if (!pc) return res;
+  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps, deadline,
+                               angles ? ZonotopeTest::AngleTree : ZonotopeTest::Incremental,
+                               progress.step(res.algorithm));
+  res.stats.pairs = ps.pairs;
+  res.stats.full_tests = ps.full_tests;
+  if (!pc) {
+    progress.report(res.algorithm, inst.num_nodes(), inst.num_nodes());
+    return res;
+  }
   res.region_a = pc->a, res.region_b = pc->b;
   if (model == TimeModel::Discrete) {
     std::vector<CouplingId> first = pc->witness.done;
@@ -121,13 +152,15 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
 
 }  // namespace
 
-CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method, const Deadline* deadline) {
+CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method, const Deadline* deadline,
+                             const CollideProgressFn& on_progress) {
   const PreparedInstance prep(inst);
-  return find_collision(prep, model, method, deadline);
+  return find_collision(prep, model, method, deadline, on_progress);
 }
 
 CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method,
-                             const Deadline* deadline) {
+                             const Deadline* deadline, const CollideProgressFn& on_progress) {
+  Reporter progress(on_progress);
   const Instance& inst = prep.inst;
   CollideResult res;
   Simulator sim(prep);
@@ -156,10 +189,14 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     res.algorithm = "single-coupling";
     res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
     SingleCouplingStats st;
-    const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline);
+    const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline,
+                                                           kSingleCouplingBandItems, progress.step(res.algorithm));
     res.stats.cell_items = st.items;
     res.stats.pair_tests = st.tests;
-    if (!ans.collides) return res;
+    if (!ans.collides) {
+      progress.report(res.algorithm, st.bands, st.bands);
+      return res;
+    }
     if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
     finish_with(res, sim, schedule_from_order({0}));
     if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
@@ -176,7 +213,7 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     return tree_step(inst, sim, method, res, deadline);
 
   // 4./5. Couplings: all pairs, exact per-pair tests.
-  return pairwise_step(inst, sim, model, res, deadline);
+  return pairwise_step(inst, sim, model, res, deadline, progress);
 }
 
 }  // namespace gridlock

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,13 +64,30 @@ struct CollideResult {
   CollideStats stats;
 };
 
+// What a long find_collision reports through its on_progress callback: the
+// step that runs (CollideResult::algorithm's names) and how far it is in
+// that step's own units: source nodes of the pairwise traversal
+// ("pairwise-zonotope", "pairwise-subset-sum"), column bands of the
+// one-coupling sweep ("single-coupling"). The library never draws; the
+// command line turns the reports into its progress line.
+struct CollideProgress {
+  std::string step;
+  uint64_t done = 0, total = 0;  // done <= total
+  double seconds = 0;            // since find_collision began
+};
+using CollideProgressFn = std::function<void(const CollideProgress&)>;
+
 // deadline (optional): checked by the quadratic methods and the simulator's
 // check of the witness; when it passes, LimitReached (common/limits.hpp) is
 // thrown (the command line answers UNKNOWN).
+// on_progress (optional): called from the calling thread at most about four
+// times a second while a step runs, and once more when a step ends with
+// done == total (not when it stops early at a collision). Cheap steps (the
+// cycle test, the centroid method) do not report.
 CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method = CollideMethod::Auto,
-                             const Deadline* deadline = nullptr);
+                             const Deadline* deadline = nullptr, const CollideProgressFn& on_progress = {});
 // The same on prepared tables (lattice/prepared.hpp): nothing is rebuilt.
 CollideResult find_collision(const PreparedInstance& prep, TimeModel model, CollideMethod method = CollideMethod::Auto,
-                             const Deadline* deadline = nullptr);
+                             const Deadline* deadline = nullptr, const CollideProgressFn& on_progress = {});
 
 }  // namespace gridlock

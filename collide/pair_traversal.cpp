@@ -206,7 +206,8 @@ std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uin
 
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats, const Deadline* deadline,
-                                                ZonotopeTest ztest) {
+                                                ZonotopeTest ztest,
+                                                const std::function<void(uint64_t, uint64_t)>& on_source) {
   const size_t n = inst.num_nodes(), nq = inst.couplings().size();
   std::vector<RegionForm> forms = region_forms(inst, regions);
   std::vector<std::vector<uint32_t>> regs_of(n);
@@ -232,6 +233,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
   uint64_t steps = 0;
   for (NodeId s = 0; s < n && !found; ++s) {
     if (deadline) deadline->check();
+    if (on_source) on_source(s, n);
     if (regs_of[s].empty()) continue;
     const auto& mine = regs_of[s];
     for (size_t i = 0; i < mine.size() && !found; ++i)

@@ -239,7 +239,8 @@ SingleCouplingAnswer sweep_cell(const std::vector<Item>& items, size_t b, size_t
 }  // namespace
 
 SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
-                                           SingleCouplingStats* stats, const Deadline* deadline, uint64_t band_items) {
+                                           SingleCouplingStats* stats, const Deadline* deadline, uint64_t band_items,
+                                           const std::function<void(uint64_t, uint64_t)>& on_band) {
   SingleCouplingStats st;
   const std::vector<Faces> faces = region_faces(inst, t, regions);
   const CellKeys keys = cell_keys(faces);
@@ -266,6 +267,7 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
   std::vector<uint32_t> active, open;  // open: live regions whose columns reach the band
   size_t next = 0, cells = 0;
   for (size_t band = 0; band + 1 < cuts.size() && !found.collides; ++band) {
+    if (on_band) on_band(band, st.bands);
     const int64_t c0 = cuts[band], c1 = cuts[band + 1];
     for (; next < live.size() && first_column(faces[live[next]]) < c1; ++next) open.push_back(live[next]);
     size_t keep = 0;

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 #include "common/limits.hpp"
@@ -62,12 +63,14 @@ struct SingleCouplingAnswer {
 // the cells are swept in bands of whole columns holding at most band_items
 // items each (one counting pass decides the bands), so the O(mu) items are
 // never all in memory; time stays O(n + mu log mu). The answer (pair
-// included) is the same for every band_items >= 1.
+// included) is the same for every band_items >= 1. on_band (optional) is
+// called before each band with (bands done, bands).
 // Throws std::overflow_error if the motion spans more than 2^32 cells along
 // an axis (not with coordinates within kMaxCoordinate and n < 10^9).
 SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningTree& t, const Regions& regions,
                                            SingleCouplingStats* stats = nullptr, const Deadline* deadline = nullptr,
-                                           uint64_t band_items = kSingleCouplingBandItems);
+                                           uint64_t band_items = kSingleCouplingBandItems,
+                                           const std::function<void(uint64_t, uint64_t)>& on_band = {});
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.

@@ -202,6 +202,31 @@ TEST(CollideAdversarial, FanSerpentinesMethodsAgree) {
             << big.num_nodes() << ": L " << fan_size(249, 250) << ", " << big.couplings().size() << " couplings\n";
 }
 
+// Progress: the pairwise step reports through find_collision's callback
+// (growing counts of source nodes, the last with done == total on a NO),
+// and a listener does not change the answer.
+TEST(CollideAdversarial, PairwiseStepReportsProgress) {
+  const Instance inst = serpentine_instance(square_serpentine(256, 3, SerpentineCouplings::Mixed), 1);
+  std::vector<CollideProgress> seen;
+  const CollideResult r = find_collision(inst, TimeModel::Continuous, CollideMethod::Auto, nullptr,
+                                         [&](const CollideProgress& p) { seen.push_back(p); });
+  ASSERT_FALSE(r.collides);
+  ASSERT_GE(seen.size(), 2u);
+  for (size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].step, r.algorithm);
+    EXPECT_EQ(seen[i].total, inst.num_nodes());
+    EXPECT_LE(seen[i].done, seen[i].total);
+    if (i > 0) {
+      EXPECT_GE(seen[i].done, seen[i - 1].done);
+      EXPECT_GE(seen[i].seconds, seen[i - 1].seconds);
+    }
+  }
+  EXPECT_EQ(seen.back().done, seen.back().total);
+  const CollideResult quiet = find_collision(inst, TimeModel::Continuous);
+  EXPECT_EQ(quiet.collides, r.collides);
+  EXPECT_EQ(quiet.stats.full_tests, r.stats.full_tests);
+}
+
 TEST(CollideAdversarial, IncrementalSupportsAgainstPerPair) {
   uint64_t pairs = 0;
   int instances = 0;

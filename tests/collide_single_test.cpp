@@ -195,6 +195,34 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
   EXPECT_LT(items[1], 80 * items[0]) << items[0] << " -> " << items[1];
 }
 
+// Progress: the one-coupling step reports its column bands through
+// find_collision's callback; the sweep reports each band before it runs.
+TEST(SingleCouplingSweep, ReportsBandsAsProgress) {
+  const Instance inst = diagonal_sweep_of_size(4000);
+  std::vector<CollideProgress> seen;
+  const CollideResult r = find_collision(inst, TimeModel::Continuous, CollideMethod::Auto, nullptr,
+                                         [&](const CollideProgress& p) { seen.push_back(p); });
+  ASSERT_FALSE(r.collides);
+  ASSERT_EQ(r.algorithm, "single-coupling");
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.back().step, "single-coupling");
+  EXPECT_EQ(seen.back().done, seen.back().total);
+  Simulator sim(inst);
+  std::vector<uint64_t> bands, totals;
+  SingleCouplingStats st;
+  EXPECT_FALSE(
+      single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, nullptr, 1000, [&](uint64_t done, uint64_t total) {
+        bands.push_back(done);
+        totals.push_back(total);
+      }).collides);
+  ASSERT_GT(st.bands, 1u);
+  ASSERT_EQ(bands.size(), st.bands);
+  for (uint64_t b = 0; b < bands.size(); ++b) {
+    EXPECT_EQ(bands[b], b);
+    EXPECT_EQ(totals[b], st.bands);
+  }
+}
+
 // The U below: the sweep names (0,0) and (0,1), and so does find_collision.
 void check_u(const Instance& inst) {
   Simulator sim(inst);

@@ -12,6 +12,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/progress_line.hpp"
 #include "tools/user_error.hpp"
 
 namespace gridlock {
@@ -58,6 +59,8 @@ int run_animate(const std::vector<std::string>& args) {
   } else {  // --solve
     SolveOptions so;
     so.seconds = timeout;
+    cli::ProgressLine line(true);  // drawn only on a terminal; erased at the solver's last report
+    so.on_progress = cli::solve_progress_to(line);
     SolveResult r = solve_discrete(inst, so);
     std::vector<CouplingId> order;
     if (r.status == Verdict::Yes) {

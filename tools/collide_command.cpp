@@ -8,6 +8,7 @@
 #include "tools/command.hpp"
 #include "tools/options.hpp"
 #include "tools/output.hpp"
+#include "tools/progress_line.hpp"
 #include "tools/user_error.hpp"
 
 namespace gridlock {
@@ -104,11 +105,14 @@ int run_collide(const std::vector<std::string>& args) {
               std::to_string(inst.ops().size()) + " operations, " + std::to_string(inst.couplings().size()) +
               " couplings; " + model_name + " model");
   CollideResult res;
+  cli::ProgressLine line(!vm.count("json"));  // drawn only on a terminal
   try {
-    res = find_collision(inst, model, method, seconds > 0 ? &deadline : nullptr);
+    res = find_collision(inst, model, method, seconds > 0 ? &deadline : nullptr, cli::collide_progress_to(line));
+    line.clear();
   } catch (const std::invalid_argument& e) {
     throw UserError(e.what());
   } catch (const LimitReached&) {
+    line.clear();
     ans.comment("limit reached before an answer (--timeout " + vm["timeout"].as<std::string>() + ")");
     ans.data()["model"] = model_name;
     return ans.finish(Verdict::Unknown);

@@ -40,4 +40,21 @@ std::function<void(const SolveProgress&)> solve_progress_to(ProgressLine& line) 
   };
 }
 
+std::string collide_progress_text(const CollideProgress& p) {
+  const bool bands = p.step == "single-coupling";
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "collide: %s, %llu of %llu %s (%.0f %%), %.1f s", p.step.c_str(),
+                static_cast<unsigned long long>(p.done), static_cast<unsigned long long>(p.total),
+                bands ? "column bands" : "source nodes",
+                p.total > 0 ? 100.0 * static_cast<double>(p.done) / static_cast<double>(p.total) : 100.0, p.seconds);
+  return buf;
+}
+
+CollideProgressFn collide_progress_to(ProgressLine& line) {
+  return [&line](const CollideProgress& p) {
+    if (p.done >= p.total) line.clear();
+    else line.show(collide_progress_text(p), true);  // find_collision already reports at most four times a second
+  };
+}
+
 }  // namespace gridlock::cli

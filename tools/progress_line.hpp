@@ -1,10 +1,12 @@
 // The command line's one progress printer: libraries report progress
-// through callbacks (verify/campaign.hpp's events, SolveOptions::on_progress)
+// through callbacks (verify/campaign.hpp's events, SolveOptions::on_progress,
+// find_collision's on_progress)
 // and never draw; the subcommands turn those reports into this line.
 #pragma once
 
 #include <string>
 
+#include "collide/collide.hpp"
 #include "solver/solve.hpp"
 
 namespace gridlock::cli {
@@ -32,5 +34,12 @@ std::string solve_progress_text(const SolveProgress& p);
 // A SolveOptions::on_progress that draws on line (erased at the last
 // report). line must outlive the solve.
 std::function<void(const SolveProgress&)> solve_progress_to(ProgressLine& line);
+
+// "collide: pairwise-zonotope, 1200 of 5000 source nodes (24 %), 3.1 s". O(1).
+std::string collide_progress_text(const CollideProgress& p);
+
+// A find_collision on_progress that draws on line; a step's last report
+// (done == total) erases it. line must outlive the call.
+CollideProgressFn collide_progress_to(ProgressLine& line);
 
 }  // namespace gridlock::cli

@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -138,10 +139,12 @@ enum class ZonotopeTest {
 // deadline (optional) is checked once per source node and every 4096
 // steps of the traversal: LimitReached when it has passed. ztest: see above;
 // in the discrete model PerPair selects discrete_pair_collides_per_vector
-// (the twin), anything else discrete_pair_collides.
+// (the twin), anything else discrete_pair_collides. on_source (optional)
+// is called before each source node's traversal with (sources done, n).
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats = nullptr,
                                                 const Deadline* deadline = nullptr,
-                                                ZonotopeTest ztest = ZonotopeTest::Incremental);
+                                                ZonotopeTest ztest = ZonotopeTest::Incremental,
+                                                const std::function<void(uint64_t, uint64_t)>& on_source = {});
 
 }  // namespace gridlock
