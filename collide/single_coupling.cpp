@@ -127,12 +127,19 @@ struct CellKeys {
   }
 };
 
+// The columns a region's sweep can meet over [0, 1]: [first, last).
+int64_t first_column(const Faces& f) { return std::min(f[0].a, f[0].a + f[0].b); }
+int64_t last_column(const Faces& f) { return std::max(f[1].a, f[1].a + f[1].b); }
+
+// The least row a region's sweep can meet over [0, 1] (ylo's smaller end).
+int64_t first_row(const Faces& f) { return std::min(f[2].a, f[2].a + f[2].b); }
+
 // The origin: the least x and y any region reaches over [0, 1].
 CellKeys cell_keys(const std::vector<Faces>& faces) {
   CellKeys k;
   bool first = true;
   for (const Faces& f : faces) {
-    const int64_t x = std::min(f[0].a, f[0].a + f[0].b), y = std::min(f[2].a, f[2].a + f[2].b);
+    const int64_t x = first_column(f), y = first_row(f);
     if (first || x < k.x0) k.x0 = x;
     if (first || y < k.y0) k.y0 = y;
     first = false;
@@ -141,10 +148,6 @@ CellKeys cell_keys(const std::vector<Faces>& faces) {
   k.x0 -= 1;
   return k;
 }
-
-// The columns a region's sweep can meet over [0, 1]: [first, last).
-int64_t first_column(const Faces& f) { return std::min(f[0].a, f[0].a + f[0].b); }
-int64_t last_column(const Faces& f) { return std::max(f[1].a, f[1].a + f[1].b); }
 
 // Visits r's items in columns [c0, c1) (absolute x): for each column the
 // region meets, the time span it does; for each row it meets during that
