@@ -52,8 +52,10 @@ MaybeError parse_order(const Instance& inst, const std::vector<std::string>& nam
 namespace {
 
 // Calls fn(line_no, tokens) for each non-comment line; stops at the first error.
-template <class Fn>
-MaybeError for_each_line(const std::string& path, Fn fn) {
+// A line starting with the word "c" is a comment unless is_data(tokens) says
+// it is an entry for a coupling named "c" (a valid name, docs/grid-format.md).
+template <class IsData, class Fn>
+MaybeError for_each_line(const std::string& path, IsData is_data, Fn fn) {
   std::ifstream file;
   std::istream* in = &std::cin;
   std::string name = path == "-" ? "<stdin>" : path;
@@ -72,7 +74,7 @@ MaybeError for_each_line(const std::string& path, Fn fn) {
     std::vector<std::string> tok;
     for (std::string w; ss >> w;) tok.push_back(w);
     // As in .grid and DIMACS: UTF-8 (bytes >= 0x80) in comments only.
-    const bool comment = !tok.empty() && (tok[0] == "c" || tok[0][0] == '#');
+    const bool comment = !tok.empty() && ((tok[0] == "c" && !is_data(tok)) || tok[0][0] == '#');
     for (size_t k = 0; k < text.size(); ++k) {
       const auto b = static_cast<unsigned char>(text[k]);
       if ((b < 0x20 && b != '\t' && b != '\r') || b == 0x7f || (b >= 0x80 && !comment)) {
@@ -89,17 +91,31 @@ MaybeError for_each_line(const std::string& path, Fn fn) {
 
 }  // namespace
 
+namespace {
+
+// An order line that names couplings only: with a coupling named "c" or
+// "s", such a line is part of the order, not a comment or a status line.
+bool names_couplings_only(const Instance& inst, const std::vector<std::string>& tok) {
+  for (const std::string& w : tok)
+    if (inst.find_coupling(w) == kNone) return false;
+  return true;
+}
+
+}  // namespace
+
 MaybeError read_order_file(const Instance& inst, const std::string& path, std::vector<CouplingId>& order) {
   std::vector<std::string> names;
   long last = 0;
   std::string shown = path == "-" ? "<stdin>" : path;
-  auto err = for_each_line(path, [&](const std::string&, long no, std::vector<std::string>& tok) -> MaybeError {
-    last = no;
-    if (tok[0] == "s") return std::nullopt;
-    size_t i = tok[0] == "v" ? 1 : 0;
-    for (; i < tok.size(); ++i) names.push_back(tok[i]);
-    return std::nullopt;
-  });
+  auto is_data = [&](const std::vector<std::string>& tok) { return names_couplings_only(inst, tok); };
+  auto err = for_each_line(path, is_data,
+                           [&](const std::string&, long no, std::vector<std::string>& tok) -> MaybeError {
+                             last = no;
+                             if (tok[0] == "s" && !names_couplings_only(inst, tok)) return std::nullopt;
+                             size_t i = tok[0] == "v" ? 1 : 0;
+                             for (; i < tok.size(); ++i) names.push_back(tok[i]);
+                             return std::nullopt;
+                           });
   if (err) return err;
   return parse_order(inst, names, shown, last, order);
 }
@@ -123,30 +139,36 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
   int64_t lcm = 1;
   long last = 0;
   std::string shown = path == "-" ? "<stdin>" : path;
-  auto err = for_each_line(path, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
-    last = no;
-    // The status line and "v NAME TIME" lines of `gridlock collide` and
-    // `gridlock gaps` (a
-    // coupling may itself be named "s" or "v": only these exact shapes).
-    if (tok[0] == "s" && tok.size() == 2 && (tok[1] == "YES" || tok[1] == "NO" || tok[1] == "UNKNOWN"))
-      return std::nullopt;
-    if (tok[0] == "v" && tok.size() == 3) tok.erase(tok.begin());
-    if (tok.size() != 2) return Diagnostic{name, no, "expected 'COUPLING TIME'"};
-    CouplingId q = inst.find_coupling(tok[0]);
-    if (q == kNone) return Diagnostic{name, no, "unknown coupling '" + tok[0] + "'"};
-    if (line_of[q])
-      return Diagnostic{
-          name, no, "coupling '" + tok[0] + "' given a time twice (first on line " + std::to_string(line_of[q]) + ")"};
-    auto t = tok[1][0] == '+' ? std::nullopt : Rational::parse(tok[1]);  // no '+': one reading of numbers
-    if (!t) return Diagnostic{name, no, "bad time '" + tok[1] + "' (an integer or a fraction a/b)"};
-    if (t->num() / t->den() > kMaxStartTime || t->num() / t->den() < -kMaxStartTime)
-      return Diagnostic{name, no, "time out of range: '" + tok[1] + "' (|t| <= 2^30)"};
-    lcm = std::lcm(lcm, t->den());
-    if (lcm > kMaxDenominator) return Diagnostic{name, no, "the common denominator of the times exceeds 2^20"};
-    line_of[q] = no;
-    out.start[q] = *t;
-    return std::nullopt;
-  });
+  // "c TIME" is the entry of a coupling named "c" when the instance has one.
+  auto is_data = [&](const std::vector<std::string>& tok) {
+    return tok.size() == 2 && inst.find_coupling(tok[0]) != kNone && tok[1][0] != '+' && Rational::parse(tok[1]);
+  };
+  auto err = for_each_line(
+      path, is_data, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
+        last = no;
+        // The status line and "v NAME TIME" lines of `gridlock collide` and
+        // `gridlock gaps` (a
+        // coupling may itself be named "s" or "v": only these exact shapes).
+        if (tok[0] == "s" && tok.size() == 2 && (tok[1] == "YES" || tok[1] == "NO" || tok[1] == "UNKNOWN"))
+          return std::nullopt;
+        if (tok[0] == "v" && tok.size() == 3) tok.erase(tok.begin());
+        if (tok.size() != 2) return Diagnostic{name, no, "expected 'COUPLING TIME'"};
+        CouplingId q = inst.find_coupling(tok[0]);
+        if (q == kNone) return Diagnostic{name, no, "unknown coupling '" + tok[0] + "'"};
+        if (line_of[q])
+          return Diagnostic{
+              name, no,
+              "coupling '" + tok[0] + "' given a time twice (first on line " + std::to_string(line_of[q]) + ")"};
+        auto t = tok[1][0] == '+' ? std::nullopt : Rational::parse(tok[1]);  // no '+': one reading of numbers
+        if (!t) return Diagnostic{name, no, "bad time '" + tok[1] + "' (an integer or a fraction a/b)"};
+        if (t->num() / t->den() > kMaxStartTime || t->num() / t->den() < -kMaxStartTime)
+          return Diagnostic{name, no, "time out of range: '" + tok[1] + "' (|t| <= 2^30)"};
+        lcm = std::lcm(lcm, t->den());
+        if (lcm > kMaxDenominator) return Diagnostic{name, no, "the common denominator of the times exceeds 2^20"};
+        line_of[q] = no;
+        out.start[q] = *t;
+        return std::nullopt;
+      });
   if (err) return err;
   for (CouplingId q = 0; q < line_of.size(); ++q)
     if (!line_of[q]) return Diagnostic{shown, last, "no start time for coupling '" + inst.couplings()[q].name + "'"};

@@ -2,10 +2,13 @@
 // input with the exact message (docs/grid-format.md lists them all).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <sstream>
 
 #include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
+#include "lattice/schedule.hpp"
 #include "support/test_scale.hpp"
 
 namespace gridlock {
@@ -167,6 +170,62 @@ TEST(GridFormat, MissingFileIsADiagnostic) {
   auto err = read_instance_file("/nonexistent/x.grid", inst);
   ASSERT_TRUE(err);
   EXPECT_EQ(err->str(), "/nonexistent/x.grid: cannot open file");
+}
+
+// docs/model.md worked case 4, its operations named c and g (valid names
+// that are also the comment and status words of schedule files).
+Instance case4_named(const std::string& first, const std::string& second) {
+  const std::string text =
+      "p grid 6 5 2 0\nn 0 0\nn 1 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 1 0\ne 0 0 0 1\n"
+      "e 0 1 1 1\ne 1 1 2 1\ne 2 1 2 0\no " +
+      first + " contract 0 0 +x\no " + second + " grow 2 0 -x\n";
+  Instance inst;
+  std::istringstream in(text);
+  EXPECT_FALSE(read_instance(in, "case4.grid", inst));
+  return inst;
+}
+
+std::string schedule_file(const std::string& text) {
+  std::string path = ::testing::TempDir() + "/gridlock_schedule_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string names_in(const Instance& inst, const std::vector<CouplingId>& order) {
+  std::string s;
+  for (CouplingId q : order) s += (s.empty() ? "" : " ") + inst.couplings()[q].name;
+  return s;
+}
+
+TEST(ScheduleFiles, CouplingsNamedCAndSAreDataNotCommentsInOrders) {
+  const Instance inst = case4_named("c", "s");
+  std::vector<CouplingId> order;
+  auto err = read_order_file(inst, schedule_file("c a comment about the order\nc s\n"), order);
+  ASSERT_FALSE(err) << err->str();
+  EXPECT_EQ(names_in(inst, order), "c s");
+  err = read_order_file(inst, schedule_file("s YES\nv s c\n"), order);  // solve's own output
+  ASSERT_FALSE(err) << err->str();
+  EXPECT_EQ(names_in(inst, order), "s c");
+  err = read_order_file(inst, schedule_file("s\nc\n"), order);  // one name per line
+  ASSERT_FALSE(err) << err->str();
+  EXPECT_EQ(names_in(inst, order), "s c");
+}
+
+TEST(ScheduleFiles, CouplingNamedCGetsItsTimeInTimesFiles) {
+  const Instance inst = case4_named("c", "g");
+  Schedule s;
+  auto err = read_times_file(inst, schedule_file("c start times\nc 0\ng 1/2\n"), s);
+  ASSERT_FALSE(err) << err->str();
+  EXPECT_EQ(s.start[inst.find_coupling("c")], Rational(0));
+  EXPECT_EQ(s.start[inst.find_coupling("g")], Rational(1, 2));
+  // Without a coupling named c, "c 0" stays a comment.
+  const Instance other = case4_named("a", "g");
+  err = read_times_file(other, schedule_file("c 0\na 0\ng 0\n"), s);
+  EXPECT_FALSE(err);
+  err = read_times_file(other, schedule_file("c 0\ng 0\n"), s);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->str().find("no start time for coupling 'a'"), std::string::npos) << err->str();
 }
 
 }  // namespace
