@@ -39,6 +39,14 @@ void IncrementalSat::add_clause(const std::vector<int>& lits) {
   impl_->solver.add(0);
 }
 
+void IncrementalSat::add_clause(std::initializer_list<int> lits) {
+  for (int l : lits) {
+    GRIDLOCK_REQUIRE(l != 0 && l <= vars_ && -l <= vars_, "IncrementalSat: literal out of range");
+    impl_->solver.add(l);
+  }
+  impl_->solver.add(0);
+}
+
 Verdict IncrementalSat::solve(const std::function<bool(uint64_t)>& stop) {
   if (vars_ > 0) impl_->solver.reserve(vars_);
   impl_->stop = &stop;

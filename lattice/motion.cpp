@@ -1,7 +1,6 @@
 #include "lattice/motion.hpp"
 
 #include <algorithm>
-#include <map>
 
 namespace gridlock {
 
@@ -90,6 +89,7 @@ void set_box(RegionShape& s, Vec2 c, NodeId ref) {
 Regions Regions::build(const Instance& inst) {
   Regions R;
   size_t n = inst.num_nodes();
+  R.shapes.reserve(n + inst.ops().size());  // a region per node, at most one per operation
   R.shapes.resize(n);
   R.region_of_op.assign(inst.ops().size(), kNone);
   const auto& cells = inst.cells();
@@ -143,11 +143,17 @@ FaceNets FaceNets::build(const Instance& inst) {
   size_t n = inst.num_nodes();
   // Half-edge h = 4 * w + d, present iff w has a neighbour toward d.
   std::vector<char> used(4 * n, 0);
+  // One walk and one list of steps, reused for every face: most faces
+  // (the outer one above all, about 2n steps) have no non-zero net and are
+  // dropped, so they are built in place and copied only when kept.
+  Face face;
+  std::vector<std::pair<CouplingId, Vec2>> net;  // (coupling, step) per operation edge, then summed
   for (NodeId w0 = 0; w0 < n; ++w0) {
     for (int d0 = 0; d0 < 4; ++d0) {
       if (used[4 * w0 + d0] || inst.neighbour(w0, static_cast<Dir>(d0)) == kNone) continue;
-      Face face;
-      std::map<CouplingId, Vec2> net;
+      face.walk.clear();
+      face.nets.clear();
+      net.clear();
       NodeId w = w0;
       int d = d0;
       while (!used[4 * w + d]) {
@@ -160,7 +166,7 @@ FaceNets FaceNets::build(const Instance& inst) {
           const Operation& op = inst.ops()[k];
           Vec2 step = unit(dir);  // relative motion of x w.r.t. w at full progress
           if (op.kind == OpKind::Contract) step = Vec2{-step.x, -step.y};
-          net[op.coupling] += step;
+          net.push_back({op.coupling, step});
         }
         // At x, turn: the first edge clockwise from the way back.
         int back = (d + 2) % 4, nd = back;
@@ -174,9 +180,15 @@ FaceNets FaceNets::build(const Instance& inst) {
         w = x;
         d = nd;
       }
-      for (auto& [q, v] : net)
+      // Sum the steps per coupling, in increasing coupling order.
+      std::sort(net.begin(), net.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (size_t i = 0; i < net.size();) {
+        const CouplingId q = net[i].first;
+        Vec2 v{0, 0};
+        for (; i < net.size() && net[i].first == q; ++i) v += net[i].second;
         if (!v.is_zero()) face.nets.push_back({q, v}), F.coupling_breaks_cycle[q] = 1;
-      if (!face.nets.empty()) F.faces.push_back(std::move(face));
+      }
+      if (!face.nets.empty()) F.faces.push_back(face);
     }
   }
   return F;

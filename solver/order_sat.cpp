@@ -10,16 +10,18 @@ namespace gridlock {
 
 int OrderSat::before(CouplingId a, CouplingId b) {
   const CouplingId lo = std::min(a, b), hi = std::max(a, b);
-  auto [it, fresh] = var_of_pair_.try_emplace(key(lo, hi), 0);
-  if (fresh) {
-    it->second = sat_.new_var();
-    pair_vars_.push_back({it->second, lo, hi});
+  const uint32_t found = var_of_pair_.find(key(lo, hi));
+  int var = static_cast<int>(found);
+  if (found == FlatMap64::kAbsent) {
+    var = sat_.new_var();
+    var_of_pair_.emplace(key(lo, hi), static_cast<uint32_t>(var));
+    pair_vars_.push_back({var, lo, hi});
     if (cycle_log_) {
-      pair_index_.resize(static_cast<size_t>(it->second) + 1, 0);
-      pair_index_[static_cast<size_t>(it->second)] = static_cast<uint32_t>(pair_vars_.size());
+      pair_index_.resize(static_cast<size_t>(var) + 1, 0);
+      pair_index_[static_cast<size_t>(var)] = static_cast<uint32_t>(pair_vars_.size());
     }
   }
-  return a == lo ? it->second : -it->second;
+  return a == lo ? var : -var;
 }
 
 void OrderSat::prove_to(std::FILE* drat, std::vector<std::vector<int>>* cycles) {
@@ -37,7 +39,7 @@ std::pair<CouplingId, CouplingId> OrderSat::pair_of(int var) const {
 }
 
 bool OrderSat::has_pair(CouplingId a, CouplingId b) const {
-  return var_of_pair_.count(key(std::min(a, b), std::max(a, b))) != 0;
+  return var_of_pair_.find(key(std::min(a, b), std::max(a, b))) != FlatMap64::kAbsent;
 }
 
 // reg[j-1] of literal i means "the literals up to i weigh at least j"; only
@@ -45,7 +47,8 @@ bool OrderSat::has_pair(CouplingId a, CouplingId b) const {
 bool OrderSat::at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t bound) {
   if (cycle_log_) throw std::logic_error("OrderSat: a counter in proof mode");
   if (bound < 0) return false;
-  std::vector<std::pair<int, int64_t>> kept;
+  std::vector<std::pair<int, int64_t>>& kept = kept_;
+  kept.clear();
   int64_t total = 0;
   for (auto [l, w] : lits) {
     if (w > bound) {
@@ -56,8 +59,21 @@ bool OrderSat::at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t
     total += w;
   }
   if (total <= bound) return true;
+  // Too much only when every kept literal holds (without any one of them,
+  // even the lightest, the rest weigh at most bound): one clause, no
+  // counter. Every counter of random 3-SAT's compiled gaps is of this kind
+  // (two literals, bound 1, or three, bound 2).
+  int64_t lightest = kept.front().second;
+  for (const auto& lw : kept) lightest = std::min(lightest, lw.second);
+  if (total - lightest <= bound) {
+    clause_.clear();
+    for (const auto& lw : kept) clause_.push_back(-lw.first);
+    sat_.add_clause(clause_);
+    return true;
+  }
   const auto K = static_cast<size_t>(bound);
-  std::vector<int> prev, cur;  // registers of the literals so far, 1..K
+  std::vector<int>&prev = prev_, &cur = cur_;  // registers of the literals so far, 1..K
+  prev.clear();
   for (size_t i = 0; i < kept.size(); ++i) {
     const int l = kept[i].first;
     const auto w = static_cast<size_t>(kept[i].second);
@@ -125,11 +141,12 @@ void OrderSat::add_triangle_clauses(const std::vector<std::vector<std::pair<Coup
       if (a < x) continue;
       for (auto [c, lc] : partners[x]) {
         if (c <= a) continue;
-        auto it = var_of_pair_.find(key(a, c));  // a < c
-        if (it == var_of_pair_.end()) continue;
+        const uint32_t ac = var_of_pair_.find(key(a, c));  // a < c
+        if (ac == FlatMap64::kAbsent) continue;
+        const int vac = static_cast<int>(ac);
         // a before x before c implies a before c; c before x before a implies c before a.
-        sat_.add_clause({la, -lc, it->second});
-        sat_.add_clause({-la, lc, -it->second});
+        sat_.add_clause({la, -lc, vac});
+        sat_.add_clause({-la, lc, -vac});
       }
     }
   }

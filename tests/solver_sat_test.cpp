@@ -14,6 +14,7 @@
 #include "cnf/sat_solver.hpp"
 #include "reductions/compile.hpp"
 #include "reductions/to_lsat.hpp"
+#include "solver/internal/order_sat.hpp"
 #include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
@@ -91,6 +92,64 @@ TEST(SatEngine, RandomGapSystemsAgreeWithAllPermutations) {
   EXPECT_GT(yes, count / 10);
   EXPECT_GT(no, count / 10);
   std::printf("[ sat-gap-systems ] %d systems: %d YES, %d NO (seed %llu)\n", count, yes, no,
+              static_cast<unsigned long long>(seed));
+}
+
+// OrderSat::at_most against arithmetic: a random weighted constraint over n
+// order literals of disjoint pairs (no cycles possible), each of the 2^n
+// assignments fixed by unit clauses, must be satisfiable exactly when the
+// true literals weigh at most the bound. Both encodings must occur: the one
+// clause "not all of them" (only all together weigh too much) and the
+// weighted counter.
+TEST(SatEngine, AtMostAgreesWithArithmetic) {
+  const uint64_t seed = test::base_seed(7300);
+  Rng rng(seed);
+  const int count = test::scaled(3000);
+  int one_clause = 0, counter = 0;
+  for (int i = 0; i < count; ++i) {
+    const auto n = static_cast<size_t>(rng.between(1, 5));
+    std::vector<int64_t> w(n);
+    int64_t total = 0;
+    for (auto& x : w) x = rng.between(1, 4), total += x;
+    const int64_t bound = rng.between(-1, total);
+    const std::vector<bool> negate = [&] {
+      std::vector<bool> v(n);
+      for (size_t j = 0; j < n; ++j) v[j] = rng.coin();
+      return v;
+    }();
+    int64_t kept = 0, kept_lightest = INT64_MAX;  // the literals the counter keeps (weight <= bound)
+    for (int64_t x : w)
+      if (x <= bound) kept += x, kept_lightest = std::min(kept_lightest, x);
+    if (bound >= 0 && kept > bound) (kept - kept_lightest <= bound ? one_clause : counter) += 1;
+    for (uint32_t mask = 0; mask < (1u << n); ++mask) {
+      SolveOptions o;
+      SearchBudget budget(o);
+      SolveStats st;
+      OrderSat os(2 * n, budget, st);
+      std::vector<std::pair<int, int64_t>> lits;
+      int64_t weight = 0;
+      for (size_t j = 0; j < n; ++j) {
+        const auto a = static_cast<CouplingId>(2 * j), b = static_cast<CouplingId>(2 * j + 1);
+        const int lit = negate[j] ? os.before(b, a) : os.before(a, b);
+        lits.push_back({lit, w[j]});
+        const bool on = (mask >> j) & 1;
+        os.add_clause({on ? lit : -lit});
+        if (on) weight += w[j];
+      }
+      const bool encoded = os.at_most(lits, bound);
+      const bool expect = weight <= bound;
+      if (!encoded) {
+        ASSERT_LT(bound, 0) << "seed " << seed << " case " << i;
+        continue;
+      }
+      ASSERT_TRUE(os.add_order_clauses({}));
+      const SearchOutcome out = os.solve([](const std::vector<CouplingId>&) { return true; });
+      ASSERT_EQ(out.status == Verdict::Yes, expect) << "seed " << seed << " case " << i << " mask " << mask;
+    }
+  }
+  EXPECT_GT(one_clause, count / 20);
+  EXPECT_GT(counter, count / 20);
+  std::printf("[ at-most ] %d constraints: %d as one clause, %d as a counter (seed %llu)\n", count, one_clause, counter,
               static_cast<unsigned long long>(seed));
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,10 @@ class IncrementalSat {
   // Adds the clause (non-zero literals over variables from new_var). An
   // empty clause makes the formula unsatisfiable. O(size).
   void add_clause(const std::vector<int>& lits);
+  // The same for a clause written in place ({a, b, c}): no vector is built,
+  // so the SAT engines' counters and order clauses (many thousands of short
+  // clauses per formula) allocate nothing per clause.
+  void add_clause(std::initializer_list<int> lits);
   // Solves the clauses added so far. `stop` is polled during the search
   // with the number of conflicts so far (over all calls); returning true
   // ends the call with Unknown. Sat: value() reads the model until the next

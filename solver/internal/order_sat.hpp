@@ -16,12 +16,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "cnf/internal/incremental_sat.hpp"
 #include "common/internal/graph_order.hpp"
+#include "lattice/flat_map.hpp"
 #include "solver/internal/search.hpp"
 
 namespace gridlock {
@@ -38,7 +38,9 @@ class OrderSat {
   void add_clause(const std::vector<int>& lits) { sat_.add_clause(lits); }
 
   // sum w_i [l_i] <= bound, weights > 0, as a weighted sequential counter
-  // (Hoelldobler, Manthey, Steinke): O(n * bound) clauses and variables.
+  // (Hoelldobler, Manthey, Steinke): O(n * bound) clauses and variables;
+  // one clause "not all of them" when only all of them together weigh more
+  // than bound (no variables: the usual gap of a compiled formula).
   // False if the bound is negative (unsatisfiable). lits is not kept.
   bool at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t bound);
 
@@ -95,9 +97,13 @@ class OrderSat {
   SolveStats& st_;
   size_t k_;
   IncrementalSat sat_;
-  std::unordered_map<uint64_t, int> var_of_pair_;
+  FlatMap64 var_of_pair_;  // pair key -> its variable (no allocation per pair)
   std::vector<PairVar> pair_vars_;
   uint64_t counted_conflicts_ = 0;
+  // at_most's work vectors, kept between calls (one call per narrower of
+  // every gap: thousands per formula).
+  std::vector<std::pair<int, int64_t>> kept_;
+  std::vector<int> prev_, cur_, clause_;
   std::vector<std::vector<int>>* cycle_log_ = nullptr;  // proof mode
   std::vector<uint32_t> pair_index_;                    // proof mode: variable -> pair_vars_ index + 1
   void add_cycle_clause(const std::vector<int>& c) {
