@@ -1,0 +1,254 @@
+"""Compares the command line with the independent model (conformance_model.py)
+on seeded random instances from `gridlock random`.
+
+    /usr/bin/python3 tests/python/conformance_compare.py [--per-config N] [--seed S]
+
+Per instance: `gridlock check` on discrete orders and continuous start times
+(verdict, moment, kind, pair, cycle, moving couplings) against simulate();
+`gridlock solve` (discrete) and `gridlock collide` (both models) against the
+brute force; `gridlock solve --model continuous` and `gridlock gaps` against
+what the model can prove; every YES witness the command line prints run
+through simulate(). Every disagreement is reported with the seed, the
+command and the instance text.
+"""
+import argparse
+import collections
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import time
+from fractions import Fraction
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import conformance_model as cm  # noqa: E402
+
+# (family, couplings, max coupling, kinds, horizontal)
+CONFIGS = [
+    ("tree", 3, 2, "expand,contract,grow", False),
+    ("tree", 4, 1, "expand,contract,grow", False),
+    ("cycles", 3, 2, "expand,contract,grow", False),
+    ("cycles", 2, 3, "expand", False),
+    ("dense", 3, 2, "expand,contract,grow", False),
+    ("sparse", 3, 2, "expand,contract,grow", False),
+    ("path", 4, 2, "expand,contract,grow", False),
+    ("tree", 3, 2, "expand,contract,grow", True),
+    ("cycles", 3, 2, "expand,grow", True),
+    ("tree", 4, 2, "contract,grow", False),
+]
+
+
+class Runner:
+    def __init__(self, binary, workdir):
+        self.binary = binary
+        self.workdir = workdir
+        self.calls = 0
+
+    def json(self, *args):
+        self.calls += 1
+        p = subprocess.run([self.binary, *map(str, args), "--json"], capture_output=True, text=True, timeout=120)
+        if p.returncode not in (0, 10, 20):
+            raise RuntimeError(f"gridlock {' '.join(map(str, args))}: exit {p.returncode}: {p.stderr}")
+        return json.loads(p.stdout)
+
+    def make(self, family, k, m, kinds, horizontal, seed, count):
+        """Writes `count` instances (seeds seed..seed+count-1); returns their paths."""
+        folder = os.path.join(self.workdir, f"{family}-{k}-{m}-{kinds.replace(',', '')}-{int(horizontal)}-{seed}")
+        args = [self.binary, "random", "--family", family, "--couplings", k, "--max-coupling", m, "--kinds", kinds,
+                "--seed", seed, "--count", count, "-o", folder]
+        if horizontal:
+            args.append("--horizontal")
+        self.calls += 1
+        subprocess.run(list(map(str, args)), check=True, capture_output=True)
+        return sorted(os.path.join(folder, f) for f in os.listdir(folder) if f.endswith(".grid"))
+
+
+def _seed_of(path):
+    name = os.path.basename(path)
+    return name.split("-s")[-1].split(".")[0] if "-s" in name else "?"
+
+
+class Report:
+    def __init__(self):
+        self.counts = collections.Counter()
+        self.disagreements = []
+
+    def count(self, key):
+        self.counts[key] += 1
+
+    def disagree(self, path, what, detail):
+        text = open(path).read()
+        self.disagreements.append(f"DISAGREEMENT [{what}] seed {_seed_of(path)} file {path}\n{detail}\n{text}")
+
+
+def _cycle_ok(model, cycle_cells, t, starts):
+    """The CLI's cycle is a closed walk of edges whose mismatch is non-zero
+    just after t."""
+    cells = [tuple(int(v) for v in c.strip("()").split(",")) for c in cycle_cells]
+    edges = {frozenset(e) for e in model.inst.edges}
+    later = sorted({s for s in starts.values()} | {s + 1 for s in starts.values()} | {t + 1})
+    t1 = min(x for x in later if x > t)
+    p = cm._progress(starts, (t + t1) / 2)
+    total = [Fraction(0), Fraction(0)]
+    for a, b in zip(cells, cells[1:] + cells[:1]):
+        if frozenset((a, b)) not in edges:
+            return False
+        op = model.edge_op.get(frozenset((a, b)))
+        if op:
+            sign, q = op
+            total[0] += sign * p[q] * (b[0] - a[0])
+            total[1] += sign * p[q] * (b[1] - a[1])
+    return total != [0, 0]
+
+
+def compare_check(run, rep, path, model, label, args, starts):
+    got = run.json("check", path, *args)
+    mine = cm.simulate(model, starts)
+    rep.count(f"check {label}")
+    detail = f"gridlock check {path} {' '.join(args)}\nCLI: {json.dumps(got.get('collision'))} status {got['status']}\nmodel: {mine}"
+    if (got["status"] == "YES") != (mine is None):
+        rep.disagree(path, f"check {label} verdict", detail)
+        return
+    if mine is None:
+        return
+    c = got["collision"]
+    if Fraction(c["time"]) != mine.time or c["kind"] != mine.kind or set(c["moving"]) != mine.moving:
+        rep.disagree(path, f"check {label} moment/kind/moving", detail)
+        return
+    if mine.kind == "node" and frozenset(c["regions"]) not in mine.pairs:
+        rep.disagree(path, f"check {label} pair", detail)
+    if mine.kind == "cycle" and not _cycle_ok(model, c["cycle"], mine.time, starts):
+        rep.disagree(path, f"check {label} cycle", detail)
+
+
+def _times_file(run, starts):
+    fd, name = tempfile.mkstemp(suffix=".times", dir=run.workdir)
+    with os.fdopen(fd, "w") as f:
+        for q, t in starts.items():
+            f.write(f"{q} {t}\n")
+    return name
+
+
+def compare_instance(run, rep, path, rng, solve_continuous=True):
+    inst = cm.parse_grid(open(path).read())
+    model = cm.Model(inst)
+    qs = model.couplings
+    free, colliding = cm.brute_discrete(model)
+    # check: discrete orders (the free one, the colliding one, random ones)
+    orders = [o for o in (free, colliding) if o] + [rng.sample(qs, len(qs)) for _ in range(2)]
+    for order in orders:
+        compare_check(run, rep, path, model, "discrete", ["--order", " ".join(order)], cm.order_starts(order))
+    # check: continuous start times on a grid of quarters (coinciding times likely)
+    for _ in range(3):
+        starts = {q: Fraction(rng.randint(0, 8), 4) for q in qs}
+        compare_check(run, rep, path, model, "continuous", ["--times", _times_file(run, starts)], starts)
+    # solve, discrete: exact brute force
+    got = run.json("solve", path, "--timeout", "20")
+    rep.count("solve discrete")
+    if got["status"] == "UNKNOWN":
+        rep.count("solve discrete UNKNOWN")
+    elif (got["status"] == "YES") != (free is not None):
+        rep.disagree(path, "solve discrete", f"CLI {got['status']} {got['witness']}; brute force free order: {free}")
+    elif got["status"] == "YES":
+        rep.count("witness solve discrete")
+        bad = cm.simulate(model, cm.order_starts(got["witness"]))
+        if bad is not None:
+            rep.disagree(path, "solve discrete witness", f"order {got['witness']} collides in the model: {bad}")
+    # collide, discrete: exact brute force
+    got = run.json("collide", path, "--model", "discrete", "--timeout", "20")
+    rep.count("collide discrete")
+    if got["status"] == "UNKNOWN":
+        rep.count("collide discrete UNKNOWN")
+    elif (got["status"] == "YES") != (colliding is not None):
+        rep.disagree(path, "collide discrete", f"CLI {got['status']} {got['witness']}; brute force colliding order: {colliding}")
+    elif got["status"] == "YES":
+        rep.count("witness collide discrete")
+        if cm.simulate(model, cm.order_starts(got["witness"])) is None:
+            rep.disagree(path, "collide discrete witness", f"order {got['witness']} is collision-free in the model")
+    # collide, continuous: exact (progress cube + Fourier-Motzkin)
+    mine = cm.continuous_colliding(model)
+    got = run.json("collide", path, "--model", "continuous", "--timeout", "20")
+    rep.count("collide continuous")
+    if got["status"] == "UNKNOWN":
+        rep.count("collide continuous UNKNOWN")
+    elif (got["status"] == "YES") != (mine is not None):
+        rep.disagree(path, "collide continuous", f"CLI {got['status']} {got.get('times')}; model: {mine}")
+    elif got["status"] == "YES":
+        rep.count("witness collide continuous")
+        starts = {q: Fraction(t) for q, t in got["times"].items()}
+        if cm.simulate(model, starts) is None:
+            rep.disagree(path, "collide continuous witness", f"times {got['times']} are collision-free in the model")
+    if mine is None and colliding is not None:
+        rep.disagree(path, "model itself", "discrete collides but continuous cannot")
+    if not solve_continuous:
+        return
+    # solve, continuous: sound one-sided (exact for horizontal-only, by the paper's theorem)
+    horizontal = cm.is_horizontal(inst)
+    extra = [{q: Fraction(rng.randint(0, 2 * len(qs)), 2) for q in qs} for _ in range(4)]
+    found = cm.free_schedule_candidates(model, free, extra)
+    got = run.json("solve", path, "--model", "continuous", "--timeout", "20")
+    rep.count("solve continuous")
+    if got["status"] == "UNKNOWN":
+        rep.count("solve continuous UNKNOWN")
+    elif got["status"] == "YES":
+        rep.count("witness solve continuous")
+        starts = {}
+        for line in got["witness"]:
+            q, t = line.split()
+            starts[q] = Fraction(t)
+        bad = cm.simulate(model, starts)
+        if bad is not None:
+            rep.disagree(path, "solve continuous witness", f"times {got['witness']} collide in the model: {bad}")
+        if horizontal and cm.simulate(model, {q: 0 for q in qs}) is not None:
+            rep.disagree(path, "solve continuous horizontal", "CLI YES but all at once collides (paper: then NO)")
+    elif found is not None:
+        rep.disagree(path, "solve continuous", f"CLI NO but the model finds collision-free times {found}")
+    elif not horizontal:
+        rep.count("solve continuous NO not proved by the model")
+    if horizontal:
+        gaps = run.json("gaps", path)
+        rep.count("gaps")
+        at_once = cm.simulate(model, {q: 0 for q in qs})
+        if (gaps["status"] == "YES") != (at_once is None):
+            rep.disagree(path, "gaps", f"CLI gaps {gaps['status']}; model all at once: {at_once}")
+        if got["status"] in ("YES", "NO") and got["status"] != gaps["status"]:
+            rep.disagree(path, "solve continuous vs gaps", f"solve {got['status']} gaps {gaps['status']}")
+
+
+def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True):
+    rep = Report()
+    rng = random.Random(seed)
+    with tempfile.TemporaryDirectory(prefix="conformance-") as work:
+        run = Runner(binary, work)
+        for i, (family, k, m, kinds, horizontal) in enumerate(configs):
+            base = seed * 1000 + i * 100000
+            paths = run.make(family, k, m, kinds, horizontal, base, max(2, per_config))
+            for p in paths:
+                rep.count(f"instances {family} k{k} m{m} {kinds}{' horizontal' if horizontal else ''}")
+                compare_instance(run, rep, p, rng, solve_continuous)
+        rep.calls = run.calls
+    return rep
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--binary", default=os.environ.get("GRIDLOCK_BINARY", os.path.join(
+        os.path.dirname(__file__), "..", "..", "build", "gridlock")))
+    ap.add_argument("--per-config", type=int, default=50)
+    ap.add_argument("--seed", type=int, default=int(os.environ.get("GRIDLOCK_TEST_SEED", "2026")))
+    ap.add_argument("--no-continuous-solve", action="store_true")
+    a = ap.parse_args()
+    t = time.time()
+    rep = run_all(a.binary, a.per_config, a.seed, solve_continuous=not a.no_continuous_solve)
+    for d in rep.disagreements:
+        print(d)
+    for key in sorted(rep.counts):
+        print(f"{rep.counts[key]:7d}  {key}")
+    print(f"{len(rep.disagreements)} disagreements, {rep.calls} CLI calls, {time.time() - t:.1f} s, seed {a.seed}")
+    return 1 if rep.disagreements else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
