@@ -37,6 +37,8 @@ CONFIGS = [
     ("tree", 3, 2, "expand,contract,grow", True),
     ("cycles", 3, 2, "expand,grow", True),
     ("tree", 4, 2, "contract,grow", False),
+    ("tree", 2, 3, "expand,contract,grow", False),
+    ("dense", 2, 2, "expand,contract,grow", False),
 ]
 
 
@@ -136,14 +138,21 @@ def compare_instance(run, rep, path, rng, solve_continuous=True):
     model = cm.Model(inst)
     qs = model.couplings
     free, colliding = cm.brute_discrete(model)
+    # The same instance with a random anchor: the model has none (only
+    # relative motion matters), so every answer must stay the same.
+    anchored = path[:-5] + "-anchored.grid"
+    with open(anchored, "w") as f:
+        f.write(open(path).read() + "a %d %d\n" % rng.choice(inst.nodes))
     # check: discrete orders (the free one, the colliding one, random ones)
     orders = [o for o in (free, colliding) if o] + [rng.sample(qs, len(qs)) for _ in range(2)]
-    for order in orders:
-        compare_check(run, rep, path, model, "discrete", ["--order", " ".join(order)], cm.order_starts(order))
+    for i, order in enumerate(orders):
+        compare_check(run, rep, anchored if i % 2 else path, model, "discrete", ["--order", " ".join(order)],
+                      cm.order_starts(order))
     # check: continuous start times on a grid of quarters (coinciding times likely)
-    for _ in range(3):
+    for i in range(3):
         starts = {q: Fraction(rng.randint(0, 8), 4) for q in qs}
-        compare_check(run, rep, path, model, "continuous", ["--times", _times_file(run, starts)], starts)
+        compare_check(run, rep, anchored if i % 2 else path, model, "continuous",
+                      ["--times", _times_file(run, starts)], starts)
     # solve, discrete: exact brute force
     got = run.json("solve", path, "--timeout", "20")
     rep.count("solve discrete")
@@ -184,10 +193,15 @@ def compare_instance(run, rep, path, rng, solve_continuous=True):
         rep.disagree(path, "model itself", "discrete collides but continuous cannot")
     if not solve_continuous:
         return
-    # solve, continuous: sound one-sided (exact for horizontal-only, by the paper's theorem)
+    # solve, continuous: exact for two couplings (continuous_free_two) and,
+    # by the paper's theorem, for horizontal-only instances; else one-sided.
     horizontal = cm.is_horizontal(inst)
-    extra = [{q: Fraction(rng.randint(0, 2 * len(qs)), 2) for q in qs} for _ in range(4)]
-    found = cm.free_schedule_candidates(model, free, extra)
+    exact = len(qs) == 2
+    if exact:
+        found = cm.continuous_free_two(model)
+    else:
+        extra = [{q: Fraction(rng.randint(0, 2 * len(qs)), 2) for q in qs} for _ in range(4)]
+        found = cm.free_schedule_candidates(model, free, extra)
     got = run.json("solve", path, "--model", "continuous", "--timeout", "20")
     rep.count("solve continuous")
     if got["status"] == "UNKNOWN":
@@ -203,8 +217,12 @@ def compare_instance(run, rep, path, rng, solve_continuous=True):
             rep.disagree(path, "solve continuous witness", f"times {got['witness']} collide in the model: {bad}")
         if horizontal and cm.simulate(model, {q: 0 for q in qs}) is not None:
             rep.disagree(path, "solve continuous horizontal", "CLI YES but all at once collides (paper: then NO)")
+        if exact and found is None:
+            rep.disagree(path, "solve continuous", f"CLI YES {got['witness']}; model (two couplings, exact): NO")
     elif found is not None:
         rep.disagree(path, "solve continuous", f"CLI NO but the model finds collision-free times {found}")
+    elif exact:
+        rep.count("solve continuous NO proved by the model (two couplings)")
     elif not horizontal:
         rep.count("solve continuous NO not proved by the model")
     if horizontal:

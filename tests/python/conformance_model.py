@@ -457,3 +457,123 @@ def parse_times(lines):
         name, t = line.split()
         out[name] = Fraction(t)
     return out
+
+
+# ---- continuous Collision-free Schedule for two couplings, exactly
+#
+# With two couplings A (start 0) and B (start d) only d matters, and
+# |d| >= 1 is the same motion as d = +-1 (one after the other). For each
+# phase of the motion (who runs), the progresses are affine in (d, time), so
+# each pair of regions (and each sign of each cycle's mismatch) collides for
+# d in an interval that Fourier-Motzkin elimination of the time gives
+# exactly. The good set is [-1, 1] minus the union of these (open, in
+# union) intervals: if it is not empty it holds an end point of one of them,
+# -1, 1, or the midpoint of two consecutive end points; we try those.
+
+
+def _phases(sign):
+    """(pA, pB, bounds) for d of this sign; affine forms in d, t as dicts."""
+    one, t, d = {"": Fraction(1)}, {"t": Fraction(1)}, {"d": Fraction(1)}
+    zero = {}
+    t_minus_d = {"t": Fraction(1), "d": Fraction(-1)}
+    if sign > 0:  # A runs [0, 1], B runs [d, 1 + d], 0 <= d <= 1
+        dom = [d, {"": Fraction(1), "d": Fraction(-1)}]
+        return [(t, zero, dom + [t, {"d": Fraction(1), "t": Fraction(-1)}]),
+                (t, t_minus_d, dom + [t_minus_d, {"": Fraction(1), "t": Fraction(-1)}]),
+                (one, t_minus_d, dom + [{"t": Fraction(1), "": Fraction(-1)}, {"": Fraction(1), "d": Fraction(1), "t": Fraction(-1)}])]
+    dom = [{"d": Fraction(-1)}, {"": Fraction(1), "d": Fraction(1)}]  # -1 <= d <= 0
+    return [(zero, t_minus_d, dom + [t_minus_d, {"t": Fraction(-1)}]),
+            (t, t_minus_d, dom + [t, {"": Fraction(1), "d": Fraction(1), "t": Fraction(-1)}]),
+            (t, one, dom + [{"t": Fraction(1), "d": Fraction(-1), "": Fraction(-1)}, {"": Fraction(1), "t": Fraction(-1)}])]
+
+
+def _lin(form, pa, pb, qa, qb):
+    """An affine form of the progresses -> a dict over d, t, ''."""
+    out = {"": Fraction(form[0])}
+    for q, coef in form[1].items():
+        src = pa if q == qa else pb
+        for k, v in src.items():
+            out[k] = out.get(k, 0) + coef * v
+    return out
+
+
+def _d_interval(strict_forms, bounds):
+    """{d : exists t, all strict_forms > 0, all bounds >= 0} as (lo, lo_open,
+    hi, hi_open) or None."""
+    cons = [({k: v for k, v in f.items() if k != "" and v != 0}, f.get("", Fraction(0)), True) for f in strict_forms]
+    cons += [({k: v for k, v in f.items() if k != "" and v != 0}, f.get("", Fraction(0)), False) for f in bounds]
+    # eliminate t with the routine above, then read the bounds on d
+    pos, neg, rest = [], [], []
+    for c, k, s in cons:
+        a = c.get("t", 0)
+        (pos if a > 0 else neg if a < 0 else rest).append((c, k, s))
+    for cp, kp, sp in pos:
+        for cn, kn, sn in neg:
+            ap, an = cp["t"], -cn["t"]
+            rest.append(({"d": cp.get("d", 0) / ap + cn.get("d", 0) / an}, kp / ap + kn / an, sp or sn))
+    lo, lo_open, hi, hi_open = Fraction(-2), False, Fraction(2), False
+    for c, k, s in rest:
+        a = c.get("d", 0)
+        if a == 0:
+            if (s and k <= 0) or (not s and k < 0):
+                return None
+            continue
+        b = -k / a  # a d + k > 0  <=>  d > b (a > 0) or d < b (a < 0)
+        if a > 0 and (b > lo or (b == lo and s)):
+            lo, lo_open = b, s
+        if a < 0 and (b < hi or (b == hi and s)):
+            hi, hi_open = b, s
+    if lo > hi or (lo == hi and (lo_open or hi_open)):
+        return None
+    return (lo, lo_open, hi, hi_open)
+
+
+def _bad_intervals(model):
+    qa, qb = model.couplings
+    out = []
+    names = list(model.regions)
+    for sign in (1, -1):
+        for pa, pb, bounds in _phases(sign):
+            lin = [dict(b) for b in bounds]
+            for _, (mx, my) in model.cycles:
+                for f in (mx, my):
+                    for s in (1, -1):
+                        g = _lin((s * f[0], {q: s * v for q, v in f[1].items()}), pa, pb, qa, qb)
+                        iv = _d_interval([g], lin)
+                        if iv:
+                            out.append(iv)
+            for i, a in enumerate(names):
+                ra = model.regions[a]
+                for b in names[i + 1:]:
+                    rb = model.regions[b]
+                    forms = []
+                    for k in (0, 2):
+                        for hi, lo in ((ra[k + 1], rb[k]), (rb[k + 1], ra[k]), (ra[k + 1], ra[k]), (rb[k + 1], rb[k])):
+                            forms.append(_lin(_add(hi, lo, -1), pa, pb, qa, qb))
+                    iv = _d_interval(forms, lin)
+                    if iv:
+                        out.append(iv)
+    return out
+
+
+def _inside(d, iv):
+    lo, lo_open, hi, hi_open = iv
+    return (lo < d or (lo == d and not lo_open)) and (d < hi or (d == hi and not hi_open))
+
+
+def continuous_free_two(model):
+    """Exact continuous Collision-free Schedule for exactly two couplings:
+    collision-free start times {A: 0, B: d}, or None (none exist)."""
+    if len(model.couplings) != 2:
+        raise ValueError("two couplings only")
+    bad = _bad_intervals(model)
+    points = {Fraction(-1), Fraction(0), Fraction(1)}
+    for lo, _, hi, _ in bad:
+        points.update(x for x in (lo, hi) if -1 <= x <= 1)
+    pts = sorted(points)
+    cands = pts + [(x + y) / 2 for x, y in zip(pts, pts[1:])]
+    qa, qb = model.couplings
+    for d in sorted(cands, key=lambda x: (abs(x), x)):
+        if not any(_inside(d, iv) for iv in bad):
+            return {qa: Fraction(0), qb: d}
+    return None
