@@ -133,7 +133,7 @@ def _times_file(run, starts):
     return name
 
 
-def compare_instance(run, rep, path, rng, solve_continuous=True):
+def compare_instance(run, rep, path, rng, solve_continuous=True, engines_too=True):
     inst = cm.parse_grid(open(path).read())
     model = cm.Model(inst)
     qs = model.couplings
@@ -148,94 +148,127 @@ def compare_instance(run, rep, path, rng, solve_continuous=True):
     for i, order in enumerate(orders):
         compare_check(run, rep, anchored if i % 2 else path, model, "discrete", ["--order", " ".join(order)],
                       cm.order_starts(order))
-    # check: continuous start times on a grid of quarters (coinciding times likely)
+    # check: continuous start times on a coarse grid (coinciding and
+    # overlapping runs likely), denominators 2, 3, 4 or 6, some negative
     for i in range(3):
-        starts = {q: Fraction(rng.randint(0, 8), 4) for q in qs}
+        den = rng.choice((2, 3, 4, 6))
+        starts = {q: Fraction(rng.randint(-den, 2 * den), den) for q in qs}
         compare_check(run, rep, anchored if i % 2 else path, model, "continuous",
                       ["--times", _times_file(run, starts)], starts)
-    # solve, discrete: exact brute force
-    got = run.json("solve", path, "--timeout", "20")
-    rep.count("solve discrete")
-    if got["status"] == "UNKNOWN":
-        rep.count("solve discrete UNKNOWN")
-    elif (got["status"] == "YES") != (free is not None):
-        rep.disagree(path, "solve discrete", f"CLI {got['status']} {got['witness']}; brute force free order: {free}")
-    elif got["status"] == "YES":
-        rep.count("witness solve discrete")
-        bad = cm.simulate(model, cm.order_starts(got["witness"]))
-        if bad is not None:
-            rep.disagree(path, "solve discrete witness", f"order {got['witness']} collides in the model: {bad}")
-    # collide, discrete: exact brute force
-    got = run.json("collide", path, "--model", "discrete", "--timeout", "20")
-    rep.count("collide discrete")
-    if got["status"] == "UNKNOWN":
-        rep.count("collide discrete UNKNOWN")
-    elif (got["status"] == "YES") != (colliding is not None):
-        rep.disagree(path, "collide discrete", f"CLI {got['status']} {got['witness']}; brute force colliding order: {colliding}")
-    elif got["status"] == "YES":
-        rep.count("witness collide discrete")
-        if cm.simulate(model, cm.order_starts(got["witness"])) is None:
-            rep.disagree(path, "collide discrete witness", f"order {got['witness']} is collision-free in the model")
-    # collide, continuous: exact (progress cube + Fourier-Motzkin)
+    horizontal = cm.is_horizontal(inst)
+    singletons = all(len(ops) == 1 for ops in inst.couplings.values())
+    # solve, discrete: exact brute force; every engine that takes the instance
+    engines = [None] + (["states", "pairs"] if engines_too else [])
+    if engines_too and horizontal:
+        engines += ["precedence", "sat"]
+    for engine in engines:
+        compare_solve_discrete(run, rep, path, model, free, engine)
+    # collide, both models: exact; every method that takes the instance
+    methods = [None] + (["pairwise"] if engines_too else [])
+    if engines_too and singletons:
+        methods += ["tree", "tree-pairwise"]
     mine = cm.continuous_colliding(model)
-    got = run.json("collide", path, "--model", "continuous", "--timeout", "20")
-    rep.count("collide continuous")
-    if got["status"] == "UNKNOWN":
-        rep.count("collide continuous UNKNOWN")
-    elif (got["status"] == "YES") != (mine is not None):
-        rep.disagree(path, "collide continuous", f"CLI {got['status']} {got.get('times')}; model: {mine}")
-    elif got["status"] == "YES":
-        rep.count("witness collide continuous")
-        starts = {q: Fraction(t) for q, t in got["times"].items()}
-        if cm.simulate(model, starts) is None:
-            rep.disagree(path, "collide continuous witness", f"times {got['times']} are collision-free in the model")
     if mine is None and colliding is not None:
         rep.disagree(path, "model itself", "discrete collides but continuous cannot")
+    if singletons and (mine is None) != (colliding is None):
+        # the paper: without couplings the reachable regions of the two models agree
+        rep.count("uncoupled: discrete and continuous Colliding differ in the model")
+    for method in methods:
+        compare_collide(run, rep, path, model, "discrete", colliding, method)
+        compare_collide(run, rep, path, model, "continuous", mine, method)
     if not solve_continuous:
         return
     # solve, continuous: exact for two couplings (continuous_free_two) and,
     # by the paper's theorem, for horizontal-only instances; else one-sided.
-    horizontal = cm.is_horizontal(inst)
     exact = len(qs) == 2
     if exact:
         found = cm.continuous_free_two(model)
     else:
         extra = [{q: Fraction(rng.randint(0, 2 * len(qs)), 2) for q in qs} for _ in range(4)]
         found = cm.free_schedule_candidates(model, free, extra)
-    got = run.json("solve", path, "--model", "continuous", "--timeout", "20")
-    rep.count("solve continuous")
-    if got["status"] == "UNKNOWN":
-        rep.count("solve continuous UNKNOWN")
-    elif got["status"] == "YES":
-        rep.count("witness solve continuous")
-        starts = {}
-        for line in got["witness"]:
-            q, t = line.split()
-            starts[q] = Fraction(t)
-        bad = cm.simulate(model, starts)
-        if bad is not None:
-            rep.disagree(path, "solve continuous witness", f"times {got['witness']} collide in the model: {bad}")
-        if horizontal and cm.simulate(model, {q: 0 for q in qs}) is not None:
-            rep.disagree(path, "solve continuous horizontal", "CLI YES but all at once collides (paper: then NO)")
-        if exact and found is None:
-            rep.disagree(path, "solve continuous", f"CLI YES {got['witness']}; model (two couplings, exact): NO")
-    elif found is not None:
-        rep.disagree(path, "solve continuous", f"CLI NO but the model finds collision-free times {found}")
-    elif exact:
-        rep.count("solve continuous NO proved by the model (two couplings)")
-    elif not horizontal:
-        rep.count("solve continuous NO not proved by the model")
+    answers = set()
+    for engine in [None] + (["dl", "sat", "z3"] if engines_too else []):
+        answers.add(compare_solve_continuous(run, rep, path, model, found, exact, horizontal, engine))
     if horizontal:
         gaps = run.json("gaps", path)
         rep.count("gaps")
         at_once = cm.simulate(model, {q: 0 for q in qs})
         if (gaps["status"] == "YES") != (at_once is None):
             rep.disagree(path, "gaps", f"CLI gaps {gaps['status']}; model all at once: {at_once}")
-        if got["status"] in ("YES", "NO") and got["status"] != gaps["status"]:
-            rep.disagree(path, "solve continuous vs gaps", f"solve {got['status']} gaps {gaps['status']}")
+        answers.add(gaps["status"])
+    answers.discard("UNKNOWN")
+    if len(answers) > 1:
+        rep.disagree(path, "continuous engines disagree", f"answers {answers}")
 
 
-def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True):
+def _engine(label, engine, flag="--engine"):
+    return (f"{label} {engine}" if engine else label), ([flag, engine] if engine else [])
+
+
+def compare_solve_discrete(run, rep, path, model, free, engine):
+    label, extra = _engine("solve discrete", engine)
+    got = run.json("solve", path, "--timeout", "20", *extra)
+    rep.count(label)
+    if got["status"] == "UNKNOWN":
+        rep.count(f"{label} UNKNOWN")
+    elif (got["status"] == "YES") != (free is not None):
+        rep.disagree(path, label, f"CLI {got['status']} {got['witness']}; brute force free order: {free}")
+    elif got["status"] == "YES":
+        rep.count(f"witness {label}")
+        bad = cm.simulate(model, cm.order_starts(got["witness"]))
+        if bad is not None:
+            rep.disagree(path, f"{label} witness", f"order {got['witness']} collides in the model: {bad}")
+
+
+def compare_collide(run, rep, path, model, time_model, mine, method):
+    """mine: the model's exact answer (a colliding order / pair, or None)."""
+    label, extra = _engine(f"collide {time_model}", method, "--method")
+    got = run.json("collide", path, "--model", time_model, "--timeout", "20", *extra)
+    rep.count(label)
+    if got["status"] == "UNKNOWN":
+        rep.count(f"{label} UNKNOWN")
+    elif (got["status"] == "YES") != (mine is not None):
+        rep.disagree(path, label, f"CLI {got['status']} {got['witness']}; model: {mine}")
+    elif got["status"] == "YES":
+        rep.count(f"witness {label}")
+        if time_model == "discrete":
+            starts = cm.order_starts(got["witness"])
+        else:
+            starts = {q: Fraction(t) for q, t in got["times"].items()}
+        if cm.simulate(model, starts) is None:
+            rep.disagree(path, f"{label} witness", f"schedule {got['witness']} is collision-free in the model")
+
+
+def compare_solve_continuous(run, rep, path, model, found, exact, horizontal, engine):
+    label, extra = _engine("solve continuous", engine)
+    got = run.json("solve", path, "--model", "continuous", "--timeout", "20", *extra)
+    rep.count(label)
+    qs = model.couplings
+    if got["status"] == "UNKNOWN":
+        rep.count(f"{label} UNKNOWN")
+    elif got["status"] == "YES":
+        rep.count(f"witness {label}")
+        starts = {}
+        for line in got["witness"]:
+            q, t = line.split()
+            starts[q] = Fraction(t)
+        bad = cm.simulate(model, starts)
+        if bad is not None:
+            rep.disagree(path, f"{label} witness", f"times {got['witness']} collide in the model: {bad}")
+        if horizontal and cm.simulate(model, {q: 0 for q in qs}) is not None:
+            rep.disagree(path, f"{label} horizontal", "CLI YES but all at once collides (paper: then NO)")
+        if exact and found is None:
+            rep.disagree(path, label, f"CLI YES {got['witness']}; model (two couplings, exact): NO")
+    elif found is not None:
+        rep.disagree(path, label, f"CLI NO but the model finds collision-free times {found}")
+    elif exact or horizontal:
+        rep.count(f"{label} NO proved by the model")
+    else:
+        rep.count(f"{label} NO not proved by the model")
+    return got["status"]
+
+
+def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True, engines_too=True):
     rep = Report()
     rng = random.Random(seed)
     with tempfile.TemporaryDirectory(prefix="conformance-") as work:
@@ -245,7 +278,7 @@ def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True):
             paths = run.make(family, k, m, kinds, horizontal, base, max(2, per_config))
             for p in paths:
                 rep.count(f"instances {family} k{k} m{m} {kinds}{' horizontal' if horizontal else ''}")
-                compare_instance(run, rep, p, rng, solve_continuous)
+                compare_instance(run, rep, p, rng, solve_continuous, engines_too)
         rep.calls = run.calls
     return rep
 
