@@ -278,7 +278,10 @@ def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True, en
             paths = run.make(family, k, m, kinds, horizontal, base, max(2, per_config))
             for p in paths:
                 rep.count(f"instances {family} k{k} m{m} {kinds}{' horizontal' if horizontal else ''}")
-                compare_instance(run, rep, p, rng, solve_continuous, engines_too)
+                try:
+                    compare_instance(run, rep, p, rng, solve_continuous, engines_too)
+                except RuntimeError as e:  # an exit code other than 0, 10, 20
+                    rep.disagree(p, "CLI error", str(e))
         rep.calls = run.calls
     return rep
 

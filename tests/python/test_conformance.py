@@ -60,3 +60,24 @@ def test_cli_agrees_with_the_model(config):
     rep = cc.run_all(BINARY, scaled(12), SEED + i, configs=[config])
     print("\n".join(f"{v:6d}  {k}" for k, v in sorted(rep.counts.items())))
     assert not rep.disagreements, f"seed {SEED} (GRIDLOCK_TEST_SEED replays):\n" + "\n\n".join(rep.disagreements)
+
+
+def test_two_coupling_offsets_match_the_simulation(tmp_path):
+    """The model's exact offset intervals (continuous_free_two) against its
+    own simulation at sampled offsets: the two halves of the model agree."""
+    import random
+
+    rng = random.Random(SEED)
+    run = cc.Runner(BINARY, str(tmp_path))
+    for family in ("tree", "cycles", "dense"):
+        for path in run.make(family, 2, 3, "expand,contract,grow", False, SEED, scaled(3)):
+            m = cm.Model(cm.parse_grid(open(path).read()))
+            if len(m.couplings) != 2:
+                continue
+            bad = cm._bad_intervals(m)
+            qa, qb = m.couplings
+            for d in [Fraction(rng.randint(-24, 24), 24) for _ in range(6)] + [Fraction(0)]:
+                sim = cm.simulate(m, {qa: 0, qb: d}) is not None
+                assert sim == any(cm._inside(d, iv) for iv in bad), f"{path} offset {d}"
+            free = cm.continuous_free_two(m)
+            assert free is None or cm.simulate(m, free) is None
