@@ -105,7 +105,29 @@ def _cycle_ok(model, cycle_cells, t, starts):
     return total != [0, 0]
 
 
-def compare_check(run, rep, path, model, label, args, starts):
+def _translate(text, shift):
+    """The instance moved by shift: every cell of n, e, o and a lines."""
+    out = []
+    for line in text.splitlines():
+        t = line.split()
+        if t and t[0] in ("n", "e", "a"):
+            nums = [int(x) for x in t[1:]]
+            t = [t[0]] + [str(v + shift[j % 2]) for j, v in enumerate(nums)]
+        elif t and t[0] == "o":
+            t = t[:3] + [str(int(t[3]) + shift[0]), str(int(t[4]) + shift[1])] + t[5:]
+        out.append(" ".join(t) if t and t[0] in ("n", "e", "o", "a") else line)
+    return "\n".join(out) + "\n"
+
+
+def _name_back(name, shift):
+    if name.startswith("node (") and shift != (0, 0):
+        x, y = name[len("node ("):-1].split(",")
+        return f"node ({int(x) - shift[0]},{int(y) - shift[1]})"
+    return name
+
+
+def compare_check(run, rep, variant, model, label, args, starts):
+    path, shift = variant
     got = run.json("check", path, *args)
     mine = cm.simulate(model, starts)
     rep.count(f"check {label}")
@@ -119,9 +141,10 @@ def compare_check(run, rep, path, model, label, args, starts):
     if Fraction(c["time"]) != mine.time or c["kind"] != mine.kind or set(c["moving"]) != mine.moving:
         rep.disagree(path, f"check {label} moment/kind/moving", detail)
         return
-    if mine.kind == "node" and frozenset(c["regions"]) not in mine.pairs:
+    if mine.kind == "node" and frozenset(_name_back(r, shift) for r in c["regions"]) not in mine.pairs:
         rep.disagree(path, f"check {label} pair", detail)
-    if mine.kind == "cycle" and not _cycle_ok(model, c["cycle"], mine.time, starts):
+    if mine.kind == "cycle" and not _cycle_ok(model, [_name_back("node " + x, shift)[5:] for x in c["cycle"]],
+                                              mine.time, starts):
         rep.disagree(path, f"check {label} cycle", detail)
 
 
@@ -143,17 +166,23 @@ def compare_instance(run, rep, path, rng, solve_continuous=True, engines_too=Tru
     anchored = path[:-5] + "-anchored.grid"
     with open(anchored, "w") as f:
         f.write(open(path).read() + "a %d %d\n" % rng.choice(inst.nodes))
+    # ... and moved far from the origin (the model's answers only move with it)
+    shift = (rng.randint(-10**9 + 100, 10**9 - 100), rng.randint(-10**9 + 100, 10**9 - 100))
+    shifted = path[:-5] + "-shifted.grid"
+    with open(shifted, "w") as f:
+        f.write(_translate(open(path).read(), shift))
+    variants = [(path, (0, 0)), (anchored, (0, 0)), (shifted, shift)]
     # check: discrete orders (the free one, the colliding one, random ones)
     orders = [o for o in (free, colliding) if o] + [rng.sample(qs, len(qs)) for _ in range(2)]
     for i, order in enumerate(orders):
-        compare_check(run, rep, anchored if i % 2 else path, model, "discrete", ["--order", " ".join(order)],
+        compare_check(run, rep, variants[i % 3], model, "discrete", ["--order", " ".join(order)],
                       cm.order_starts(order))
     # check: continuous start times on a coarse grid (coinciding and
     # overlapping runs likely), denominators 2, 3, 4 or 6, some negative
     for i in range(3):
         den = rng.choice((2, 3, 4, 6))
         starts = {q: Fraction(rng.randint(-den, 2 * den), den) for q in qs}
-        compare_check(run, rep, anchored if i % 2 else path, model, "continuous",
+        compare_check(run, rep, variants[(i + 1) % 3], model, "continuous",
                       ["--times", _times_file(run, starts)], starts)
     horizontal = cm.is_horizontal(inst)
     singletons = all(len(ops) == 1 for ops in inst.couplings.values())
