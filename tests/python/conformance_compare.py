@@ -41,6 +41,7 @@ CONFIGS = [
     ("dense", 2, 2, "expand,contract,grow", False),
     ("tree", 3, 4, "expand,contract", False),
     ("cycles", 3, 3, "expand,contract,grow", False),
+    ("tree", 4, 2, "expand,contract,grow", False, "planted"),
 ]
 
 
@@ -57,13 +58,16 @@ class Runner:
             raise RuntimeError(f"gridlock {' '.join(map(str, args))}: exit {p.returncode}: {p.stderr}")
         return json.loads(p.stdout)
 
-    def make(self, family, k, m, kinds, horizontal, seed, count):
+    def make(self, family, k, m, kinds, horizontal, seed, count, planted=False):
         """Writes `count` instances (seeds seed..seed+count-1); returns their paths."""
-        folder = os.path.join(self.workdir, f"{family}-{k}-{m}-{kinds.replace(',', '')}-{int(horizontal)}-{seed}")
+        folder = os.path.join(self.workdir,
+                              f"{family}-{k}-{m}-{kinds.replace(',', '')}-{int(horizontal)}-{int(planted)}-{seed}")
         args = [self.binary, "random", "--family", family, "--couplings", k, "--max-coupling", m, "--kinds", kinds,
                 "--seed", seed, "--count", count, "-o", folder]
         if horizontal:
             args.append("--horizontal")
+        if planted:
+            args.append("--planted")
         self.calls += 1
         subprocess.run(list(map(str, args)), check=True, capture_output=True)
         return sorted(os.path.join(folder, f) for f in os.listdir(folder) if f.endswith(".grid"))
@@ -165,6 +169,13 @@ def compare_instance(run, rep, path, rng, solve_continuous=True, engines_too=Tru
     model = cm.Model(inst)
     qs = model.couplings
     free, colliding = cm.brute_discrete(model)
+    text = open(path).read()
+    if "c planted: YES, collision-free order:" in text:
+        hidden = text.split("c planted: YES, collision-free order:")[1].split("\n")[0].split()
+        rep.count("planted order")
+        bad = cm.simulate(model, cm.order_starts(hidden))
+        if bad is not None or free is None:
+            rep.disagree(path, "planted order", f"order {hidden} collides in the model: {bad}")
     # The same instance with a random anchor: the model has none (only
     # relative motion matters), so every answer must stay the same.
     anchored = path[:-5] + "-anchored.grid"
@@ -325,11 +336,12 @@ def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True, en
     rng = random.Random(seed)
     with tempfile.TemporaryDirectory(prefix="conformance-") as work:
         run = Runner(binary, work)
-        for i, (family, k, m, kinds, horizontal) in enumerate(configs):
+        for i, (family, k, m, kinds, horizontal, *planted) in enumerate(configs):
             base = seed * 1000 + i * 100000
-            paths = run.make(family, k, m, kinds, horizontal, base, max(2, per_config))
+            paths = run.make(family, k, m, kinds, horizontal, base, max(2, per_config), bool(planted))
             for p in paths:
-                rep.count(f"instances {family} k{k} m{m} {kinds}{' horizontal' if horizontal else ''}")
+                rep.count(f"instances {family} k{k} m{m} {kinds}{' horizontal' if horizontal else ''}"
+                          f"{' planted' if planted else ''}")
                 try:
                     compare_instance(run, rep, p, rng, solve_continuous, engines_too)
                 except RuntimeError as e:  # an exit code other than 0, 10, 20
