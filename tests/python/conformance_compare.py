@@ -59,7 +59,9 @@ class Runner:
         return json.loads(p.stdout)
 
     def make(self, family, k, m, kinds, horizontal, seed, count, planted=False):
-        """Writes `count` instances (seeds seed..seed+count-1); returns their paths."""
+        """Writes `count` (at least 2: one would be a file, not a folder)
+        instances, seeds seed..seed+count-1; returns their paths."""
+        count = max(2, count)
         folder = os.path.join(self.workdir,
                               f"{family}-{k}-{m}-{kinds.replace(',', '')}-{int(horizontal)}-{int(planted)}-{seed}")
         args = [self.binary, "random", "--family", family, "--couplings", k, "--max-coupling", m, "--kinds", kinds,
@@ -338,7 +340,7 @@ def run_all(binary, per_config, seed, configs=CONFIGS, solve_continuous=True, en
         run = Runner(binary, work)
         for i, (family, k, m, kinds, horizontal, *planted) in enumerate(configs):
             base = seed * 1000 + i * 100000
-            paths = run.make(family, k, m, kinds, horizontal, base, max(2, per_config), bool(planted))
+            paths = run.make(family, k, m, kinds, horizontal, base, per_config, bool(planted))
             for p in paths:
                 rep.count(f"instances {family} k{k} m{m} {kinds}{' horizontal' if horizontal else ''}"
                           f"{' planted' if planted else ''}")
