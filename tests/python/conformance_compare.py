@@ -305,10 +305,14 @@ def compare_solve_continuous(run, rep, path, model, found, exact, horizontal, en
             rep.disagree(path, f"{label} horizontal", "CLI YES but all at once collides (paper: then NO)")
         if exact and found is None:
             rep.disagree(path, label, f"CLI YES {got['witness']}; model (two couplings, exact): NO")
+        if cm.final_collides(model):
+            rep.disagree(path, label, f"CLI YES {got['witness']}; model: the final configuration collides")
     elif found is not None:
         rep.disagree(path, label, f"CLI NO but the model finds collision-free times {found}")
     elif exact or horizontal:
         rep.count(f"{label} NO proved by the model")
+    elif cm.final_collides(model):
+        rep.count(f"{label} NO proved by the model (final configuration)")
     else:
         rep.count(f"{label} NO not proved by the model")
     return got["status"]

@@ -577,3 +577,21 @@ def continuous_free_two(model):
         if not any(_inside(d, iv) for iv in bad):
             return {qa: Fraction(0), qb: d}
     return None
+
+
+def final_collides(model):
+    """Does the configuration after every operation (p = 1 for all) hold an
+    overlap or a broken cycle? Then every schedule collides (the overlap
+    is open in time, so it begins before the end): a proof of NO for
+    Collision-free Schedule in both models."""
+    p = {q: Fraction(1) for q in model.couplings}
+    if _cycle_mismatch(model, p):
+        return True
+    boxes = _boxes_at(model, p)
+    names = list(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            x, y = boxes[a], boxes[b]
+            if max(x[0], y[0]) < min(x[1], y[1]) and max(x[2], y[2]) < min(x[3], y[3]):
+                return True
+    return False
