@@ -41,6 +41,11 @@ def test_model_reproduces_the_worked_cases():
     assert cm.simulate(m, {"e": 0, "g": Fraction(1, 2)}).time == Fraction(3, 4)
     assert cm.simulate(m, {"g": 0, "e": Fraction(1, 2)}).time == Fraction(3, 4)
     assert cm.brute_discrete(m)[0] is None and cm.continuous_free_two(m) is None
+    # both new nodes end in one cell (cases 1 and 5): every schedule collides
+    for name, ends_in_collision in (("model-case1-two-growths.grid", True), ("model-case2-order-gadget.grid", False),
+                                     ("model-case4-contract-then-grow.grid", False),
+                                     ("model-case5-push-into-growth.grid", True)):
+        assert cm.final_collides(model_of(name)) == ends_in_collision, name
 
 
 def test_model_sees_a_broken_cycle():
