@@ -31,21 +31,17 @@ IncrementalSat::~IncrementalSat() { impl_->solver.disconnect_learner(); }
 
 int IncrementalSat::new_var() { return ++vars_; }
 
-void IncrementalSat::add_clause(const std::vector<int>& lits) {
-  for (int l : lits) {
-    GRIDLOCK_REQUIRE(l != 0 && l <= vars_ && -l <= vars_, "IncrementalSat: literal out of range");
-    impl_->solver.add(l);
+void IncrementalSat::add_lits(const int* first, const int* last) {
+  for (const int* p = first; p != last; ++p) {
+    GRIDLOCK_REQUIRE(*p != 0 && *p <= vars_ && -*p <= vars_, "IncrementalSat: literal out of range");
+    impl_->solver.add(*p);
   }
   impl_->solver.add(0);
 }
 
-void IncrementalSat::add_clause(std::initializer_list<int> lits) {
-  for (int l : lits) {
-    GRIDLOCK_REQUIRE(l != 0 && l <= vars_ && -l <= vars_, "IncrementalSat: literal out of range");
-    impl_->solver.add(l);
-  }
-  impl_->solver.add(0);
-}
+void IncrementalSat::add_clause(const std::vector<int>& lits) { add_lits(lits.data(), lits.data() + lits.size()); }
+
+void IncrementalSat::add_clause(std::initializer_list<int> lits) { add_lits(lits.begin(), lits.end()); }
 
 Verdict IncrementalSat::solve(const std::function<bool(uint64_t)>& stop) {
   if (vars_ > 0) impl_->solver.reserve(vars_);

@@ -51,6 +51,8 @@ class IncrementalSat {
   void flush_proof();
 
  private:
+  // The clause [first, last) (each literal checked), then its 0. O(size).
+  void add_lits(const int* first, const int* last);
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int vars_ = 0;
