@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "common/assert.hpp"
@@ -89,16 +90,18 @@ MaybeError for_each_line(const std::string& path, IsData is_data, Fn fn) {
   return std::nullopt;
 }
 
-}  // namespace
-
-namespace {
-
 // An order line that names couplings only: with a coupling named "c" or
 // "s", such a line is part of the order, not a comment or a status line.
 bool names_couplings_only(const Instance& inst, const std::vector<std::string>& tok) {
   for (const std::string& w : tok)
     if (inst.find_coupling(w) == kNone) return false;
   return true;
+}
+
+// A start time as a times file writes it: an integer or a fraction a/b,
+// without '+' (one reading of numbers).
+std::optional<Rational> parse_time(const std::string& text) {
+  return text[0] == '+' ? std::nullopt : Rational::parse(text);
 }
 
 }  // namespace
@@ -111,7 +114,7 @@ MaybeError read_order_file(const Instance& inst, const std::string& path, std::v
   auto err = for_each_line(path, is_data,
                            [&](const std::string&, long no, std::vector<std::string>& tok) -> MaybeError {
                              last = no;
-                             if (tok[0] == "s" && !names_couplings_only(inst, tok)) return std::nullopt;
+                             if (tok[0] == "s" && !is_data(tok)) return std::nullopt;
                              size_t i = tok[0] == "v" ? 1 : 0;
                              for (; i < tok.size(); ++i) names.push_back(tok[i]);
                              return std::nullopt;
@@ -141,7 +144,7 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
   std::string shown = path == "-" ? "<stdin>" : path;
   // "c TIME" is the entry of a coupling named "c" when the instance has one.
   auto is_data = [&](const std::vector<std::string>& tok) {
-    return tok.size() == 2 && inst.find_coupling(tok[0]) != kNone && tok[1][0] != '+' && Rational::parse(tok[1]);
+    return tok.size() == 2 && inst.find_coupling(tok[0]) != kNone && parse_time(tok[1]).has_value();
   };
   auto err = for_each_line(
       path, is_data, [&](const std::string& name, long no, std::vector<std::string>& tok) -> MaybeError {
@@ -159,7 +162,7 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
           return Diagnostic{
               name, no,
               "coupling '" + tok[0] + "' given a time twice (first on line " + std::to_string(line_of[q]) + ")"};
-        auto t = tok[1][0] == '+' ? std::nullopt : Rational::parse(tok[1]);  // no '+': one reading of numbers
+        const std::optional<Rational> t = parse_time(tok[1]);
         if (!t) return Diagnostic{name, no, "bad time '" + tok[1] + "' (an integer or a fraction a/b)"};
         if (t->num() / t->den() > kMaxStartTime || t->num() / t->den() < -kMaxStartTime)
           return Diagnostic{name, no, "time out of range: '" + tok[1] + "' (|t| <= 2^30)"};
