@@ -259,13 +259,22 @@ def _engine(label, engine, flag="--engine"):
     return (f"{label} {engine}" if engine else label), ([flag, engine] if engine else [])
 
 
-def compare_solve_discrete(run, rep, path, model, free, engine):
-    label, extra = _engine("solve discrete", engine)
-    got = run.json("solve", path, "--timeout", "20", *extra)
+def _decide(run, rep, label, command, path, *args):
+    """One decision command (--json, 20 s limit), counted under label (and
+    its UNKNOWNs apart): the CLI's JSON answer."""
+    got = run.json(command, path, *args, "--timeout", "20")
     rep.count(label)
     if got["status"] == "UNKNOWN":
         rep.count(f"{label} UNKNOWN")
-    elif (got["status"] == "YES") != (free is not None):
+    return got
+
+
+def compare_solve_discrete(run, rep, path, model, free, engine):
+    label, extra = _engine("solve discrete", engine)
+    got = _decide(run, rep, label, "solve", path, *extra)
+    if got["status"] == "UNKNOWN":
+        return
+    if (got["status"] == "YES") != (free is not None):
         rep.disagree(path, label, f"CLI {got['status']} {got['witness']}; brute force free order: {free}")
     elif got["status"] == "YES":
         rep.count(f"witness {label}")
@@ -277,11 +286,10 @@ def compare_solve_discrete(run, rep, path, model, free, engine):
 def compare_collide(run, rep, path, model, time_model, mine, method):
     """mine: the model's exact answer (a colliding order / pair, or None)."""
     label, extra = _engine(f"collide {time_model}", method, "--method")
-    got = run.json("collide", path, "--model", time_model, "--timeout", "20", *extra)
-    rep.count(label)
+    got = _decide(run, rep, label, "collide", path, "--model", time_model, *extra)
     if got["status"] == "UNKNOWN":
-        rep.count(f"{label} UNKNOWN")
-    elif (got["status"] == "YES") != (mine is not None):
+        return
+    if (got["status"] == "YES") != (mine is not None):
         rep.disagree(path, label, f"CLI {got['status']} {got['witness']}; model: {mine}")
     elif got["status"] == "YES":
         rep.count(f"witness {label}")
@@ -295,12 +303,11 @@ def compare_collide(run, rep, path, model, time_model, mine, method):
 
 def compare_solve_continuous(run, rep, path, model, found, exact, horizontal, engine):
     label, extra = _engine("solve continuous", engine)
-    got = run.json("solve", path, "--model", "continuous", "--timeout", "20", *extra)
-    rep.count(label)
+    got = _decide(run, rep, label, "solve", path, "--model", "continuous", *extra)
     qs = model.couplings
     if got["status"] == "UNKNOWN":
-        rep.count(f"{label} UNKNOWN")
-    elif got["status"] == "YES":
+        return got["status"]
+    if got["status"] == "YES":
         rep.count(f"witness {label}")
         starts = {}
         for line in got["witness"]:
