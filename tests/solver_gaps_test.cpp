@@ -1,10 +1,13 @@
 // The linear-time continuous checker against the Simulator running every
 // coupling at once; the row order against a comparison sort; the collision
-// constraints against the Simulator on random orders.
+// constraints against the Simulator on random orders; the pair builder
+// against its per-face twin.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <numeric>
+#include <tuple>
 
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
@@ -12,6 +15,7 @@
 #include "solver/gaps.hpp"
 #include "solver/internal/constraints.hpp"
 #include "solver/internal/row_order.hpp"
+#include "support/reference_constraints.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
 
@@ -182,6 +186,126 @@ TEST(Constraints, ReplayAgreesWithSimulator) {
   }
   EXPECT_GT(collide, 0);
   EXPECT_GT(clean, 0);
+}
+
+// build_pair_constraints (one tree walk per pair, a box scan over sorted
+// cells, O(1) operation counts) gives exactly the constraints of its
+// per-face twin (every pair, a walk per face): the same pairs, forms, bases
+// and coefficients. Small random instances of every shape, and family
+// instances with long paths (sparse, path) so that the scan box and the
+// walks are large.
+TEST(Constraints, PairBuilderMatchesPerFaceTwin) {
+  const uint64_t base = test::base_seed(9400);
+  int compared = 0, constraints = 0;
+  for (int i = 0; i < test::scaled(2000); ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    Rng rng(seed * 131 + 9);
+    Instance inst;
+    if (i % 4 == 3) {
+      RandomFamilyParams f;
+      f.family = static_cast<ShapeFamily>(rng.below(5));
+      f.couplings = 5 + static_cast<uint32_t>(rng.below(40));
+      f.max_coupling = 1 + static_cast<uint32_t>(rng.below(3));
+      inst = random_family_instance(f, seed);
+    } else {
+      RandomInstanceParams p;
+      p.nodes = 2 + static_cast<uint32_t>(rng.below(40));
+      p.ops = static_cast<uint32_t>(rng.below(p.nodes / 2 + 2));
+      p.max_coupling = 1 + static_cast<uint32_t>(rng.below(4));
+      p.extra_edge_percent = rng.below(3) == 0 ? static_cast<uint32_t>(rng.below(60)) : 0;
+      p.path_shape = rng.below(4) == 0;
+      p.spread = static_cast<uint32_t>(rng.below(3));
+      inst = random_instance(p, seed);
+    }
+    const FaceNets faces = FaceNets::build(inst);
+    if (std::any_of(faces.coupling_breaks_cycle.begin(), faces.coupling_breaks_cycle.end(), [](char b) { return b; }))
+      continue;  // the builder requires it
+    const SpanningTree tree = SpanningTree::build(inst);
+    const ConstraintSystem fast = build_pair_constraints(inst, tree);
+    const ConstraintSystem twin = test::reference_pair_constraints(inst, tree);
+    std::map<std::pair<uint32_t, uint32_t>, const CollisionConstraint*> by_pair;
+    for (const CollisionConstraint& c : fast.constraints) {
+      ASSERT_LT(c.region_a, c.region_b) << "seed " << seed;
+      ASSERT_TRUE(by_pair.emplace(std::make_pair(c.region_a, c.region_b), &c).second) << "seed " << seed;
+    }
+    ASSERT_EQ(fast.constraints.size(), twin.constraints.size()) << "seed " << seed;
+    for (const CollisionConstraint& t : twin.constraints) {
+      auto it = by_pair.find({t.region_a, t.region_b});
+      ASSERT_NE(it, by_pair.end()) << "seed " << seed << ": pair " << t.region_a << "," << t.region_b << " missing";
+      const CollisionConstraint& c = *it->second;
+      EXPECT_EQ(std::tie(c.num_forms, c.form_index, c.base, c.rel, c.coef),
+                std::tie(t.num_forms, t.form_index, t.base, t.rel, t.coef))
+          << "seed " << seed << ": pair " << t.region_a << "," << t.region_b;
+    }
+    ++compared;
+    constraints += static_cast<int>(twin.constraints.size());
+  }
+  EXPECT_GT(compared, test::scaled(2000) / 2);
+  EXPECT_GT(constraints, compared);
+  std::printf("[ twin ] %d instances, %d constraints (seed %llu)\n", compared, constraints,
+              static_cast<unsigned long long>(base));
+}
+
+// With stop_at_refuting the builder returns a prefix of the full system
+// (the same constraints in the same order) ending at a constraint that only
+// one coupling moves and whose step collides from its base values; without
+// such a constraint, the whole system. Every stopped instance is NO by the
+// brute-force twin (every order through the simulator) when it is small
+// enough, and by the states engine on the full system otherwise.
+TEST(Constraints, StopAtRefutingIsAPrefixThatRefutes) {
+  const uint64_t base = test::base_seed(9600);
+  int stopped = 0, whole = 0, by_twin = 0;
+  for (int i = 0; i < test::scaled(1500); ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    Rng rng(seed * 17 + 3);
+    RandomInstanceParams p;
+    p.nodes = 3 + static_cast<uint32_t>(rng.below(40));
+    p.ops = 1 + static_cast<uint32_t>(rng.below(p.nodes / 2 + 2));
+    p.max_coupling = 1 + static_cast<uint32_t>(rng.below(3));
+    p.extra_edge_percent = rng.below(3) == 0 ? static_cast<uint32_t>(rng.below(60)) : 0;
+    p.spread = static_cast<uint32_t>(rng.below(3));
+    const Instance inst = random_instance(p, seed);
+    const FaceNets faces = FaceNets::build(inst);
+    if (std::any_of(faces.coupling_breaks_cycle.begin(), faces.coupling_breaks_cycle.end(), [](char b) { return b; }))
+      continue;
+    const SpanningTree tree = SpanningTree::build(inst);
+    const ConstraintSystem full = build_pair_constraints(inst, tree);
+    const ConstraintSystem stop = build_pair_constraints(inst, tree, nullptr, true);
+    EXPECT_EQ(full.refuting, kNone);
+    ASSERT_LE(stop.constraints.size(), full.constraints.size()) << "seed " << seed;
+    for (size_t k = 0; k < stop.constraints.size(); ++k) {
+      const CollisionConstraint& a = stop.constraints[k];
+      const CollisionConstraint& b = full.constraints[k];
+      ASSERT_EQ(std::tie(a.region_a, a.region_b, a.base, a.rel, a.coef, a.form_index),
+                std::tie(b.region_a, b.region_b, b.base, b.rel, b.coef, b.form_index))
+          << "seed " << seed << " constraint " << k;
+    }
+    if (stop.refuting == kNone) {
+      EXPECT_EQ(stop.constraints.size(), full.constraints.size()) << "seed " << seed;
+      ++whole;
+      continue;
+    }
+    ++stopped;
+    ASSERT_EQ(stop.refuting + size_t{1}, stop.constraints.size()) << "seed " << seed;
+    const CollisionConstraint& r = stop.constraints[stop.refuting];
+    ASSERT_EQ(r.rel.size(), 1u) << "seed " << seed;
+    EXPECT_TRUE(step_collides(r.base.data(), r.coef_of(0), r.num_forms)) << "seed " << seed;
+    // No earlier constraint qualifies (the stop is at the first).
+    for (size_t k = 0; k < stop.refuting; ++k) {
+      const CollisionConstraint& c = stop.constraints[k];
+      EXPECT_FALSE(c.rel.size() == 1 && step_collides(c.base.data(), c.coef_of(0), c.num_forms))
+          << "seed " << seed << " constraint " << k;
+    }
+    if (inst.couplings().size() <= 6) {
+      EXPECT_FALSE(test::reference_solve(inst).has_value()) << "seed " << seed;
+      ++by_twin;
+    }
+  }
+  EXPECT_GT(stopped, 50);
+  EXPECT_GT(whole, 50);
+  EXPECT_GT(by_twin, 20);
+  std::printf("[ stop ] %d stopped (%d checked by every order), %d whole (seed %llu)\n", stopped, by_twin, whole,
+              static_cast<unsigned long long>(base));
 }
 
 }  // namespace

@@ -57,6 +57,9 @@ struct ConstraintSystem {
   // Per coupling: (constraint index, index j of the coupling in its rel).
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> of_coupling;
   uint64_t candidate_pairs = 0;  // pairs examined by the builder (statistics)
+  // The last constraint when the builder stopped at one that alone makes
+  // every schedule collide (see build_pair_constraints); kNone otherwise.
+  uint32_t refuting = kNone;
 
   size_t total_forms() const;
   // Fills of_coupling from constraints. O(total size).
@@ -87,10 +90,21 @@ ConstraintSystem build_gap_constraints(const PreparedInstance& prep, const Deadl
 // path walks of the candidates: quadratic in the worst case (long rows of
 // operations), near linear when operations are sparse.
 // deadline (optional) is checked every few pairs: LimitReached ends the build.
+//
+// stop_at_refuting: stop at the first constraint that alone refutes every
+// schedule, in both models: a pair that only one coupling q moves (rel =
+// {q}) and whose forms collide during q's step from their base values
+// (step_collides(base, coef)); whenever q runs the pair sees nothing else,
+// so it collides. The system then holds the constraints built so far and
+// refuting is the last one's index: a subset of the full system whose
+// every schedule collides, so engines answer NO on it (and NO certificates
+// name only its constraints). Random instances with no order are mostly of
+// this kind; the full build can take minutes and gigabytes.
 ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree,
-                                        const Deadline* deadline = nullptr);
+                                        const Deadline* deadline = nullptr, bool stop_at_refuting = false);
 // The same from prepared tables (no tree or regions rebuilt).
-ConstraintSystem build_pair_constraints(const PreparedInstance& prep, const Deadline* deadline = nullptr);
+ConstraintSystem build_pair_constraints(const PreparedInstance& prep, const Deadline* deadline = nullptr,
+                                        bool stop_at_refuting = false);
 
 // "gap between (1,0) and (3,0)" / "node (1,1) and node inserted by a".
 std::string constraint_label(const Instance& inst, const Regions& regions, const CollisionConstraint& c);
