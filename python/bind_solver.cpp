@@ -68,6 +68,11 @@ py::dict solve(const Instance& inst, const std::string& model, const std::string
   d["model"] = model;
   d["certificate"] = py::none();
   d["certificate_note"] = py::none();
+  // NO because one coupling alone moves a pair into a collision (both models).
+  auto lone = [&](CouplingId q, const std::string& pair) {
+    d["lone_collider"] = q != kNone ? py::object(py::str(inst.couplings()[q].name)) : py::object(py::none());
+    d["lone_pair"] = q != kNone ? py::object(py::str(pair)) : py::object(py::none());
+  };
   if (model == "continuous") {
     const ContinuousEngine ce = continuous_engine_arg(engine);
     CertifiedContinuous cc;
@@ -78,6 +83,7 @@ py::dict solve(const Instance& inst, const std::string& model, const std::string
     d["engine"] = r.stats.engine;
     d["times"] = r.status == Verdict::Yes ? py::object(times_dict(inst, r.schedule)) : py::object(py::none());
     d["stats"] = stats_dict(r.stats);
+    lone(r.lone_collider, r.lone_pair);
     if (certificate && r.status == Verdict::No) {
       if (!cc.certificate.empty()) d["certificate"] = cc.certificate;
       else d["certificate_note"] = cc.why_none;
@@ -98,6 +104,7 @@ py::dict solve(const Instance& inst, const std::string& model, const std::string
   d["stats"] = stats_dict(r.stats);
   d["cycle_breaker"] = r.cycle_breaker != kNone ? py::object(py::str(inst.couplings()[r.cycle_breaker].name))
                                                 : py::object(py::none());
+  lone(r.lone_collider, r.lone_pair);
   if (certificate && r.status == Verdict::No) {
     if (!cs.certificate.empty()) d["certificate"] = cs.certificate;
     else d["certificate_note"] = cs.why_none;

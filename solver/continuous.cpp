@@ -591,8 +591,27 @@ Verdict solve_general_within(GeneralRun& run) {
   const FaceNets faces = FaceNets::build(run.inst);
   run.budget.check();
   const SpanningTree tree = SpanningTree::build(run.inst);
-  const ConstraintSystem sys = build_pair_constraints(run.inst, tree, &run.budget.deadline());
+  const ConstraintSystem sys = build_pair_constraints(run.inst, tree, &run.budget.deadline(),
+                                                      /*stop_at_refuting=*/true);
   run.res.stats.constraints = sys.constraints.size() + faces.faces.size();
+  if (sys.refuting != kNone) {
+    // A pair only one coupling moves collides during its run whatever the
+    // start times: NO, proved by that pair's interval clause alone (in a
+    // collision-free schedule positions are the tree's, docs/certificates.md).
+    const CollisionConstraint& c = sys.constraints[sys.refuting];
+    run.res.lone_collider = c.rel[0];
+    run.res.lone_pair = constraint_label(run.inst, Regions::build(run.inst), c);
+    if (run.proof) {
+      *run.proof = {};
+      ContinuousProof::Clause cl;
+      cl.reason = ContinuousProof::Reason::Interval;
+      cl.region_a = c.region_a, cl.region_b = c.region_b;
+      cl.movers = c.rel;
+      run.proof->clauses.push_back(std::move(cl));
+      run.proof->complete = true;
+    }
+    return Verdict::No;
+  }
   const std::vector<Component> comps = components_of(k, sys, faces);
   run.res.schedule.start.assign(k, Rational(0));
   z3::context ctx;

@@ -89,6 +89,12 @@ struct ContinuousResult {
   Verdict status = Verdict::Unknown;
   Schedule schedule;  // Yes: a start time per coupling (exact rationals), accepted by the Simulator
   SolveStats stats;   // engine name, counts, seconds
+  // No because this coupling alone moves two regions that collide during
+  // its run, whatever the start times (found while building the pair
+  // constraints; no search runs, stats.engine "trivial"): its coupling and
+  // "node (1,2) and node inserted by a".
+  CouplingId lone_collider = kNone;
+  std::string lone_pair;
 };
 
 // Decides Continuous Collision-free Schedule exactly (any instance), or

@@ -111,7 +111,7 @@ std::string pairs_certificate(const PreparedInstance& prep, const SolveOptions& 
   proof.drat = drat.get();
   SearchOutcome out;
   try {
-    const ConstraintSystem sys = build_pair_constraints(prep, &budget.deadline());
+    const ConstraintSystem sys = build_pair_constraints(prep, &budget.deadline(), /*stop_at_refuting=*/true);
     out = search_pairs_proof(sys, budget, st, proof);
     if (out.status != Verdict::No)
       throw std::logic_error("NO certificate: the pairs engine in proof mode finds an order");

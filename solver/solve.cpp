@@ -10,6 +10,43 @@
 
 namespace gridlock {
 
+namespace {
+
+// Never a silent wrong answer: a YES order must be a permutation that the
+// constraint system and the exact simulator both accept (else logic_error).
+// A limit during the simulation turns the answer into Unknown.
+void confirm_yes(const PreparedInstance& prep, const ConstraintSystem& sys, SearchBudget& budget, Simulator* replay,
+                 SolveResult& res) {
+  const Instance& inst = prep.inst;
+  std::vector<char> seen(inst.couplings().size(), 0);
+  if (res.order.size() != seen.size()) throw std::logic_error("solver returned an incomplete order");
+  for (CouplingId q : res.order) {
+    if (q >= seen.size() || seen[q]) throw std::logic_error("solver returned an order that is not a permutation");
+    seen[q] = 1;
+  }
+  if (replay_order(sys, res.order).failed_step != res.order.size())
+    throw std::logic_error("solver returned an order its own constraints reject");
+  std::optional<Simulator> own;
+  if (!replay || &replay->prepared() != &prep) replay = &own.emplace(prep);
+  Simulator& sim = *replay;
+  sim.set_deadline(&budget.deadline());  // --timeout covers the final check too
+  SimResult check;
+  try {
+    check = sim.run_order(res.order);
+  } catch (const LimitReached&) {
+    sim.set_deadline(nullptr);
+    res.status = Verdict::Unknown;
+    res.order.clear();
+    return;
+  }
+  sim.set_deadline(nullptr);
+  if (check.collision)
+    throw std::logic_error("solver returned an order that collides in the simulator: " +
+                           describe(inst, sim.regions(), *check.collision));
+}
+
+}  // namespace
+
 SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
   const PreparedInstance prep(inst);
   return solve_discrete(prep, opt);
@@ -46,8 +83,17 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
   try {
     budget.check();
     sys = horizontal ? build_gap_constraints(prep, &budget.deadline())
-                     : build_pair_constraints(prep, &budget.deadline());
+                     : build_pair_constraints(prep, &budget.deadline(), /*stop_at_refuting=*/true);
     res.stats.constraints = sys.constraints.size();
+    if (sys.refuting != kNone) {
+      const CollisionConstraint& c = sys.constraints[sys.refuting];
+      res.status = Verdict::No;
+      res.lone_collider = c.rel[0];
+      res.lone_pair = constraint_label(inst, prep.regions, c);
+      res.stats.seconds = budget.elapsed();
+      budget.clear_progress();
+      return res;
+    }
     SearchOutcome out = engine == Engine::Precedence ? search_precedence(sys, budget, res.stats, opt.precedence_hooks)
                         : engine == Engine::Sat      ? search_sat(sys, budget, res.stats)
                         : engine == Engine::Pairs    ? search_pairs(sys, budget, res.stats)
@@ -60,36 +106,7 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
   }
   budget.clear_progress();
 
-  if (res.status == Verdict::Yes) {
-    // Never a silent wrong answer: the order must be a permutation that the
-    // constraint system and the exact simulator both accept.
-    std::vector<char> seen(inst.couplings().size(), 0);
-    if (res.order.size() != seen.size()) throw std::logic_error("solver returned an incomplete order");
-    for (CouplingId q : res.order) {
-      if (q >= seen.size() || seen[q]) throw std::logic_error("solver returned an order that is not a permutation");
-      seen[q] = 1;
-    }
-    if (replay_order(sys, res.order).failed_step != res.order.size())
-      throw std::logic_error("solver returned an order its own constraints reject");
-    std::optional<Simulator> own;
-    if (!replay || &replay->prepared() != &prep) replay = &own.emplace(prep);
-    Simulator& sim = *replay;
-    sim.set_deadline(&budget.deadline());  // --timeout covers the final check too
-    SimResult check;
-    try {
-      check = sim.run_order(res.order);
-    } catch (const LimitReached&) {
-      sim.set_deadline(nullptr);
-      res.status = Verdict::Unknown;
-      res.order.clear();
-      res.stats.seconds = budget.elapsed();
-      return res;
-    }
-    sim.set_deadline(nullptr);
-    if (check.collision)
-      throw std::logic_error("solver returned an order that collides in the simulator: " +
-                             describe(inst, sim.regions(), *check.collision));
-  }
+  if (res.status == Verdict::Yes) confirm_yes(prep, sys, budget, replay, res);
   res.stats.seconds = budget.elapsed();
   return res;
 }

@@ -95,6 +95,11 @@ struct SolveResult {
   std::vector<CouplingId> order;  // Yes: every coupling once, accepted by the Simulator
   SolveStats stats;
   CouplingId cycle_breaker = kNone;  // No because this coupling breaks a cycle
+  // No because this coupling alone moves two regions that collide during
+  // its step, whatever ran before (found while building pair constraints;
+  // no search runs): its coupling and "node (1,2) and node inserted by a".
+  CouplingId lone_collider = kNone;
+  std::string lone_pair;
 };
 
 // Decides Discrete Collision-free Schedule exactly, or returns Unknown when a

@@ -58,6 +58,36 @@ TEST(SolveCommand, CycleBreakerIsNamed) {
   EXPECT_EQ(j["cycle_breaker"], "a");
 }
 
+// A random shape of hundreds of couplings that one coupling alone makes
+// collide: both models name the coupling and the pair, stop building there
+// (a handful of constraints, not the whole system), and write a NO
+// certificate that the independent checker accepts.
+TEST(SolveCommand, LoneColliderIsNamedAndCertified) {
+  const std::string dir = test::temp_dir();
+  const std::string grid = dir + "/tree.grid";
+  ASSERT_EQ(run_gridlock({"random", "--family", "tree", "--couplings", "400", "--seed", "2", "-o", grid}).exit_code, 0);
+  for (const char* model : {"discrete", "continuous"}) {
+    auto r = run_gridlock({"solve", grid, "--model", model, "--json"});
+    ASSERT_EQ(r.exit_code, 20) << model << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["status"], "NO");
+    ASSERT_TRUE(j.contains("lone_collider")) << model << r.out;
+    const std::string q = j["lone_collider"]["coupling"], pair = j["lone_collider"]["pair"];
+    EXPECT_FALSE(q.empty());
+    EXPECT_NE(pair.find(" and "), std::string::npos) << pair;
+    EXPECT_LT(j["stats"]["constraints"].get<uint64_t>(), 1000u) << model;
+    auto t = run_gridlock({"solve", grid, "--model", model});
+    std::string said = "c coupling " + q;
+    said += " alone moves " + pair;
+    said += " against each other: they collide whenever it runs";
+    EXPECT_TRUE(has_line(t.out, said)) << t.out;
+    const std::string cert = dir + "/" + model + ".nocert";
+    ASSERT_EQ(run_gridlock({"solve", grid, "--model", model, "--certificate", cert}).exit_code, 20);
+    auto c = run_gridlock({"certify", grid, cert, "--model", model});
+    EXPECT_EQ(c.exit_code, 20) << model << c.out << c.err;
+  }
+}
+
 TEST(SolveCommand, JsonAndLimits) {
   auto r = run_gridlock({"solve", kExamples + "model-case2-order-gadget.grid", "--json"});
   EXPECT_EQ(r.exit_code, 10);

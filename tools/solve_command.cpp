@@ -58,6 +58,10 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   const SolveStats& st = r.stats;
   if (st.engine == "gaps") {
     ans.comment("horizontal-only: linear gap check (" + std::to_string(st.constraints) + " gaps and cycles)");
+  } else if (r.lone_collider != kNone) {
+    ans.comment("coupling " + inst.couplings()[r.lone_collider].name + " alone moves " + r.lone_pair +
+                " against each other: they collide whenever it runs");
+    ans.comment("found after " + std::to_string(st.constraints) + " pair and cycle constraints; no search needed");
   } else {
     ans.comment("engine " + st.engine + " on " + std::to_string(st.constraints) + " pair and cycle constraints");
     ans.comment("components settled by a cheap test " + std::to_string(st.safe_moves) + ", searched " +
@@ -75,6 +79,8 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   d["model"] = "continuous";
   d["engine"] = st.engine;
   d["stats"] = stats_json(st);
+  if (r.lone_collider != kNone)
+    d["lone_collider"] = {{"coupling", inst.couplings()[r.lone_collider].name}, {"pair", r.lone_pair}};
   return ans.finish(r.status);
 }
 
@@ -100,6 +106,10 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
   if (r.cycle_breaker != kNone) {
     ans.comment("coupling " + inst.couplings()[r.cycle_breaker].name +
                 " moves the shape unevenly around a cycle: it collides whenever it runs");
+  } else if (r.lone_collider != kNone) {
+    ans.comment("coupling " + inst.couplings()[r.lone_collider].name + " alone moves " + r.lone_pair +
+                " against each other: they collide whenever it runs");
+    ans.comment("found after " + std::to_string(st.constraints) + " collision constraints; no search needed");
   } else {
     ans.comment("search " + st.engine + " on " + std::to_string(st.constraints) + " collision constraints");
     ans.comment("states " + std::to_string(st.states) + ", refuted " + std::to_string(st.refuted) + ", decisions " +
@@ -116,6 +126,8 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
   d["model"] = "discrete";
   d["stats"] = stats_json(st);
   if (r.cycle_breaker != kNone) d["cycle_breaker"] = inst.couplings()[r.cycle_breaker].name;
+  if (r.lone_collider != kNone)
+    d["lone_collider"] = {{"coupling", inst.couplings()[r.lone_collider].name}, {"pair", r.lone_pair}};
   return ans.finish(r.status);
 }
 

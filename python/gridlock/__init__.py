@@ -65,6 +65,8 @@ class SolveResult:
     times: Optional[Times] = None      # continuous YES: a start time per coupling
     stats: Dict[str, float] = field(default_factory=dict)
     cycle_breaker: Optional[str] = None  # discrete NO because this coupling breaks a cycle
+    lone_collider: Optional[str] = None  # NO because this coupling alone moves lone_pair into a collision
+    lone_pair: Optional[str] = None      # e.g. "node (1,2) and node inserted by a"
     certificate: Optional[str] = None       # NO with certificate=True: the text certify() checks
     certificate_note: Optional[str] = None  # NO with certificate=True but none written: why
 

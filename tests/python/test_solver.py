@@ -27,6 +27,8 @@ def check_solve(inst, path, model="discrete", engine="auto"):
     assert got.status == want["status"] and got.engine == want["engine"] and got.model == want["model"]
     for key in ("states", "refuted", "decisions", "constraints"):
         assert got.stats[key] == want["stats"][key], key
+    lone = want.get("lone_collider")
+    assert (got.lone_collider, got.lone_pair) == ((lone["coupling"], lone["pair"]) if lone else (None, None))
     if got.status != "YES":
         assert got.order is None and got.times is None
         return got
@@ -43,6 +45,20 @@ def check_solve(inst, path, model="discrete", engine="auto"):
 @pytest.mark.parametrize("model", ["discrete", "continuous"])
 def test_solve_examples_equal_cli(instance_path, model):
     check_solve(gridlock.Instance.read(str(instance_path)), instance_path, model)
+
+
+@pytest.mark.parametrize("model", ["discrete", "continuous"])
+def test_lone_collider_equals_cli_and_is_certified(tmp_path, model):
+    """A random shape of 300 couplings is NO because one coupling alone
+    moves a pair into a collision: named like the CLI, and certified."""
+    path = str(tmp_path / "tree.grid")
+    cli("random", "--family", "tree", "--couplings", "300", "--seed", "1", "-o", path, expect=(0,))
+    inst = gridlock.Instance.read(path)
+    got = check_solve(inst, path, model)
+    assert got.status == "NO" and got.lone_collider in inst.couplings
+    cert = gridlock.solve(inst, model=model, certificate=True)
+    assert cert.lone_collider == got.lone_collider
+    assert gridlock.certify(inst, cert.certificate, model=model).proved
 
 
 def check_collide(inst, path, model):
