@@ -16,6 +16,12 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
 }
 
 SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay) {
+  std::optional<ConstraintSystem> kept;
+  return solve_discrete_kept(prep, opt, replay, kept);
+}
+
+SolveResult solve_discrete_kept(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay,
+                                std::optional<ConstraintSystem>& kept) {
   const Instance& inst = prep.inst;
   SearchBudget budget(opt);
   SolveResult res;
@@ -42,11 +48,14 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
                      : engine == Engine::Sat      ? "sat"
                      : engine == Engine::Pairs    ? "pairs"
                                                   : "states";
-  ConstraintSystem sys;
+  static const ConstraintSystem kNoSystem;
+  const ConstraintSystem* built = kept ? &*kept : &kNoSystem;  // replay_order below reads it
   try {
     budget.check();
-    sys = horizontal ? build_gap_constraints(prep, &budget.deadline())
-                     : build_pair_constraints(prep, &budget.deadline());
+    if (!kept)
+      built = &kept.emplace(horizontal ? build_gap_constraints(prep, &budget.deadline())
+                                       : build_pair_constraints(prep, &budget.deadline()));
+    const ConstraintSystem& sys = *built;
     res.stats.constraints = sys.constraints.size();
     SearchOutcome out = engine == Engine::Precedence ? search_precedence(sys, budget, res.stats, opt.precedence_hooks)
                         : engine == Engine::Sat      ? search_sat(sys, budget, res.stats)
@@ -69,7 +78,7 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
       if (q >= seen.size() || seen[q]) throw std::logic_error("solver returned an order that is not a permutation");
       seen[q] = 1;
     }
-    if (replay_order(sys, res.order).failed_step != res.order.size())
+    if (replay_order(*built, res.order).failed_step != res.order.size())
       throw std::logic_error("solver returned an order its own constraints reject");
     std::optional<Simulator> own;
     if (!replay || &replay->prepared() != &prep) replay = &own.emplace(prep);
