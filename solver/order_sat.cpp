@@ -133,15 +133,11 @@ bool OrderSat::add_closure_clauses(const std::vector<std::pair<CouplingId, Coupl
     if (r(p.lo, p.hi)) sat_.add_clause({p.var});
     if (r(p.hi, p.lo)) sat_.add_clause({-p.var});
   }
-  // Where c1 and c2 are a pair themselves, the unit above and the triangle
-  // clauses on {x, c1, c2} (added next) imply "x before c1 -> x before c2"
-  // by unit propagation at the root, so the clause is left out: it only
-  // cost CaDiCaL an add and a watch.
   for (CouplingId x = 0; x < k_; ++x) {
     if ((x & 1023) == 0) budget_.check(st_);
     for (auto [c1, l1] : partners.of(x))
       for (auto [c2, l2] : partners.of(x))
-        if (c1 != c2 && r(c1, c2) && !has_pair(c1, c2)) sat_.add_clause({-l1, l2});
+        if (c1 != c2 && r(c1, c2)) sat_.add_clause({-l1, l2});
   }
   return true;
 }

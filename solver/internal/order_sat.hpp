@@ -50,8 +50,7 @@ class OrderSat {
   // an engine needs exists: the transitive closure R of `forced` (relations
   // (a, b) = "a before b" true in every solution; bit matrix, skipped above
   // kClosureLimit couplings) as units on the pairs it decides and, for a
-  // coupling x and partners c1 R c2 that are no pair themselves, "x before
-  // c1 -> x before c2" (for a pair the unit and the triangle imply it); and
+  // coupling x and partners c1 R c2, "x before c1 -> x before c2"; and
   // transitivity on every triangle of pairs. False iff `forced` is cyclic
   // (then no order exists). O(k^2 / 64 * |forced| + sum_x deg(x)^2).
   bool add_order_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced);
