@@ -1,6 +1,7 @@
 #include "gadgets/internal/canvas.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace gridlock {
 
@@ -26,8 +27,8 @@ void Canvas::any_expansion(const std::string& name, Vec2 u, Dir d) {
   ops_.push_back(Op{name, u, d});
 }
 
-void Canvas::couple(const std::string& name, const std::vector<std::string>& ops) {
-  couplings_.emplace_back(name, ops);
+void Canvas::couple(const std::string& name, std::vector<std::string> ops) {
+  couplings_.emplace_back(name, std::move(ops));
 }
 
 Instance Canvas::build() const {

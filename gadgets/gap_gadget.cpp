@@ -52,6 +52,7 @@ GadgetPlacement place_gap_gadget(Canvas& canvas, int64_t row, const GapGadgetSpe
   p.attach_row = row;
   GapSpec g;
   g.size = spec.gap;
+  g.terms.reserve(spec.widen.size() + spec.narrow.size());
   if (!spec.detach_widening)
     for (const auto& w : spec.widen) g.terms.push_back({w, +1});
   for (const auto& n : spec.narrow) g.terms.push_back({n, -1});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 
 #include "common/assert.hpp"
 #include "gadgets/internal/canvas.hpp"
@@ -44,7 +45,7 @@ struct CouplingPlan {
   std::vector<size_t> c_true, c_false, c_y, c_z, c_u;  // by variable - 1, by clause
   size_t add(const std::string& name) {
     names.push_back(name);
-    ops.emplace_back();
+    ops.emplace_back().reserve(3);  // one gadget operation and two order links: one allocation
     return names.size() - 1;
   }
 };
@@ -52,6 +53,8 @@ struct CouplingPlan {
 // The empty couplings of a formula of n variables and m clauses.
 CouplingPlan plan_couplings(int n, size_t m) {
   CouplingPlan cp;
+  cp.names.reserve(4 * static_cast<size_t>(n) + m);
+  cp.ops.reserve(4 * static_cast<size_t>(n) + m);
   cp.c_true.resize(static_cast<size_t>(n)), cp.c_false = cp.c_y = cp.c_z = cp.c_true, cp.c_u.resize(m);
   for (int v = 1; v <= n; ++v) {
     auto i = static_cast<size_t>(v - 1);
@@ -71,13 +74,13 @@ struct GadgetStack {
   Canvas& canvas;
   std::vector<GadgetPlacement>& gadgets;
   int64_t row = 0;
-  void place(const GadgetPlacement& p) {
+  void place(GadgetPlacement p) {  // taken by value: the contract's names are moved, not copied
     // Arm from the spine to the attach node.
     canvas.node({-1, p.attach_row});
     canvas.edge({kSpineX, p.attach_row}, {-1, p.attach_row});
     canvas.edge({-1, p.attach_row}, {0, p.attach_row});
     row = p.top_row + 2;  // one empty row between gadgets
-    gadgets.push_back(p);
+    gadgets.push_back(std::move(p));
   }
 };
 
@@ -188,6 +191,9 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation, TimeModel m
   out.num_clauses = m;
   out.model = model;
   CouplingPlan cp = plan_couplings(n, m);
+  out.gadgets.reserve(3 * static_cast<size_t>(n) + 2 * m);  // n + m gadgets and 2n + m - 1 links
+  // A tree: as many edges (plain and expansions) as nodes, less one.
+  canvas.reserve(static_cast<size_t>(compiled_node_count(f, model)));
   GadgetStack stack{canvas, out.gadgets};
   place_variable_gadgets(stack, cp, n, mutation);
   place_clause_gadgets(stack, cp, f, mutation);
@@ -199,7 +205,7 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation, TimeModel m
   canvas.path({kSpineX, 0}, {kSpineX, top});
   canvas.anchor({kSpineX, 0});
   for (size_t q = 0; q < cp.names.size(); ++q)
-    if (!cp.ops[q].empty()) canvas.couple(cp.names[q], cp.ops[q]);
+    if (!cp.ops[q].empty()) canvas.couple(cp.names[q], std::move(cp.ops[q]));  // cp.ops is not read again
 
   out.instance = canvas.build();
   const Instance& inst = out.instance;

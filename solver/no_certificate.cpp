@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "cnf/internal/incremental_sat.hpp"
@@ -208,13 +209,16 @@ std::string bounds_drat(const ContinuousProof& p, const Deadline& dl) {
 }
 
 // Runs the precedence engine with a log of its cycles and nogoods.
-SolveResult logged_precedence(const PreparedInstance& prep, SolveOptions opt, std::string& log, Simulator* replay) {
+// kept: the constraint system of an earlier engine on prep, or empty
+// (solve_discrete_kept, solver/internal/search.hpp).
+SolveResult logged_precedence(const PreparedInstance& prep, SolveOptions opt, std::string& log, Simulator* replay,
+                              std::optional<ConstraintSystem>& kept) {
   PrecedenceHooks hooks;
   hooks.on_learned = [&](const auto& lits) { append_lemma(log, 'l', prep.inst, lits); };
   hooks.on_cycle = [&](const auto& lits) { append_lemma(log, 'o', prep.inst, lits); };
   opt.engine = SolveOptions::Engine::Precedence;
   opt.precedence_hooks = &hooks;
-  return solve_discrete(prep, opt, replay);
+  return solve_discrete_kept(prep, opt, replay, kept);
 }
 
 }  // namespace
@@ -236,7 +240,8 @@ CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const Solv
   CertifiedSolve out;
   std::string log;
   const bool logged = horizontal && (opt.engine == Engine::Auto || opt.engine == Engine::Precedence);
-  out.result = logged ? logged_precedence(prep, opt, log, replay) : solve_discrete(prep, opt, replay);
+  std::optional<ConstraintSystem> kept;  // the gap constraints, built once for both engines
+  out.result = logged ? logged_precedence(prep, opt, log, replay, kept) : solve_discrete_kept(prep, opt, replay, kept);
   if (out.result.status != Verdict::No) return out;
   if (out.result.cycle_breaker != kNone) {
     out.certificate = header(inst, "discrete") + breaker_text(prep, out.result.cycle_breaker);
@@ -248,7 +253,7 @@ CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const Solv
     return out;
   }
   if (!logged) {
-    const SolveResult again = logged_precedence(prep, opt, log, replay);
+    const SolveResult again = logged_precedence(prep, opt, log, replay, kept);
     if (again.status == Verdict::Unknown) {
       out.why_none = "limit reached while the precedence engine wrote the certificate";
       return out;

@@ -92,10 +92,18 @@ bool OrderSat::at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t
 }
 
 bool OrderSat::add_order_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced) {
-  std::vector<std::vector<std::pair<CouplingId, int>>> partners(k_);  // (other, literal "x before other")
+  // Partners of each coupling as one flat list (a counting sort of the pair
+  // variables, in their creation order, as the per-coupling vectors were):
+  // two allocations instead of one vector per coupling.
+  Partners partners;
+  partners.first.assign(k_ + 1, 0);
+  for (const PairVar& p : pair_vars_) ++partners.first[p.lo + 1], ++partners.first[p.hi + 1];
+  for (size_t x = 0; x < k_; ++x) partners.first[x + 1] += partners.first[x];
+  partners.list.resize(partners.first[k_]);
+  std::vector<uint32_t> fill(partners.first.begin(), partners.first.end() - 1);
   for (const PairVar& p : pair_vars_) {
-    partners[p.lo].push_back({p.hi, p.var});
-    partners[p.hi].push_back({p.lo, -p.var});
+    partners.list[fill[p.lo]++] = {p.hi, p.var};
+    partners.list[fill[p.hi]++] = {p.lo, -p.var};
   }
   if (k_ <= kClosureLimit && !add_closure_clauses(forced, partners)) return false;
   add_triangle_clauses(partners);
@@ -103,7 +111,7 @@ bool OrderSat::add_order_clauses(const std::vector<std::pair<CouplingId, Couplin
 }
 
 bool OrderSat::add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced,
-                                   const std::vector<std::vector<std::pair<CouplingId, int>>>& partners) {
+                                   const Partners& partners) {
   const size_t words = (k_ + 63) / 64;
   const Digraph forced_graph = Digraph::from_edges(k_, forced);
   std::vector<CouplingId> topo;
@@ -127,19 +135,19 @@ bool OrderSat::add_closure_clauses(const std::vector<std::pair<CouplingId, Coupl
   }
   for (CouplingId x = 0; x < k_; ++x) {
     if ((x & 1023) == 0) budget_.check(st_);
-    for (auto [c1, l1] : partners[x])
-      for (auto [c2, l2] : partners[x])
+    for (auto [c1, l1] : partners.of(x))
+      for (auto [c2, l2] : partners.of(x))
         if (c1 != c2 && r(c1, c2)) sat_.add_clause({-l1, l2});
   }
   return true;
 }
 
-void OrderSat::add_triangle_clauses(const std::vector<std::vector<std::pair<CouplingId, int>>>& partners) {
+void OrderSat::add_triangle_clauses(const Partners& partners) {
   for (CouplingId x = 0; x < k_; ++x) {
     if ((x & 1023) == 0) budget_.check(st_);
-    for (auto [a, la] : partners[x]) {
+    for (auto [a, la] : partners.of(x)) {
       if (a < x) continue;
-      for (auto [c, lc] : partners[x]) {
+      for (auto [c, lc] : partners.of(x)) {
         if (c <= a) continue;
         const uint32_t ac = var_of_pair_.find(key(a, c));  // a < c
         if (ac == FlatMap64::kAbsent) continue;
@@ -254,8 +262,8 @@ void OrderSat::add_cycle_clauses(const Digraph& g, const StrongComponents& cc) {
 }
 
 bool encode_gap_constraint(const CollisionConstraint& c, OrderSat& os) {
-  std::vector<PrecedenceTerm> terms;
-  std::vector<std::pair<int, int64_t>> lits;
+  std::vector<PrecedenceTerm>& terms = os.terms_;
+  std::vector<std::pair<int, int64_t>>& lits = os.lits_;
   return for_each_gap_inequality(c, terms, [&](auto& ts, int64_t bound) {
     lits.clear();
     for (const PrecedenceTerm& x : ts) lits.push_back({os.before(x.first, x.second), x.weight});

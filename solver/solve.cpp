@@ -53,6 +53,12 @@ SolveResult solve_discrete(const Instance& inst, const SolveOptions& opt) {
 }
 
 SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay) {
+  std::optional<ConstraintSystem> kept;
+  return solve_discrete_kept(prep, opt, replay, kept);
+}
+
+SolveResult solve_discrete_kept(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay,
+                                std::optional<ConstraintSystem>& kept) {
   const Instance& inst = prep.inst;
   SearchBudget budget(opt);
   SolveResult res;
@@ -79,11 +85,14 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
                      : engine == Engine::Sat      ? "sat"
                      : engine == Engine::Pairs    ? "pairs"
                                                   : "states";
-  ConstraintSystem sys;
+  static const ConstraintSystem kNoSystem;
+  const ConstraintSystem* built = kept ? &*kept : &kNoSystem;  // replay_order below reads it
   try {
     budget.check();
-    sys = horizontal ? build_gap_constraints(prep, &budget.deadline())
-                     : build_pair_constraints(prep, &budget.deadline(), /*stop_at_refuting=*/true);
+    if (!kept)
+      built = &kept.emplace(horizontal ? build_gap_constraints(prep, &budget.deadline())
+                                       : build_pair_constraints(prep, &budget.deadline(), /*stop_at_refuting=*/true));
+    const ConstraintSystem& sys = *built;
     res.stats.constraints = sys.constraints.size();
     if (sys.refuting != kNone) {
       const CollisionConstraint& c = sys.constraints[sys.refuting];
@@ -106,7 +115,7 @@ SolveResult solve_discrete(const PreparedInstance& prep, const SolveOptions& opt
   }
   budget.clear_progress();
 
-  if (res.status == Verdict::Yes) confirm_yes(prep, sys, budget, replay, res);
+  if (res.status == Verdict::Yes) confirm_yes(prep, *built, budget, replay, res);
   res.stats.seconds = budget.elapsed();
   return res;
 }

@@ -32,12 +32,19 @@ class Canvas {
   // The same along any direction (the separation gadget's vertical lift).
   void any_expansion(const std::string& name, Vec2 u, Dir d);
   // Puts the operations named in ops into one coupling called name.
-  void couple(const std::string& name, const std::vector<std::string>& ops);
+  // ops is taken by value: a caller done with its list moves it in.
+  void couple(const std::string& name, std::vector<std::string> ops);
   void anchor(Vec2 c) {
     anchor_ = c;
     has_anchor_ = true;
   }
 
+  // Room for `nodes` nodes and as many edges (a tree drawing has one edge
+  // fewer), so drawing a compiled formula does not regrow them. O(nodes).
+  void reserve(size_t nodes) {
+    nodes_.reserve(nodes);
+    edges_.reserve(nodes);
+  }
   size_t num_nodes() const { return nodes_.size(); }
   size_t num_ops() const { return ops_.size(); }
 

@@ -16,12 +16,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "cnf/internal/incremental_sat.hpp"
 #include "common/internal/graph_order.hpp"
 #include "lattice/flat_map.hpp"
+#include "solver/internal/gap_inequalities.hpp"
 #include "solver/internal/search.hpp"
 
 namespace gridlock {
@@ -85,9 +87,17 @@ class OrderSat {
   };
   static uint64_t key(CouplingId a, CouplingId b) { return (uint64_t{a} << 32) | b; }
 
-  bool add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced,
-                           const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
-  void add_triangle_clauses(const std::vector<std::vector<std::pair<CouplingId, int>>>& partners);
+  // The pairs of each coupling x: list[first[x] .. first[x + 1]) holds
+  // (other, literal "x before other"), in pair creation order.
+  struct Partners {
+    std::vector<uint32_t> first;
+    std::vector<std::pair<CouplingId, int>> list;
+    std::span<const std::pair<CouplingId, int>> of(CouplingId x) const {
+      return {list.data() + first[x], list.data() + first[x + 1]};
+    }
+  };
+  bool add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced, const Partners& partners);
+  void add_triangle_clauses(const Partners& partners);
   bool order_of_model(std::vector<CouplingId>& out);
   // The orientation of the pairs in the model (common/internal/graph_order.hpp).
   Digraph model_orientation() const;
@@ -104,6 +114,10 @@ class OrderSat {
   // every gap: thousands per formula).
   std::vector<std::pair<int, int64_t>> kept_;
   std::vector<int> prev_, cur_, clause_;
+  // encode_gap_constraint's work vectors, kept likewise (one call per gap).
+  friend bool encode_gap_constraint(const CollisionConstraint& c, OrderSat& os);
+  std::vector<PrecedenceTerm> terms_;
+  std::vector<std::pair<int, int64_t>> lits_;
   std::vector<std::vector<int>>* cycle_log_ = nullptr;  // proof mode
   std::vector<uint32_t> pair_index_;                    // proof mode: variable -> pair_vars_ index + 1
   void add_cycle_clause(const std::vector<int>& c) {

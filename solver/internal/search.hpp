@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>  // std::FILE (PairsProof)
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "common/limits.hpp"
@@ -182,5 +183,15 @@ struct PairsProof {
 // too (no counters), no forced-closure clauses, every clause recorded in
 // proof. Same verdicts as search_pairs; somewhat slower.
 SearchOutcome search_pairs_proof(const ConstraintSystem& sys, SearchBudget& budget, SolveStats& st, PairsProof& proof);
+
+// solve_discrete (solver/solve.hpp) keeping its constraint system: when
+// `kept` holds one, it must be the one this prep builds (the same engine
+// family: gap constraints for a horizontal-only instance, pair constraints
+// otherwise) and is used as it is; when empty and the run builds one, it
+// is left there. So a second engine on the same instance (the precedence
+// engine writing a NO certificate's log after the SAT engine decided,
+// solver/no_certificate.cpp) does not build the same constraints again.
+SolveResult solve_discrete_kept(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay,
+                                std::optional<ConstraintSystem>& kept);
 
 }  // namespace gridlock
