@@ -15,10 +15,6 @@ const char* op_kind_name(OpKind k) {
   return "?";
 }
 
-uint64_t cell_key(Vec2 c) {
-  return (static_cast<uint64_t>(static_cast<uint32_t>(c.x)) << 32) | static_cast<uint32_t>(c.y);
-}
-
 bool valid_name(const std::string& s) {
   if (s.empty() || s.size() > 64 || s[0] == '-' || s[0] == '+') return false;
   for (char ch : s) {

@@ -102,7 +102,11 @@ class Instance {
   std::vector<OpId> op_of_node_;
 };
 
-uint64_t cell_key(Vec2 c);
+// The 64-bit key of a cell (x in the high half, y in the low half), for
+// hash tables. Inline: the simulator's broad phase takes one per cell query.
+inline uint64_t cell_key(Vec2 c) {
+  return (static_cast<uint64_t>(static_cast<uint32_t>(c.x)) << 32) | static_cast<uint32_t>(c.y);
+}
 
 // True iff s is a valid name for an operation or a coupling: 1 to 64
 // characters from [A-Za-z0-9_.:~+'-], not starting with '-' or '+'.

@@ -67,6 +67,13 @@ bool boxes_overlap(const std::array<int64_t, 4>& a, const std::array<int64_t, 4>
 // box filter) instead of sweeping cells.
 constexpr size_t kAllMovingPairs = 48;
 
+// The row sweep (Scratch::row_broad_phase) serves intervals in which at
+// least a quarter of the regions move, no face faster than this many cells
+// per unit of time: each swept box then spans at most 1 + kRowMaxSpeed
+// cells of its row, so a region meets O(kRowMaxSpeed) others in the sweep.
+// Faster faces (long rows of coupled expansions) keep the sub-step grid.
+constexpr int64_t kRowMaxSpeed = 4;
+
 }  // namespace
 
 namespace {
@@ -201,6 +208,7 @@ struct Simulator::Scratch {
   const PreparedInstance* prep = nullptr;
   const Deadline* deadline = nullptr;  // checked between intervals (Simulator::set_deadline)
   bool skip_rigid = true;              // Simulator::set_skip_rigid_pairs
+  bool row_sweep = true;               // Simulator::set_row_sweep
   CellLists initial_grid;              // every region at its base cell (independent of D)
   std::vector<uint64_t> initial_key;
   // The state of the sweep. Between runs every region is back at its base
@@ -242,6 +250,21 @@ struct Simulator::Scratch {
   // latest hit of each cell, and per hit its moving index and the previous hit.
   std::vector<uint32_t> hit_head, hit_index, hit_prev;
   std::vector<size_t> hit_cells;
+  // Rows (horizontal-only instances, rows_fixed): every region keeps the
+  // y-extent [y D, (y + 1) D] of its base row y for ever, so only regions of
+  // one row can overlap. row_sorted: the regions by (row, base x, id), built
+  // on first use; row_end: where each row's run in it ends. row_items: one interval's
+  // swept x-extents in that order, re-sorted by their left ends.
+  struct RowItem {
+    int64_t lo, hi;  // swept x-extent (a static region: its rectangle's)
+    uint32_t r;      // the region
+    uint32_t mi;     // its index in `moving`, or kNone if it stays put
+  };
+  bool rows_fixed = false;
+  std::vector<uint32_t> row_sorted, row_end;
+  std::vector<RowItem> row_items;
+  std::vector<uint32_t> row_scratch, row_count;  // sort_rows's work arrays
+  std::vector<uint32_t> moving_index;            // per region: its index in `moving` (valid when stamped)
 
   // The run in progress: scale D, the first cycle collision (if any), stats,
   // and the earliest node collision of the current interval.
@@ -278,7 +301,11 @@ struct Simulator::Scratch {
     node_vel.resize(p.inst.num_nodes());
     rect.resize(nr);
     rvel.resize(nr);
+    moving_index.resize(nr);
+    bind_rows();
   }
+  void bind_rows();
+  void sort_rows();
 
   SimResult run(const Schedule& s);
 
@@ -300,9 +327,15 @@ struct Simulator::Scratch {
     add_moving(regions().region_of_op[k]);
     if (inst().ops()[k].kind == OpKind::Contract) add_moving(inst().ops()[k].v);
   }
-  void sweep_boxes(int64_t span);
+  int64_t sweep_boxes(int64_t span);
   void test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t span);
-  int64_t moving_against_static(int64_t span);
+  void moving_against_static(int64_t span);
+  bool use_rows(int64_t vmax) const {
+    return rows_fixed && row_sweep && moving.size() > kAllMovingPairs && vmax <= kRowMaxSpeed &&
+           4 * moving.size() >= regions().size();
+  }
+  void row_broad_phase(int64_t span);
+  void sweep_row(size_t b, size_t e, int64_t span);
   void moving_against_moving(int64_t span, int64_t S);
   void pairs_in_dense_cell(size_t d, uint32_t i);
   bool rigid_apart(uint32_t a, uint32_t b) const;
@@ -475,11 +508,14 @@ void Simulator::Scratch::collect_moving() {
   stats.moved_regions += moving.size();
 }
 
-// Velocities and swept boxes of the moving regions over `span`.
-void Simulator::Scratch::sweep_boxes(int64_t span) {
+// Velocities and swept boxes of the moving regions over `span`. Returns the
+// largest speed of a moving face (at least 1).
+int64_t Simulator::Scratch::sweep_boxes(int64_t span) {
+  int64_t vmax = 1;
   swept.resize(moving.size());
   for (size_t i = 0; i < moving.size(); ++i) {
     uint32_t r = moving[i];
+    moving_index[r] = static_cast<uint32_t>(i);
     const RegionShape& sh = regions().shapes[r];
     for (int f = 0; f < 4; ++f) {
       const NodeId w = sh.ref[f];
@@ -487,6 +523,7 @@ void Simulator::Scratch::sweep_boxes(int64_t span) {
       int64_t vf = axis_of(f) == 0 ? v.x : v.y;
       if (sh.grow_op != kNone && f == sh.grow_face && running[inst().ops()[sh.grow_op].coupling]) vf += sh.grow_sign;
       rvel[r][f] = vf;
+      vmax = std::max(vmax, vf < 0 ? -vf : vf);
     }
     for (int f = 0; f < 4; f += 2) {
       int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
@@ -495,6 +532,7 @@ void Simulator::Scratch::sweep_boxes(int64_t span) {
       swept[i][f + 1] = std::max(b0, b1);
     }
   }
+  return vmax;
 }
 
 // The exact test of one candidate pair; keeps the earliest collision (the
@@ -510,13 +548,10 @@ void Simulator::Scratch::test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t
 
 // Moving against static: each moving region queries the cells of its swept
 // box (a static region's lower-left corner lies at most one cell before the
-// box). Cells hold O(1) static regions: the shape has no overlaps. Returns
-// the largest speed of a moving face (at least 1).
-int64_t Simulator::Scratch::moving_against_static(int64_t span) {
-  int64_t vmax = 1;
+// box). Cells hold O(1) static regions: the shape has no overlaps.
+void Simulator::Scratch::moving_against_static(int64_t span) {
   for (size_t i = 0; i < moving.size(); ++i) {
     uint32_t r = moving[i];
-    for (int f = 0; f < 4; ++f) vmax = std::max(vmax, rvel[r][f] < 0 ? -rvel[r][f] : rvel[r][f]);
     const auto& sw = swept[i];
     if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;  // never of positive area
     const int64_t cx0 = cell_of(sw[0], D), cx1 = cell_of(sw[1] - 1, D);
@@ -526,7 +561,6 @@ int64_t Simulator::Scratch::moving_against_static(int64_t span) {
         for (uint32_t x = grid.head(cell_key(Vec2{cx, cy})); x != kNone; x = grid.next(x))
           if (region_stamp[x] != stamp && boxes_overlap(sw, rect[x])) test_pair(r, x, false, span);
   }
-  return vmax;
 }
 
 // Regions a and b can first overlap inside this interval only if they move
@@ -653,6 +687,115 @@ void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
     test_pair(moving[static_cast<uint32_t>(ij >> 32)], moving[static_cast<uint32_t>(ij & 0xffffffffu)], true, span);
 }
 
+// Rows: horizontal-only instances whose regions are all one cell high (so
+// always: compiled formulas, random horizontal families). No operation moves
+// a face along y there, so each region stays in its base row.
+void Simulator::Scratch::bind_rows() {
+  const Regions& R = regions();
+  rows_fixed = inst().horizontal_only() && std::all_of(R.shapes.begin(), R.shapes.end(), [](const RegionShape& sh) {
+                 return sh.base[3] == sh.base[2] + 1;
+               });
+  row_sorted.clear();
+  row_end.clear();
+}
+
+// row_sorted and row_end, on the first row sweep after bind (most runs
+// never need them): two stable counting sorts, by base x then by row, when
+// the shape's box is at most a few times wider and higher than the number
+// of regions (compiled formulas); otherwise a comparison sort.
+void Simulator::Scratch::sort_rows() {
+  const Regions& R = regions();
+  const size_t nr = R.size();
+  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
+  for (const RegionShape& sh : R.shapes) {
+    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
+    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
+  }
+  const auto row = [&](uint32_t r) { return R.shapes[r].base[2]; };
+  row_sorted.resize(nr);
+  const int64_t limit = 4 * static_cast<int64_t>(nr) + 64;
+  if (xhi - xlo < limit && yhi - ylo < limit) {
+    std::vector<uint32_t>& by_x = row_scratch;
+    by_x.resize(nr);
+    const auto counting = [&](auto coord, int64_t lo, int64_t hi, const auto& from, std::vector<uint32_t>& to) {
+      row_count.assign(static_cast<size_t>(hi - lo + 2), 0);
+      for (uint32_t r : from) ++row_count[static_cast<size_t>(coord(r) - lo + 1)];
+      for (size_t i = 1; i < row_count.size(); ++i) row_count[i] += row_count[i - 1];
+      for (uint32_t r : from) to[row_count[static_cast<size_t>(coord(r) - lo)]++] = r;
+    };
+    std::iota(row_sorted.begin(), row_sorted.end(), 0u);
+    counting([&](uint32_t r) { return R.shapes[r].base[0]; }, xlo, xhi, row_sorted, by_x);
+    counting(row, ylo, yhi, by_x, row_sorted);
+  } else {
+    std::iota(row_sorted.begin(), row_sorted.end(), 0u);
+    std::sort(row_sorted.begin(), row_sorted.end(), [&](uint32_t a, uint32_t b) {
+      return std::pair(row(a), R.shapes[a].base[0]) < std::pair(row(b), R.shapes[b].base[0]);
+    });
+  }
+  for (size_t i = 1; i <= nr; ++i)
+    if (i == nr || row(row_sorted[i]) != row(row_sorted[i - 1])) row_end.push_back(static_cast<uint32_t>(i));
+}
+
+// The broad phase by rows, for intervals where many regions move slowly
+// (verify's gap witness: every coupling at once). Regions of different rows
+// never overlap (their y-extents are fixed unit rows), so the candidates
+// are the pairs of one row, at least one of them moving, whose swept boxes
+// overlap: the filter of the few-regions path, found by sorting each row by
+// the left ends (from the base order, which they rarely leave: an insertion
+// sort) and meeting each item only with those that start before its right
+// end. Every pair that collides in the interval is among them, and
+// test_pair keeps the earliest collision whatever the set, so the answer is
+// the grid path's (SimulatorTwin.RowSweepAgreesWithCellGrid). O(r) per
+// interval for r regions, plus the pairs.
+void Simulator::Scratch::row_broad_phase(int64_t span) {
+  if (row_sorted.size() != regions().size()) sort_rows();
+  row_items.resize(row_sorted.size());
+  for (size_t i = 0; i < row_sorted.size(); ++i) {
+    const uint32_t r = row_sorted[i];
+    if (region_stamp[r] == stamp) {
+      const uint32_t mi = moving_index[r];
+      row_items[i] = RowItem{swept[mi][0], swept[mi][1], r, mi};
+    } else {
+      row_items[i] = RowItem{rect[r][0], rect[r][1], r, kNone};
+    }
+  }
+  size_t b = 0;
+  for (const uint32_t e : row_end) {
+    sweep_row(b, e, span);
+    b = e;
+  }
+}
+
+// One row's items [b, e): sort by left end, then meet the overlapping ones.
+void Simulator::Scratch::sweep_row(size_t b, size_t e, int64_t span) {
+  const auto first = row_items.begin() + static_cast<std::ptrdiff_t>(b);
+  const auto last = row_items.begin() + static_cast<std::ptrdiff_t>(e);
+  const auto by_lo = [](const RowItem& x, const RowItem& y) { return x.lo < y.lo; };
+  size_t shifts = 0;  // an insertion sort while the items are nearly in order
+  for (size_t i = b + 1; i < e && shifts <= 8 * (e - b); ++i) {
+    const RowItem item = row_items[i];
+    size_t j = i;
+    for (; j > b && item.lo < row_items[j - 1].lo; --j, ++shifts) row_items[j] = row_items[j - 1];
+    row_items[j] = item;
+  }
+  if (shifts > 8 * (e - b)) std::sort(first, last, by_lo);
+  for (size_t x = b; x < e; ++x) {
+    const RowItem& p = row_items[x];
+    for (size_t y = x + 1; y < e && row_items[y].lo < p.hi; ++y) {
+      const RowItem& q = row_items[y];
+      if (p.mi == kNone && q.mi == kNone) continue;
+      if (p.mi != kNone && q.mi != kNone) {
+        if (boxes_overlap(swept[p.mi], swept[q.mi]) && !rigid_apart(p.r, q.r)) test_pair(p.r, q.r, true, span);
+        continue;
+      }
+      const RowItem& mv = p.mi != kNone ? p : q;
+      const uint32_t still = p.mi != kNone ? q.r : p.r;
+      const auto& sw = swept[mv.mi];
+      if (sw[1] > sw[0] && sw[3] > sw[2] && boxes_overlap(sw, rect[still])) test_pair(mv.r, still, false, span);
+    }
+  }
+}
+
 // Advance the moving regions to the end of the interval.
 void Simulator::Scratch::advance(int64_t span) {
   for (uint32_t r : moving) {
@@ -718,11 +861,16 @@ SimResult Simulator::Scratch::run(const Schedule& s) {
     next_stamp();
     cut_tree();
     collect_moving();
-    sweep_boxes(span);
+    const int64_t vmax = sweep_boxes(span);
     best = Frac{};
     best_a = best_b = kNone;
-    const int64_t vmax = moving_against_static(span);
-    moving_against_moving(span, vmax);
+    if (use_rows(vmax)) {
+      ++stats.row_sweeps;
+      row_broad_phase(span);
+    } else {
+      moving_against_static(span);
+      moving_against_moving(span, vmax);
+    }
     if (!best.none()) return node_result(now);
     advance(span);
   }
@@ -748,6 +896,7 @@ SimResult Simulator::run(const Schedule& s) {
   if (!scratch_) scratch_ = std::make_unique<Scratch>(*prep_);
   scratch_->deadline = deadline_;
   scratch_->skip_rigid = skip_rigid_;
+  scratch_->row_sweep = row_sweep_;
   return scratch_->run(s);
 }
 

@@ -15,7 +15,9 @@
 //    query a table of all regions by grid cell (a dense array over the
 //    shape's box, a hash table elsewhere), and moving regions meet each
 //    other in per-cell lists of their swept boxes (up to 48 moving regions:
-//    every pair whose swept boxes overlap);
+//    every pair whose swept boxes overlap; in horizontal-only instances,
+//    when a quarter of the regions move at most 4 cells per unit of time,
+//    a sweep of each row by swept x-extents instead of the cells);
 //  - the exact test solves eight strict linear inequalities in time.
 // Cycle collisions are found up front from the face walks (FaceNets): the
 // mismatch around a face is piecewise linear in time, so the first moment it
@@ -53,6 +55,7 @@ struct SimStats {
   uint64_t intervals = 0;        // intervals with at least one running coupling
   uint64_t moved_regions = 0;    // sum over intervals of moving regions
   uint64_t candidate_pairs = 0;  // pairs passed by the broad phase
+  uint64_t row_sweeps = 0;       // intervals whose broad phase swept rows (horizontal-only instances)
 };
 
 struct SimResult {
@@ -92,6 +95,12 @@ class Simulator {
   // compare both paths.
   void set_skip_rigid_pairs(bool on) { skip_rigid_ = on; }
 
+  // Whether intervals in which many regions of a horizontal-only instance
+  // move slowly (verify's gap witness) take the row sweep as their broad
+  // phase instead of the cell grid: the same answer (both are exact
+  // filters). On by default; off only for the twin tests.
+  void set_row_sweep(bool on) { row_sweep_ = on; }
+
   // Simulates prep from now on (its tables must outlive the simulator),
   // keeping the work arrays' memory: one simulator serves many instances
   // (verify's Verifier, one formula after another). O(n + r).
@@ -110,6 +119,7 @@ class Simulator {
   std::unique_ptr<Scratch> scratch_;
   const Deadline* deadline_ = nullptr;
   bool skip_rigid_ = true;
+  bool row_sweep_ = true;
 };
 
 // An exact rectangle, for drawing the configuration at a moment.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -359,6 +360,69 @@ TEST(SimulatorTwin, RigidPairSkipAgreesWithAllPairs) {
   EXPECT_GT(collisions, cases / 5);
   EXPECT_GT(clean, cases / 5);
   EXPECT_GT(skipped, cases / 5);
+}
+
+// The row sweep (Simulator::set_row_sweep): intervals of horizontal-only
+// instances in which many regions move slowly take it as their broad phase
+// instead of the cell grid. The same runs both ways (and against the
+// all-pairs reference on every twentieth instance), on horizontal instances
+// large enough that more than 48 regions move, every coupling at once
+// (verify's gap witness) and at random times, in random orders. Random
+// instances with this many operations nearly always collide: the
+// collision-free runs (verify's case) are SimulatorTwin.RowSweepOnCompiledFormulas
+// in tests/reductions_compile_test.cpp.
+TEST(SimulatorTwin, RowSweepAgreesWithCellGrid) {
+  const int cases = test::scaled(2000);
+  const uint64_t seed0 = test::base_seed(13);
+  int collisions = 0, clean = 0, swept_rows = 0;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
+    Rng rng(seed);
+    RandomInstanceParams p = small_params(seed);
+    p.horizontal_only = true;
+    p.nodes = 40 + static_cast<uint32_t>(rng.below(160));
+    p.ops = 10 + static_cast<uint32_t>(rng.below(p.nodes / 2));
+    p.max_coupling = 1 + static_cast<uint32_t>(rng.below(6));
+    const Instance inst = random_instance(p, seed);
+    const PreparedInstance prep(inst);
+    Simulator rows(prep), grid(prep);
+    grid.set_row_sweep(false);
+    Schedule at_once;
+    at_once.start.assign(inst.couplings().size(), Rational(0));
+    for (const Schedule& s : {at_once, random_schedule(inst, seed, false), random_schedule(inst, seed, true)}) {
+      const SimResult a = rows.run(s), b = grid.run(s);
+      ASSERT_EQ(b.stats.row_sweeps, 0u);
+      swept_rows += a.stats.row_sweeps > 0;
+      ASSERT_EQ(a.collision.has_value(), b.collision.has_value());
+      EXPECT_EQ(a.stats.intervals, b.stats.intervals);
+      EXPECT_EQ(a.stats.moved_regions, b.stats.moved_regions);
+      std::optional<test::ReferenceCollision> ref;
+      if (i % 20 == 0) {  // the all-pairs reference is slow on these sizes
+        ref = test::reference_simulate(inst, s, static_cast<NodeId>(seed % inst.num_nodes()));
+        ASSERT_EQ(a.collision.has_value(), ref.has_value());
+      }
+      if (!a.collision) {
+        ++clean;
+        continue;
+      }
+      ++collisions;
+      const Collision &x = *a.collision, &y = *b.collision;
+      EXPECT_EQ(x.kind, y.kind);
+      EXPECT_EQ(x.time, y.time);
+      if (ref) {
+        EXPECT_EQ(x.time, ref->time);
+      }
+      EXPECT_EQ(std::pair(x.a, x.b), std::pair(y.a, y.b));
+      EXPECT_EQ(x.cycle, y.cycle);
+      EXPECT_EQ(x.moving, y.moving);
+    }
+  }
+  // Collisions, and the row sweep itself, must occur often for the comparison to mean anything.
+  EXPECT_GT(collisions, cases / 5);
+  EXPECT_GT(swept_rows, cases / 5);
+  std::cout << "row sweeps in " << swept_rows << " of " << 3 * cases << " runs, " << collisions << " collisions, "
+            << clean << " collision-free\n";
 }
 
 // A sparse shape (an L of two long arms: its box has far more cells than
