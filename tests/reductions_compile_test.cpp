@@ -18,6 +18,7 @@
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
 #include "support/contract_search.hpp"
+#include "support/same_collision.hpp"
 #include "support/test_scale.hpp"
 
 namespace gridlock {
@@ -283,12 +284,7 @@ TEST(SimulatorTwin, RowSweepOnCompiledFormulas) {
         continue;
       }
       ++collisions;
-      const Collision &x = *a.collision, &y = *b.collision;
-      EXPECT_EQ(x.kind, y.kind);
-      EXPECT_EQ(x.time, y.time);
-      EXPECT_EQ(std::pair(x.a, x.b), std::pair(y.a, y.b));
-      EXPECT_EQ(x.cycle, y.cycle);
-      EXPECT_EQ(x.moving, y.moving);
+      test::expect_same_collision(*a.collision, *b.collision);
     }
   }
   EXPECT_GT(clean, cases / 2);
