@@ -44,6 +44,16 @@ void write_certificate(Answer& ans, const std::string& cert_path, const std::str
   ans.data()["certificate"] = cert_path;
 }
 
+// A lone collider (both models): the comment that names it and its JSON field.
+// constraints_kind says what the builder had made when it stopped.
+void report_lone_collider(Answer& ans, const Instance& inst, CouplingId q, const std::string& pair, size_t constraints,
+                          const std::string& constraints_kind) {
+  ans.comment("coupling " + inst.couplings()[q].name + " alone moves " + pair +
+              " against each other: they collide whenever it runs");
+  ans.comment("found after " + std::to_string(constraints) + " " + constraints_kind + "; no search needed");
+  ans.data()["lone_collider"] = {{"coupling", inst.couplings()[q].name}, {"pair", pair}};
+}
+
 int run_continuous(const std::string& path, const Instance& inst, const SolveOptions& opt, ContinuousEngine engine,
                    bool json, const std::string& cert_path) {
   Answer ans("solve", json);
@@ -59,9 +69,7 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   if (st.engine == "gaps") {
     ans.comment("horizontal-only: linear gap check (" + std::to_string(st.constraints) + " gaps and cycles)");
   } else if (r.lone_collider != kNone) {
-    ans.comment("coupling " + inst.couplings()[r.lone_collider].name + " alone moves " + r.lone_pair +
-                " against each other: they collide whenever it runs");
-    ans.comment("found after " + std::to_string(st.constraints) + " pair and cycle constraints; no search needed");
+    report_lone_collider(ans, inst, r.lone_collider, r.lone_pair, st.constraints, "pair and cycle constraints");
   } else {
     ans.comment("engine " + st.engine + " on " + std::to_string(st.constraints) + " pair and cycle constraints");
     ans.comment("components settled by a cheap test " + std::to_string(st.safe_moves) + ", searched " +
@@ -79,8 +87,6 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   d["model"] = "continuous";
   d["engine"] = st.engine;
   d["stats"] = stats_json(st);
-  if (r.lone_collider != kNone)
-    d["lone_collider"] = {{"coupling", inst.couplings()[r.lone_collider].name}, {"pair", r.lone_pair}};
   return ans.finish(r.status);
 }
 
@@ -107,9 +113,7 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
     ans.comment("coupling " + inst.couplings()[r.cycle_breaker].name +
                 " moves the shape unevenly around a cycle: it collides whenever it runs");
   } else if (r.lone_collider != kNone) {
-    ans.comment("coupling " + inst.couplings()[r.lone_collider].name + " alone moves " + r.lone_pair +
-                " against each other: they collide whenever it runs");
-    ans.comment("found after " + std::to_string(st.constraints) + " collision constraints; no search needed");
+    report_lone_collider(ans, inst, r.lone_collider, r.lone_pair, st.constraints, "collision constraints");
   } else {
     ans.comment("search " + st.engine + " on " + std::to_string(st.constraints) + " collision constraints");
     ans.comment("states " + std::to_string(st.states) + ", refuted " + std::to_string(st.refuted) + ", decisions " +
@@ -126,8 +130,6 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
   d["model"] = "discrete";
   d["stats"] = stats_json(st);
   if (r.cycle_breaker != kNone) d["cycle_breaker"] = inst.couplings()[r.cycle_breaker].name;
-  if (r.lone_collider != kNone)
-    d["lone_collider"] = {{"coupling", inst.couplings()[r.lone_collider].name}, {"pair", r.lone_pair}};
   return ans.finish(r.status);
 }
 
