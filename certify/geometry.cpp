@@ -18,7 +18,37 @@ void normalise(CouplingForm& f) {
   f.terms.resize(out);
 }
 
+// One stable counting-sort pass of `in` into `out` by key(node) - lo, keys
+// in [lo, lo + span).
+template <class Key>
+void counting_pass(const std::vector<NodeId>& in, std::vector<NodeId>& out, int64_t lo, size_t span, Key key) {
+  std::vector<uint32_t> start(span + 1, 0);
+  for (NodeId w : in) ++start[static_cast<size_t>(key(w) - lo) + 1];
+  for (size_t i = 1; i <= span; ++i) start[i] += start[i - 1];
+  for (NodeId w : in) out[start[static_cast<size_t>(key(w) - lo)]++] = w;
+}
+
 }  // namespace
+
+std::vector<NodeId> nodes_in_row_order(const std::vector<Vec2>& cells) {
+  std::vector<NodeId> order(cells.size());
+  for (NodeId w = 0; w < order.size(); ++w) order[w] = w;
+  if (cells.empty()) return order;
+  int64_t x0 = cells[0].x, x1 = x0, y0 = cells[0].y, y1 = y0;
+  for (const Vec2& c : cells)
+    x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+  const auto limit = static_cast<uint64_t>(4 * cells.size() + 64);
+  if (static_cast<uint64_t>(x1 - x0) >= limit || static_cast<uint64_t>(y1 - y0) >= limit) {
+    std::sort(order.begin(), order.end(), [&](NodeId p, NodeId q) {
+      return cells[p].y != cells[q].y ? cells[p].y < cells[q].y : cells[p].x < cells[q].x;
+    });
+    return order;
+  }
+  std::vector<NodeId> by_x(cells.size());
+  counting_pass(order, by_x, x0, static_cast<size_t>(x1 - x0) + 1, [&](NodeId w) { return cells[w].x; });
+  counting_pass(by_x, order, y0, static_cast<size_t>(y1 - y0) + 1, [&](NodeId w) { return cells[w].y; });
+  return order;
+}
 
 CertifyGeometry::CertifyGeometry(const Instance& inst)
     : inst_(inst), tree_(SpanningTree::build(inst)), regions_(Regions::build(inst)), depth_(inst.num_nodes(), 0) {
@@ -111,12 +141,8 @@ bool CertifyGeometry::row_neighbours(NodeId a, NodeId b) const {
 }
 
 std::vector<GapInequality> CertifyGeometry::gap_inequalities() const {
-  std::vector<NodeId> by_row(inst_.num_nodes());
-  for (NodeId w = 0; w < by_row.size(); ++w) by_row[w] = w;
+  const std::vector<NodeId> by_row = nodes_in_row_order(inst_.cells());
   const auto& cells = inst_.cells();
-  std::sort(by_row.begin(), by_row.end(), [&](NodeId p, NodeId q) {
-    return cells[p].y != cells[q].y ? cells[p].y < cells[q].y : cells[p].x < cells[q].x;
-  });
   std::vector<GapInequality> out;
   for (size_t i = 0; i + 1 < by_row.size(); ++i) {
     const NodeId a = by_row[i], b = by_row[i + 1];

@@ -1,8 +1,10 @@
 #include "lattice/instance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 #include <string_view>
+#include <utility>
 
 namespace gridlock {
 
@@ -15,14 +17,61 @@ const char* op_kind_name(OpKind k) {
   return "?";
 }
 
+namespace {
+// name_char[c]: c may occur in a name, [A-Za-z0-9_.:~+'-].
+constexpr std::array<bool, 256> make_name_chars() {
+  std::array<bool, 256> ok{};
+  for (int c = 'a'; c <= 'z'; ++c) ok[static_cast<size_t>(c)] = true;
+  for (int c = 'A'; c <= 'Z'; ++c) ok[static_cast<size_t>(c)] = true;
+  for (int c = '0'; c <= '9'; ++c) ok[static_cast<size_t>(c)] = true;
+  for (char c : {'_', '.', ':', '~', '+', '\'', '-'}) ok[static_cast<unsigned char>(c)] = true;
+  return ok;
+}
+constexpr std::array<bool, 256> kNameChar = make_name_chars();
+}  // namespace
+
 bool valid_name(const std::string& s) {
   if (s.empty() || s.size() > 64 || s[0] == '-' || s[0] == '+') return false;
-  for (char ch : s) {
-    bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
-              ch == '.' || ch == ':' || ch == '~' || ch == '+' || ch == '\'' || ch == '-';
-    if (!ok) return false;
-  }
+  for (char ch : s)
+    if (!kNameChar[static_cast<unsigned char>(ch)]) return false;
   return true;
+}
+
+void NameIndex::reserve(size_t n) {
+  size_t cap = 16;
+  while (cap < 2 * n) cap <<= 1;
+  if (cap > slots_.size()) rehash(cap);
+}
+
+uint32_t NameIndex::hash(std::string_view s) {  // FNV-1a, then the high bits folded in
+  uint64_t h = 0xCBF29CE484222325ull;
+  for (char ch : s) h = (h ^ static_cast<unsigned char>(ch)) * 0x100000001B3ull;
+  h ^= h >> 29;
+  h *= 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 32;
+  return static_cast<uint32_t>(h);
+}
+
+void NameIndex::insert(std::string_view name, uint32_t id) {
+  if (2 * (size_ + 1) > slots_.size()) rehash(slots_.empty() ? 16 : 2 * slots_.size());
+  const uint32_t h = hash(name);
+  const size_t mask = slots_.size() - 1;
+  size_t i = h & mask;
+  while (slots_[i].id != UINT32_MAX) i = (i + 1) & mask;
+  slots_[i] = Slot{h, id};
+  ++size_;
+}
+
+void NameIndex::rehash(size_t cap) {
+  std::vector<Slot> old(cap);
+  old.swap(slots_);
+  const size_t mask = cap - 1;
+  for (const Slot& o : old)
+    if (o.id != UINT32_MAX) {
+      size_t j = o.hash & mask;
+      while (slots_[j].id != UINT32_MAX) j = (j + 1) & mask;
+      slots_[j] = o;
+    }
 }
 
 NodeId Instance::node_at(Vec2 c) const {
@@ -31,13 +80,11 @@ NodeId Instance::node_at(Vec2 c) const {
 }
 
 OpId Instance::find_op(const std::string& name) const {
-  auto it = op_index_.find(name);
-  return it == op_index_.end() ? kNone : it->second;
+  return op_index_.find(name, [this](uint32_t k) -> const std::string& { return ops_[k].name; });
 }
 
 CouplingId Instance::find_coupling(const std::string& name) const {
-  auto it = coupling_index_.find(name);
-  return it == coupling_index_.end() ? kNone : it->second;
+  return coupling_index_.find(name, [this](uint32_t q) -> const std::string& { return couplings_[q].name; });
 }
 
 bool Instance::horizontal_only() const {
@@ -88,7 +135,8 @@ std::optional<std::string> InstanceBuilder::add_node(Vec2 cell) {
   if (!inst_.cell_index_.emplace(cell_key(cell), static_cast<NodeId>(inst_.cells_.size())).second)
     return "two nodes in cell " + cell_str(cell);
   inst_.cells_.push_back(cell);
-  for (int i = 0; i < 4; ++i) inst_.adj_.push_back(kNone), inst_.adj_edge_.push_back(kNone);
+  inst_.adj_.insert(inst_.adj_.end(), 4, kNone);
+  inst_.adj_edge_.insert(inst_.adj_edge_.end(), 4, kNone);
   inst_.op_of_node_.push_back(kNone);
   return std::nullopt;
 }
@@ -113,7 +161,7 @@ std::optional<std::string> InstanceBuilder::add_edge(Vec2 a, Vec2 b) {
 
 std::optional<std::string> InstanceBuilder::add_op(const std::string& name, OpKind kind, Vec2 u, Dir dir) {
   if (!valid_name(name)) return "bad operation name '" + name + "'";
-  if (inst_.op_index_.count(name)) return "operation '" + name + "' defined twice";
+  if (inst_.find_op(name) != kNone) return "operation '" + name + "' defined twice";
   if (!in_range(u)) return "coordinate out of range";
   NodeId nu = inst_.node_at(u);
   if (nu == kNone) return "operation '" + name + "' on cell " + cell_str(u) + ", which holds no node";
@@ -140,17 +188,18 @@ std::optional<std::string> InstanceBuilder::add_op(const std::string& name, OpKi
   for (NodeId w : {op.u, op.v})
     if (w != kNone) inst_.op_of_node_[w] = id;
   if (op.is_edge_op()) inst_.edges_[inst_.adj_edge_[4 * nu + static_cast<int>(dir)]].op = id;
-  inst_.op_index_[name] = id;
-  inst_.ops_.push_back(op);
+  inst_.op_index_.insert(name, id);
+  inst_.ops_.push_back(std::move(op));
   return std::nullopt;
 }
 
 std::optional<std::string> InstanceBuilder::add_coupling(const std::string& name, const std::vector<std::string>& ops) {
   if (!valid_name(name)) return "bad coupling name '" + name + "'";
-  if (inst_.coupling_index_.count(name)) return "coupling '" + name + "' defined twice";
+  if (inst_.find_coupling(name) != kNone) return "coupling '" + name + "' defined twice";
   if (ops.empty()) return "coupling '" + name + "' has no operations";
   auto id = static_cast<CouplingId>(inst_.couplings_.size());
   Coupling q{name, {}};
+  q.ops.reserve(ops.size());
   for (const auto& o : ops) {
     OpId op = inst_.find_op(o);
     if (op == kNone) return cat({"unknown operation '", o, "' in coupling '", name, "'"});
@@ -160,7 +209,7 @@ std::optional<std::string> InstanceBuilder::add_coupling(const std::string& name
     inst_.ops_[op].coupling = id;
     q.ops.push_back(op);
   }
-  inst_.coupling_index_[name] = id;
+  inst_.coupling_index_.insert(name, id);
   inst_.couplings_.push_back(std::move(q));
   return std::nullopt;
 }
@@ -178,11 +227,11 @@ std::optional<InstanceBuilder::FinishError> InstanceBuilder::finish(Instance& ou
   for (OpId o = 0; o < inst_.ops_.size(); ++o) {
     if (inst_.ops_[o].coupling != kNone) continue;
     const std::string& name = inst_.ops_[o].name;
-    if (inst_.coupling_index_.count(name))
+    if (inst_.find_coupling(name) != kNone)
       return FinishError{"operation '" + name + "' is in no coupling, and its singleton coupling's name is taken", -1};
     auto id = static_cast<CouplingId>(inst_.couplings_.size());
+    inst_.coupling_index_.insert(name, id);
     inst_.couplings_.push_back(Coupling{name, {o}});
-    inst_.coupling_index_[name] = id;
     inst_.ops_[o].coupling = id;
   }
   // Connectivity, by an iterative search from node 0.

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <unordered_map>
+#include <string_view>
 #include <vector>
 
 #include "common/diagnostic.hpp"
@@ -57,6 +57,43 @@ struct Edge {
   OpId op = kNone;              // the expansion or contraction on this edge, if any
 };
 
+// Names -> ids (operations or couplings) in one flat array: open addressing,
+// linear probing, load at most 1/2. A slot holds an id and its name's hash;
+// the names stay in the instance's lists, so an entry costs no allocation
+// and no copy of its name (std::unordered_map<std::string, id> allocated a
+// node per name and freed it with the instance, hundreds per compiled
+// formula). Copying the index with its instance keeps it valid.
+class NameIndex {
+ public:
+  // Room for n names without growing. O(n).
+  void reserve(size_t n);
+  // The id whose name (name_of(id)) is name, or kNone. O(|name|) expected.
+  template <class NameOf>
+  uint32_t find(std::string_view name, const NameOf& name_of) const {
+    if (slots_.empty()) return UINT32_MAX;
+    const uint32_t h = hash(name);
+    const size_t mask = slots_.size() - 1;
+    for (size_t i = h & mask;; i = (i + 1) & mask) {
+      const Slot& s = slots_[i];
+      if (s.id == UINT32_MAX) return UINT32_MAX;
+      if (s.hash == h && std::string_view(name_of(s.id)) == name) return s.id;
+    }
+  }
+  // Adds name -> id. Requires name absent (find first) and id != kNone.
+  // O(|name|) amortised.
+  void insert(std::string_view name, uint32_t id);
+
+ private:
+  struct Slot {
+    uint32_t hash = 0;
+    uint32_t id = UINT32_MAX;
+  };
+  static uint32_t hash(std::string_view s);
+  void rehash(size_t cap);
+  std::vector<Slot> slots_;
+  size_t size_ = 0;
+};
+
 class Instance {
  public:
   // Nodes, in the order given; node i sits in cell cells[i].
@@ -94,9 +131,9 @@ class Instance {
   std::vector<Coupling> couplings_;
   NodeId anchor_ = 0;
   bool explicit_anchor_ = false;
-  FlatMap64 cell_index_;  // cell_key -> node: no allocation per node
-  std::unordered_map<std::string, OpId> op_index_;
-  std::unordered_map<std::string, CouplingId> coupling_index_;
+  FlatMap64 cell_index_;            // cell_key -> node: no allocation per node
+  NameIndex op_index_;              // name -> operation
+  NameIndex coupling_index_;        // name -> coupling
   std::vector<NodeId> adj_;         // 4 per node
   std::vector<uint32_t> adj_edge_;  // 4 per node
   std::vector<OpId> op_of_node_;

@@ -30,6 +30,11 @@ struct GapInequality {
   int64_t bound = 0;
 };
 
+// The nodes sorted by row, then by x: by (y, x). Cells are distinct, so the
+// order is unique; a two-pass counting sort (x, then y) when the coordinate
+// ranges are within 4n + 64, std::sort otherwise. O(n) or O(n log n).
+std::vector<NodeId> nodes_in_row_order(const std::vector<Vec2>& cells);
+
 class CertifyGeometry {
  public:
   explicit CertifyGeometry(const Instance& inst);
