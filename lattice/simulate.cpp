@@ -209,6 +209,7 @@ struct Simulator::Scratch {
   const Deadline* deadline = nullptr;  // checked between intervals (Simulator::set_deadline)
   bool skip_rigid = true;              // Simulator::set_skip_rigid_pairs
   bool row_sweep = true;               // Simulator::set_row_sweep
+  bool reuse = true;                   // Simulator::set_reuse_intervals: tight cells, solo tables
   CellLists initial_grid;              // every region at its base cell (independent of D)
   std::vector<uint64_t> initial_key;
   // The state of the sweep. Between runs every region is back at its base
@@ -265,6 +266,19 @@ struct Simulator::Scratch {
   std::vector<RowItem> row_items;
   std::vector<uint32_t> row_scratch, row_count;  // sort_rows's work arrays
   std::vector<uint32_t> moving_index;            // per region: its index in `moving` (valid when stamped)
+  // Per coupling q, what an interval in which q alone runs moves (it depends
+  // on q only: the cut, the velocities relative to the largest component,
+  // the running growth): the moving regions in collect_moving's order and
+  // their face velocities, solo_regions / solo_vel [begin, end), and the
+  // largest speed; begin == kNone until the first such interval after bind.
+  // At most 8 entries per region in all (then no more are kept).
+  struct Solo {
+    uint32_t begin = kNone, end = 0;
+    int64_t vmax = 1;
+  };
+  std::vector<Solo> solo;
+  std::vector<uint32_t> solo_regions;
+  std::vector<std::array<int64_t, 4>> solo_vel;
 
   // The run in progress: scale D, the first cycle collision (if any), stats,
   // and the earliest node collision of the current interval.
@@ -302,6 +316,9 @@ struct Simulator::Scratch {
     rect.resize(nr);
     rvel.resize(nr);
     moving_index.resize(nr);
+    solo.assign(p.inst.couplings().size(), Solo{});
+    solo_regions.clear();
+    solo_vel.clear();
     bind_rows();
   }
   void bind_rows();
@@ -328,6 +345,9 @@ struct Simulator::Scratch {
     if (inst().ops()[k].kind == OpKind::Contract) add_moving(inst().ops()[k].v);
   }
   int64_t sweep_boxes(int64_t span);
+  void set_swept(size_t i, int64_t span);
+  int64_t find_moving(int64_t span);
+  int64_t reuse_solo(const Solo& so, int64_t span);
   void test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t span);
   void moving_against_static(int64_t span);
   bool use_rows(int64_t vmax) const {
@@ -525,14 +545,56 @@ int64_t Simulator::Scratch::sweep_boxes(int64_t span) {
       rvel[r][f] = vf;
       vmax = std::max(vmax, vf < 0 ? -vf : vf);
     }
-    for (int f = 0; f < 4; f += 2) {
-      int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
-      int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
-      swept[i][f] = std::min(a0, a1);
-      swept[i][f + 1] = std::max(b0, b1);
-    }
+    set_swept(i, span);
   }
   return vmax;
+}
+
+// The swept box of moving region i over `span`, from its rect and rvel.
+void Simulator::Scratch::set_swept(size_t i, int64_t span) {
+  const uint32_t r = moving[i];
+  for (int f = 0; f < 4; f += 2) {
+    int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
+    int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
+    swept[i][f] = std::min(a0, a1);
+    swept[i][f + 1] = std::max(b0, b1);
+  }
+}
+
+// The interval's moving regions, their velocities and swept boxes; returns
+// the largest speed. When one coupling q alone runs, from q's solo table if
+// it has one (recording it otherwise, within the budget).
+int64_t Simulator::Scratch::find_moving(int64_t span) {
+  const bool one = reuse && run_list.size() == 1;
+  if (one && solo[run_list[0]].begin != kNone) return reuse_solo(solo[run_list[0]], span);
+  cut_tree();
+  collect_moving();
+  const int64_t vmax = sweep_boxes(span);
+  if (one && solo_regions.size() + moving.size() <= 8 * regions().size()) {
+    solo[run_list[0]] = Solo{static_cast<uint32_t>(solo_regions.size()),
+                             static_cast<uint32_t>(solo_regions.size() + moving.size()), vmax};
+    for (uint32_t r : moving) solo_regions.push_back(r), solo_vel.push_back(rvel[r]);
+  }
+  return vmax;
+}
+
+// What cut_tree, collect_moving and sweep_boxes give when so's coupling
+// alone runs: the same moving regions in the same order, marked, with the
+// same velocities (the stats count them alike).
+int64_t Simulator::Scratch::reuse_solo(const Solo& so, int64_t span) {
+  moving.assign(solo_regions.begin() + static_cast<std::ptrdiff_t>(so.begin),
+                solo_regions.begin() + static_cast<std::ptrdiff_t>(so.end));
+  swept.resize(moving.size());
+  for (size_t i = 0; i < moving.size(); ++i) {
+    const uint32_t r = moving[i];
+    region_stamp[r] = stamp;
+    moving_index[r] = static_cast<uint32_t>(i);
+    rvel[r] = solo_vel[so.begin + i];
+    set_swept(i, span);
+  }
+  stats.moved_regions += moving.size();
+  ++stats.reused_intervals;
+  return so.vmax;
 }
 
 // The exact test of one candidate pair; keeps the earliest collision (the
@@ -549,15 +611,23 @@ void Simulator::Scratch::test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t
 // Moving against static: each moving region queries the cells of its swept
 // box (a static region's lower-left corner lies at most one cell before the
 // box). Cells hold O(1) static regions: the shape has no overlaps.
+// Tight cells (reuse, the default): a region is at most one cell
+// wide and high (D scaled units), so one whose lower face is at or below
+// sw[0] - D ends at or before sw[0] and fails boxes_overlap; the first
+// column queried is then the cell of sw[0] - D + 1 (the box's own, not the
+// one before, whenever sw[0] is the last unit of its cell: always when
+// D = 1, as in every order), and likewise for rows. The skipped cells hold
+// only regions that boxes_overlap rejects, so the pairs tested are the same.
 void Simulator::Scratch::moving_against_static(int64_t span) {
   for (size_t i = 0; i < moving.size(); ++i) {
     uint32_t r = moving[i];
     const auto& sw = swept[i];
     if (sw[1] <= sw[0] || sw[3] <= sw[2]) continue;  // never of positive area
-    const int64_t cx0 = cell_of(sw[0], D), cx1 = cell_of(sw[1] - 1, D);
-    const int64_t cy0 = cell_of(sw[2], D), cy1 = cell_of(sw[3] - 1, D);
-    for (int64_t cx = cx0 - 1; cx <= cx1; ++cx)
-      for (int64_t cy = cy0 - 1; cy <= cy1; ++cy)
+    const int64_t cx1 = cell_of(sw[1] - 1, D), cy1 = cell_of(sw[3] - 1, D);
+    const int64_t cx0 = reuse ? cell_of(sw[0] - D + 1, D) : cell_of(sw[0], D) - 1;
+    const int64_t cy0 = reuse ? cell_of(sw[2] - D + 1, D) : cell_of(sw[2], D) - 1;
+    for (int64_t cx = cx0; cx <= cx1; ++cx)
+      for (int64_t cy = cy0; cy <= cy1; ++cy)
         for (uint32_t x = grid.head(cell_key(Vec2{cx, cy})); x != kNone; x = grid.next(x))
           if (region_stamp[x] != stamp && boxes_overlap(sw, rect[x])) test_pair(r, x, false, span);
   }
@@ -859,9 +929,7 @@ SimResult Simulator::Scratch::run(const Schedule& s) {
     const int64_t span = events[ei].time - now;
     ++stats.intervals;
     next_stamp();
-    cut_tree();
-    collect_moving();
-    const int64_t vmax = sweep_boxes(span);
+    const int64_t vmax = find_moving(span);
     best = Frac{};
     best_a = best_b = kNone;
     if (use_rows(vmax)) {
@@ -897,6 +965,7 @@ SimResult Simulator::run(const Schedule& s) {
   scratch_->deadline = deadline_;
   scratch_->skip_rigid = skip_rigid_;
   scratch_->row_sweep = row_sweep_;
+  scratch_->reuse = reuse_;
   return scratch_->run(s);
 }
 

@@ -52,10 +52,11 @@ struct Collision {
 };
 
 struct SimStats {
-  uint64_t intervals = 0;        // intervals with at least one running coupling
-  uint64_t moved_regions = 0;    // sum over intervals of moving regions
-  uint64_t candidate_pairs = 0;  // pairs passed by the broad phase
-  uint64_t row_sweeps = 0;       // intervals whose broad phase swept rows (horizontal-only instances)
+  uint64_t intervals = 0;         // intervals with at least one running coupling
+  uint64_t moved_regions = 0;     // sum over intervals of moving regions
+  uint64_t candidate_pairs = 0;   // pairs passed by the broad phase
+  uint64_t row_sweeps = 0;        // intervals whose broad phase swept rows (horizontal-only instances)
+  uint64_t reused_intervals = 0;  // intervals whose moving regions came from an earlier one (set_reuse_intervals)
 };
 
 struct SimResult {
@@ -101,6 +102,16 @@ class Simulator {
   // filters). On by default; off only for the twin tests.
   void set_row_sweep(bool on) { row_sweep_ = on; }
 
+  // Whether intervals skip work that cannot change their answer: moving
+  // regions query only the cells a static region overlapping their swept
+  // box can start in (two per unit move in every order, not six), and an
+  // interval in which one coupling alone runs (every interval of an order)
+  // takes its moving regions and face velocities from the first such
+  // interval of that coupling since the last rebind instead of cutting the
+  // tree again. The same pairs are tested: identical results and stats. On
+  // by default; off only for the twin tests (the old computation).
+  void set_reuse_intervals(bool on) { reuse_ = on; }
+
   // Simulates prep from now on (its tables must outlive the simulator),
   // keeping the work arrays' memory: one simulator serves many instances
   // (verify's Verifier, one formula after another). O(n + r).
@@ -120,6 +131,7 @@ class Simulator {
   const Deadline* deadline_ = nullptr;
   bool skip_rigid_ = true;
   bool row_sweep_ = true;
+  bool reuse_ = true;
 };
 
 // An exact rectangle, for drawing the configuration at a moment.

@@ -218,6 +218,19 @@ RandomInstanceParams small_params(uint64_t seed) {
   return p;
 }
 
+// small_params(seed), or when `large` a shape of 40-199 nodes with 10-59
+// operations in couplings of up to 4: many regions move at once (more than
+// the 48 of the few-regions broad phase). Draws from rng only when large.
+RandomInstanceParams twin_params(uint64_t seed, Rng& rng, bool large) {
+  RandomInstanceParams p = small_params(seed);
+  if (large) {
+    p.nodes = 40 + static_cast<uint32_t>(rng.below(160));
+    p.ops = 10 + static_cast<uint32_t>(rng.below(50));
+    p.max_coupling = 1 + static_cast<uint32_t>(rng.below(4));
+  }
+  return p;
+}
+
 Schedule random_schedule(const Instance& inst, uint64_t seed, bool discrete) {
   Rng rng(seed ^ 0xabcdef);
   size_t k = inst.couplings().size();
@@ -327,13 +340,7 @@ TEST(SimulatorTwin, RigidPairSkipAgreesWithAllPairs) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
     Rng rng(seed);
-    RandomInstanceParams p = small_params(seed);
-    if (i % 2 == 0) {  // large: many moving regions at once
-      p.nodes = 40 + static_cast<uint32_t>(rng.below(160));
-      p.ops = 10 + static_cast<uint32_t>(rng.below(50));
-      p.max_coupling = 1 + static_cast<uint32_t>(rng.below(4));
-    }
-    const Instance inst = random_instance(p, seed);
+    const Instance inst = random_instance(twin_params(seed, rng, i % 2 == 0), seed);
     const PreparedInstance prep(inst);
     Simulator fast(prep), all(prep);
     all.set_skip_rigid_pairs(false);
@@ -414,6 +421,56 @@ TEST(SimulatorTwin, RowSweepAgreesWithCellGrid) {
   EXPECT_GT(swept_rows, cases / 5);
   std::cout << "row sweeps in " << swept_rows << " of " << 3 * cases << " runs, " << collisions << " collisions, "
             << clean << " collision-free\n";
+}
+
+// Simulator::set_reuse_intervals: tight cell queries for the static regions,
+// and the moving regions of an interval in which one coupling alone runs
+// taken from the first such interval of that coupling. The same runs with
+// and without it (results and stats), on one simulator per instance (so
+// the second order reuses what the first recorded) and on one rebound from
+// instance to instance (as verify's Verifier is): random orders, one of
+// them twice, every coupling at once, random times with denominators 1 to 4.
+TEST(SimulatorTwin, ReusedIntervalsAgreeWithFreshCuts) {
+  const int cases = test::scaled(3000);
+  const uint64_t seed0 = test::base_seed(17);
+  int collisions = 0, clean = 0, reused = 0;
+  std::optional<Simulator> roving;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
+    Rng rng(seed);
+    const Instance inst = random_instance(twin_params(seed, rng, i % 3 == 0), seed);
+    Schedule at_once;
+    at_once.start.assign(inst.couplings().size(), Rational(0));
+    const Schedule first = random_schedule(inst, seed, true);
+    std::vector<Schedule> runs = {first, random_schedule(inst, seed + 1, true), at_once,
+                                  random_schedule(inst, seed, false)};
+    for (int64_t den : {2, 3, 4}) {  // every start a multiple of 1/den: faces stop between cells
+      Schedule sc;
+      for (size_t q = 0; q < inst.couplings().size(); ++q)
+        sc.start.push_back(Rational(static_cast<int64_t>(rng.below(static_cast<uint64_t>(3 * den))), den));
+      runs.push_back(sc);
+    }
+    runs.push_back(first);
+    const PreparedInstance prep(inst);
+    Simulator fast(prep), old(prep);
+    old.set_reuse_intervals(false);
+    if (roving) roving->rebind(prep);
+    else roving.emplace(prep);
+    for (const Schedule& s : runs) {
+      const SimResult a = fast.run(s), b = old.run(s), c = roving->run(s);
+      ASSERT_EQ(b.stats.reused_intervals, 0u);
+      reused += a.stats.reused_intervals > 0;
+      test::expect_same_run(a, b);
+      test::expect_same_run(c, b);
+      (b.collision ? collisions : clean)++;
+    }
+  }
+  EXPECT_GT(collisions, cases / 2);
+  EXPECT_GT(clean, cases / 2);
+  EXPECT_GT(reused, cases);
+  std::cout << "reuse in " << reused << " of " << 8 * cases << " runs, " << collisions << " collisions, " << clean
+            << " collision-free\n";
 }
 
 // A sparse shape (an L of two long arms: its box has far more cells than

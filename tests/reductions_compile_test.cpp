@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <iostream>
+#include <optional>
+#include <utility>
 
 #include "cnf/brute_force.hpp"
 #include "cnf/dimacs.hpp"
@@ -240,6 +242,22 @@ TEST(Compile, ContinuousAlwaysCollisionFree) {
   }
 }
 
+// A random CNF formula of 1-6 variables and 1-20 clauses, compiled, a third
+// of them with a random gadget mutation (the simulator twins' inputs).
+struct TwinFormula {
+  Formula f;
+  Mutation m;
+  CompiledFormula c;
+};
+TwinFormula twin_formula(Rng& rng) {
+  Formula f = test::random_cnf(rng, static_cast<int>(rng.between(1, 6)), static_cast<int>(rng.between(1, 20)), 1, 3,
+                               false);
+  const std::vector<Mutation> mutations = all_mutations();
+  const Mutation m = rng.below(3) == 0 ? mutations[rng.below(mutations.size())] : Mutation::None;
+  CompiledFormula c = compile_formula(f, m);
+  return TwinFormula{std::move(f), m, std::move(c)};
+}
+
 // The simulator's row sweep (Simulator::set_row_sweep) on what verify runs:
 // compiled formulas (also mutated ones), every coupling at once (the gap
 // witness: about half the regions move, collision-free unless a mutation
@@ -247,17 +265,16 @@ TEST(Compile, ContinuousAlwaysCollisionFree) {
 // runs with the row sweep and with the cell grid.
 TEST(SimulatorTwin, RowSweepOnCompiledFormulas) {
   const uint64_t seed0 = test::base_seed(41);
-  const std::vector<Mutation> mutations = all_mutations();
   int clean = 0, collisions = 0, swept_rows = 0;
   const int cases = test::scaled(2000);
   for (int t = 0; t < cases; ++t) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(t);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
     Rng rng(seed);
-    const Formula f = test::random_cnf(rng, static_cast<int>(rng.between(1, 6)), static_cast<int>(rng.between(1, 20)),
-                                       1, 3, false);
-    const Mutation m = rng.below(3) == 0 ? mutations[rng.below(mutations.size())] : Mutation::None;
-    const CompiledFormula c = compile_formula(f, m);
+    const TwinFormula tf = twin_formula(rng);
+    const Formula& f = tf.f;
+    const Mutation m = tf.m;
+    const CompiledFormula& c = tf.c;
     const Instance& inst = c.instance;
     const size_t k = inst.couplings().size();
     std::vector<Schedule> runs(1);
@@ -291,6 +308,54 @@ TEST(SimulatorTwin, RowSweepOnCompiledFormulas) {
   EXPECT_GT(collisions, cases / 2);
   EXPECT_GT(swept_rows, cases / 2);
   std::cout << "compiled: row sweeps in " << swept_rows << " runs, " << clean << " collision-free, " << collisions
+            << " collisions\n";
+}
+
+// Simulator::set_reuse_intervals on what verify runs: compiled formulas
+// (a third with a random gadget mutation), on one pair of simulators
+// rebound from formula to formula (verify's Verifier): the gap witness,
+// CaDiCaL's order, two random orders and the first of them again, random
+// half-integer times. Results and stats with and without the reuse.
+TEST(SimulatorTwin, ReusedIntervalsOnCompiledFormulas) {
+  const uint64_t seed0 = test::base_seed(43);
+  int clean = 0, collisions = 0, reused = 0;
+  const int cases = test::scaled(2000);
+  std::optional<Simulator> fast, old;
+  for (int t = 0; t < cases; ++t) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(t);
+    SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
+    Rng rng(seed);
+    const TwinFormula tf = twin_formula(rng);
+    const size_t k = tf.c.instance.couplings().size();
+    std::vector<Schedule> runs(1);
+    runs[0].start.assign(k, Rational(0));
+    const SatResult sat = solve_sat(tf.f);
+    if (sat.status == Verdict::Yes) runs.push_back(schedule_from_order(schedule_from_assignment(tf.c, sat.model)));
+    std::vector<CouplingId> order(k);
+    for (CouplingId q = 0; q < k; ++q) order[q] = q;
+    for (int j = 0; j < 2; ++j) {
+      rng.shuffle(order);
+      runs.push_back(schedule_from_order(order));
+    }
+    runs.push_back(runs[runs.size() - 2]);
+    Schedule times;
+    for (size_t q = 0; q < k; ++q) times.start.push_back(Rational(static_cast<int64_t>(rng.below(7)), 2));
+    runs.push_back(times);
+    const PreparedInstance prep(tf.c.instance);
+    if (!fast) fast.emplace(prep), old.emplace(prep), old->set_reuse_intervals(false);
+    fast->rebind(prep), old->rebind(prep);
+    for (const Schedule& s : runs) {
+      const SimResult a = fast->run(s), b = old->run(s);
+      reused += a.stats.reused_intervals > 0;
+      ASSERT_EQ(b.stats.reused_intervals, 0u);
+      test::expect_same_run(a, b);
+      (b.collision ? collisions : clean)++;
+    }
+  }
+  EXPECT_GT(clean, cases / 2);
+  EXPECT_GT(collisions, cases / 2);
+  EXPECT_GT(reused, cases);
+  std::cout << "compiled: reuse in " << reused << " runs, " << clean << " collision-free, " << collisions
             << " collisions\n";
 }
 
