@@ -105,7 +105,13 @@ for round in $(seq 1 "$ROUNDS"); do
     fail "exit code $rc (want $want, or 0/1 if it had finished); stderr: $(head -c 300 "$dir/stderr")"
   fi
   if [ -n "$json" ]; then
-    got=$(jq -e '.interrupted' "$dir/stdout" 2>/dev/null) || fail "stdout is not one JSON object with \"interrupted\""
+    # (jq -e alone would fail on "interrupted": false, a run that finished.)
+    if jq -e -s 'length == 1 and (.[0] | type == "object" and has("interrupted"))' "$dir/stdout" >/dev/null 2>&1; then
+      got=$(jq -r '.interrupted' "$dir/stdout")
+    else
+      got=""
+      fail "stdout is not one JSON object with \"interrupted\""
+    fi
     [ "${got:-}" = "$interrupted" ] || fail "\"interrupted\": ${got:-missing}, exit code $rc"
   fi
   check_files "$dir/out"
