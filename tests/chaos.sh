@@ -66,11 +66,13 @@ check_files() {
 for round in $(seq 1 "$ROUNDS"); do
   dir="$WORK/r$round"
   mkdir -p "$dir"
+  # Every draw in this shell: bash reseeds RANDOM inside $(...), so a draw
+  # there would not replay from the seed.
   kind=$((RANDOM % 4))
-  sig=$([ $((RANDOM % 2)) -eq 0 ] && echo INT || echo TERM)
-  delay_ms=$((50 + RANDOM % 2450))
-  json=$([ $((RANDOM % 2)) -eq 0 ] && echo --json || echo "")
-  broken=$([ $((RANDOM % 2)) -eq 0 ] && echo "--break-gadget clause-loose" || echo "")
+  r_sig=$((RANDOM % 2)) delay_ms=$((50 + RANDOM % 2450)) r_json=$((RANDOM % 2)) r_broken=$((RANDOM % 2))
+  sig=$([ $r_sig -eq 0 ] && echo INT || echo TERM)
+  json=$([ $r_json -eq 0 ] && echo --json || echo "")
+  broken=$([ $r_broken -eq 0 ] && echo "--break-gadget clause-loose" || echo "")
   case $kind in
     0) what="fuzz $json $broken"
        cmd=("$GRIDLOCK" fuzz --seed "$RANDOM" --count 100000 --keep-going --out "$dir/out" $json $broken) ;;
