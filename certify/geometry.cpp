@@ -37,16 +37,19 @@ std::vector<NodeId> nodes_in_row_order(const std::vector<Vec2>& cells) {
   int64_t x0 = cells[0].x, x1 = x0, y0 = cells[0].y, y1 = y0;
   for (const Vec2& c : cells)
     x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+  // Spans in unsigned arithmetic: no overflow even for extreme int64 cells.
+  const auto span_x = static_cast<uint64_t>(x1) - static_cast<uint64_t>(x0);
+  const auto span_y = static_cast<uint64_t>(y1) - static_cast<uint64_t>(y0);
   const auto limit = static_cast<uint64_t>(4 * cells.size() + 64);
-  if (static_cast<uint64_t>(x1 - x0) >= limit || static_cast<uint64_t>(y1 - y0) >= limit) {
+  if (span_x >= limit || span_y >= limit) {
     std::sort(order.begin(), order.end(), [&](NodeId p, NodeId q) {
       return cells[p].y != cells[q].y ? cells[p].y < cells[q].y : cells[p].x < cells[q].x;
     });
     return order;
   }
   std::vector<NodeId> by_x(cells.size());
-  counting_pass(order, by_x, x0, static_cast<size_t>(x1 - x0) + 1, [&](NodeId w) { return cells[w].x; });
-  counting_pass(by_x, order, y0, static_cast<size_t>(y1 - y0) + 1, [&](NodeId w) { return cells[w].y; });
+  counting_pass(order, by_x, x0, static_cast<size_t>(span_x) + 1, [&](NodeId w) { return cells[w].x; });
+  counting_pass(by_x, order, y0, static_cast<size_t>(span_y) + 1, [&](NodeId w) { return cells[w].y; });
   return order;
 }
 

@@ -28,6 +28,16 @@ constexpr std::array<bool, 256> make_name_chars() {
   return ok;
 }
 constexpr std::array<bool, 256> kNameChar = make_name_chars();
+
+// Puts slot s into the first free slot from its hash on (linear probing;
+// the table has a free slot: load at most 1/2). Shared by insert and rehash.
+template <class Slots, class Slot>
+void place(Slots& slots, const Slot& s) {
+  const size_t mask = slots.size() - 1;
+  size_t i = s.hash & mask;
+  while (slots[i].id != UINT32_MAX) i = (i + 1) & mask;
+  slots[i] = s;
+}
 }  // namespace
 
 bool valid_name(const std::string& s) {
@@ -54,24 +64,15 @@ uint32_t NameIndex::hash(std::string_view s) {  // FNV-1a, then the high bits fo
 
 void NameIndex::insert(std::string_view name, uint32_t id) {
   if (2 * (size_ + 1) > slots_.size()) rehash(slots_.empty() ? 16 : 2 * slots_.size());
-  const uint32_t h = hash(name);
-  const size_t mask = slots_.size() - 1;
-  size_t i = h & mask;
-  while (slots_[i].id != UINT32_MAX) i = (i + 1) & mask;
-  slots_[i] = Slot{h, id};
+  place(slots_, Slot{hash(name), id});
   ++size_;
 }
 
 void NameIndex::rehash(size_t cap) {
   std::vector<Slot> old(cap);
   old.swap(slots_);
-  const size_t mask = cap - 1;
   for (const Slot& o : old)
-    if (o.id != UINT32_MAX) {
-      size_t j = o.hash & mask;
-      while (slots_[j].id != UINT32_MAX) j = (j + 1) & mask;
-      slots_[j] = o;
-    }
+    if (o.id != UINT32_MAX) place(slots_, o);
 }
 
 NodeId Instance::node_at(Vec2 c) const {

@@ -571,9 +571,11 @@ int64_t Simulator::Scratch::find_moving(int64_t span) {
   collect_moving();
   const int64_t vmax = sweep_boxes(span);
   if (one && solo_regions.size() + moving.size() <= 8 * regions().size()) {
-    solo[run_list[0]] = Solo{static_cast<uint32_t>(solo_regions.size()),
-                             static_cast<uint32_t>(solo_regions.size() + moving.size()), vmax};
+    const auto begin = static_cast<uint32_t>(solo_regions.size());
     for (uint32_t r : moving) solo_regions.push_back(r), solo_vel.push_back(rvel[r]);
+    // Recorded only once its entries exist (an allocation failure above
+    // leaves the coupling without a table, not with a dangling one).
+    solo[run_list[0]] = Solo{begin, static_cast<uint32_t>(solo_regions.size()), vmax};
   }
   return vmax;
 }

@@ -108,8 +108,9 @@ class Simulator {
   // interval in which one coupling alone runs (every interval of an order)
   // takes its moving regions and face velocities from the first such
   // interval of that coupling since the last rebind instead of cutting the
-  // tree again. The same pairs are tested: identical results and stats. On
-  // by default; off only for the twin tests (the old computation).
+  // tree again. The same pairs are tested: identical results and stats, but
+  // for the reused_intervals counter. On by default; off only for the twin
+  // tests (the old computation).
   void set_reuse_intervals(bool on) { reuse_ = on; }
 
   // Simulates prep from now on (its tables must outlive the simulator),
