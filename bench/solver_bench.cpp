@@ -121,14 +121,16 @@ void add_form(ConstraintSystem& s, int64_t base, std::vector<std::pair<CouplingI
   CollisionConstraint c;
   c.num_forms = 1;
   c.base = {base};
+  std::vector<int64_t> coef;
   for (auto& [q, v] : terms) {
     if (!c.rel.empty() && c.rel.back() == q) {
-      c.coef.back() += v;
+      coef.back() += v;
       continue;
     }
     c.rel.push_back(q);
-    c.coef.push_back(v);
+    coef.push_back(v);
   }
+  c.set_coef(coef);
   s.constraints.push_back(std::move(c));
 }
 

@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "common/internal/linear_interval.hpp"
+#include "common/random.hpp"
 #include "solver/internal/op_tree.hpp"
 #include "solver/internal/row_order.hpp"
 
@@ -43,7 +44,8 @@ struct LinForm {
 
 // Turns n normalised forms into a constraint; false if the pair can never
 // collide (some form is never positive).
-bool make_constraint(const LinForm* forms, size_t n, uint32_t ra, uint32_t rb, CollisionConstraint& out) {
+bool make_constraint(const LinForm* forms, size_t n, uint32_t ra, uint32_t rb, const std::shared_ptr<CoefRows>& table,
+                     CollisionConstraint& out) {
   uint8_t kept[8];
   uint32_t num_kept = 0;
   size_t num_terms = 0;
@@ -74,19 +76,21 @@ bool make_constraint(const LinForm* forms, size_t n, uint32_t ra, uint32_t rb, C
   std::sort(out.rel.begin(), out.rel.end());
   out.rel.erase(std::unique(out.rel.begin(), out.rel.end()), out.rel.end());
   out.rel.shrink_to_fit();
-  out.coef.assign(out.rel.size() * out.num_forms, 0);
+  std::vector<int64_t> coef(out.rel.size() * out.num_forms, 0);
   for (uint32_t i = 0; i < num_kept; ++i)
     for (auto& t : forms[kept[i]].terms) {
       size_t j = static_cast<size_t>(std::lower_bound(out.rel.begin(), out.rel.end(), t.first) - out.rel.begin());
-      out.coef[j * out.num_forms + i] = t.second;
+      coef[j * out.num_forms + i] = t.second;
     }
+  out.set_coef(coef, table);
   return true;
 }
 
 // make_constraint for one normalised form f that is positive somewhere,
-// without its copies: what make_constraint(&f, 1, ra, rb, out) gives (the gap
-// builder calls this for each of some thousands of neighbouring pairs).
-CollisionConstraint single_form_constraint(const LinForm& f, uint32_t ra, uint32_t rb) {
+// without its copies: what make_constraint(&f, 1, ra, rb, table, out) gives
+// (the gap builder calls this for each of some thousands of neighbouring pairs).
+CollisionConstraint single_form_constraint(const LinForm& f, uint32_t ra, uint32_t rb,
+                                           const std::shared_ptr<CoefRows>& table) {
   if (f.terms.empty()) throw std::logic_error("collision constraint with a permanent overlap");
   CollisionConstraint out;
   out.region_a = ra;
@@ -95,15 +99,70 @@ CollisionConstraint single_form_constraint(const LinForm& f, uint32_t ra, uint32
   out.form_index.assign(1, 0);
   out.base.assign(1, f.base);
   out.rel.reserve(f.terms.size());
-  out.coef.reserve(f.terms.size());
+  out.coef_rows.reserve(f.terms.size());
   for (const auto& [q, coef] : f.terms) {  // normalised: couplings increasing, distinct, coefficients non-zero
     out.rel.push_back(q);
-    out.coef.push_back(coef);
+    out.coef_rows.push_back(table->intern(&coef, 1));
   }
+  out.rows = table;
   return out;
 }
 
 }  // namespace
+
+const int64_t* CoefRows::intern_hashed(const int64_t* row, uint32_t n) {
+  uint64_t h = splitmix64_mix(n);
+  for (uint32_t i = 0; i < n; ++i) h = splitmix64_mix(h ^ static_cast<uint64_t>(row[i]));
+  if (2 * (rows_.size() + 1) > slots_.size()) grow();
+  const size_t mask = slots_.size() - 1;
+  for (size_t s = h & mask;; s = (s + 1) & mask) {
+    if (slots_[s] == 0) {
+      auto stored = std::make_unique<int64_t[]>(size_t{n} + 1);
+      stored[0] = n;
+      std::copy(row, row + n, stored.get() + 1);
+      rows_.push_back(std::move(stored));
+      slots_[s] = static_cast<uint32_t>(rows_.size());
+      return rows_.back().get() + 1;
+    }
+    const int64_t* r = rows_[slots_[s] - 1].get();
+    if (r[0] == n && std::equal(row, row + n, r + 1)) return r + 1;
+  }
+}
+
+// Doubles the slots (at least 16) and places every row again. O(rows).
+void CoefRows::grow() {
+  slots_.assign(std::max<size_t>(16, 2 * slots_.size()), 0);
+  const size_t mask = slots_.size() - 1;
+  for (size_t k = 0; k < rows_.size(); ++k) {
+    const int64_t* r = rows_[k].get();
+    const auto n = static_cast<uint32_t>(r[0]);
+    uint64_t h = splitmix64_mix(n);
+    for (uint32_t i = 0; i < n; ++i) h = splitmix64_mix(h ^ static_cast<uint64_t>(r[i + 1]));
+    size_t s = h & mask;
+    while (slots_[s] != 0) s = (s + 1) & mask;
+    slots_[s] = static_cast<uint32_t>(k + 1);
+  }
+}
+
+void CollisionConstraint::set_coef(const std::vector<int64_t>& coef, std::shared_ptr<CoefRows> table) {
+  if (num_forms == 0 || coef.size() != rel.size() * num_forms)
+    throw std::logic_error("CollisionConstraint::set_coef: not rel.size() * num_forms coefficients");
+  if (!table) table = std::make_shared<CoefRows>();
+  coef_rows.resize(rel.size());
+  for (size_t j = 0; j < rel.size(); ++j) coef_rows[j] = table->intern(coef.data() + j * num_forms, num_forms);
+  rows = std::move(table);
+}
+
+std::vector<int64_t> CollisionConstraint::coef() const {
+  std::vector<int64_t> out;
+  append_coef(out);
+  return out;
+}
+
+void CollisionConstraint::append_coef(std::vector<int64_t>& out) const {
+  out.reserve(out.size() + coef_rows.size() * num_forms);
+  for (const int64_t* r : coef_rows) out.insert(out.end(), r, r + num_forms);
+}
 
 size_t ConstraintSystem::total_forms() const {
   size_t s = 0;
@@ -136,6 +195,7 @@ ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree,
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
   std::vector<NodeId> order = nodes_by_row(inst);
+  const auto table = std::make_shared<CoefRows>();
   LinForm f;
   for (const RowRun& run : row_runs(inst, order)) {
     for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
@@ -158,7 +218,7 @@ ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree,
         f.terms.push_back({ops[kb].coupling, 1});
       f.normalise();
       if (f.max_value() <= 0) continue;  // never positive: the pair never overlaps
-      sys.constraints.push_back(single_form_constraint(f, a, b));
+      sys.constraints.push_back(single_form_constraint(f, a, b, table));
     }
   }
   sys.index();
@@ -344,6 +404,7 @@ struct PairScan {
   const RegionAnchors& an;
   const Deadline* deadline;
   ConstraintSystem& sys;
+  const std::shared_ptr<CoefRows> table = std::make_shared<CoefRows>();  // every constraint's rows
 
   using Terms = TermList;
   std::vector<LinForm> local;  // 4 per region: D_ref[f] - D_main along f's axis, growth included
@@ -419,7 +480,7 @@ struct PairScan {
     combine(forms[6], sa.base[3] - sa.base[2], 0, nullptr, local_of(a, 3), local_of(a, 2));
     combine(forms[7], sb.base[3] - sb.base[2], 0, nullptr, local_of(b, 3), local_of(b, 2));
     CollisionConstraint c;
-    if (!make_constraint(forms, 8, a, b, c)) return;
+    if (!make_constraint(forms, 8, a, b, table, c)) return;
     const bool refutes = c.rel.size() == 1 && step_collides(c.base.data(), c.coef_of(0), c.num_forms);
     sys.constraints.push_back(std::move(c));
     if (refutes && stop_at_refuting) sys.refuting = static_cast<uint32_t>(sys.constraints.size() - 1);

@@ -154,7 +154,7 @@ class ComponentEncoder {
   void encode_by_free_offsets(const CollisionConstraint& c) {
     // Identical pairs (same forms) are common in gadget rows: cache.
     std::vector<int64_t> key(c.base);
-    key.insert(key.end(), c.coef.begin(), c.coef.end());
+    c.append_coef(key);
     key.push_back(c.num_forms);
     auto it = cache_.find(key);
     if (it == cache_.end()) it = cache_.emplace(std::move(key), free_offsets(c)).first;
@@ -251,7 +251,7 @@ std::optional<std::vector<Rational>> layered_candidate(const Component& comp, co
     const CollisionConstraint& c = sys.constraints[ci];
     if (c.rel.size() != 2) continue;
     std::vector<int64_t> key(c.base);
-    key.insert(key.end(), c.coef.begin(), c.coef.end());
+    c.append_coef(key);
     key.push_back(c.num_forms);
     auto it = cache.find(key);
     if (it == cache.end()) it = cache.emplace(std::move(key), free_offsets(c)).first;

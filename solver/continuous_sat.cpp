@@ -21,7 +21,7 @@ namespace gridlock {
 
 const std::vector<OffsetInterval>& cached_free_offsets(const CollisionConstraint& c, FreeOffsetsCache& cache) {
   std::vector<int64_t> key(c.base);
-  key.insert(key.end(), c.coef.begin(), c.coef.end());
+  c.append_coef(key);
   key.push_back(c.num_forms);
   auto it = cache.find(key);
   if (it == cache.end()) it = cache.emplace(std::move(key), free_offsets(c)).first;

@@ -399,8 +399,9 @@ TEST(CertifyBounds, OffsetsAgreeWithSolver) {
     c.num_forms = static_cast<uint32_t>(small(1, 4));
     c.rel = {0, 1};
     for (uint32_t k = 0; k < c.num_forms; ++k) c.base.push_back(small(-2, 2));
-    c.coef.assign(2 * static_cast<size_t>(c.num_forms), 0);
-    for (auto& x : c.coef) x = small(-2, 2);
+    std::vector<int64_t> coef(2 * static_cast<size_t>(c.num_forms), 0);
+    for (auto& x : coef) x = small(-2, 2);
+    c.set_coef(coef);
     std::vector<OffsetForm> forms;
     forms.reserve(c.num_forms);
     for (uint32_t k = 0; k < c.num_forms; ++k)

@@ -1,12 +1,13 @@
 // The linear-time continuous checker against the Simulator running every
 // coupling at once; the row order against a comparison sort; the collision
 // constraints against the Simulator on random orders; the pair builder
-// against its per-face twin.
+// against its per-face twin; the interned coefficient rows against a map.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <set>
 #include <tuple>
 
 #include "common/random.hpp"
@@ -233,8 +234,8 @@ TEST(Constraints, PairBuilderMatchesPerFaceTwin) {
       auto it = by_pair.find({t.region_a, t.region_b});
       ASSERT_NE(it, by_pair.end()) << "seed " << seed << ": pair " << t.region_a << "," << t.region_b << " missing";
       const CollisionConstraint& c = *it->second;
-      EXPECT_EQ(std::tie(c.num_forms, c.form_index, c.base, c.rel, c.coef),
-                std::tie(t.num_forms, t.form_index, t.base, t.rel, t.coef))
+      EXPECT_EQ(std::make_tuple(c.num_forms, c.form_index, c.base, c.rel, c.coef()),
+                std::make_tuple(t.num_forms, t.form_index, t.base, t.rel, t.coef()))
           << "seed " << seed << ": pair " << t.region_a << "," << t.region_b;
     }
     ++compared;
@@ -252,6 +253,60 @@ TEST(Constraints, PairBuilderMatchesPerFaceTwin) {
 // such a constraint, the whole system. Every stopped instance is NO by the
 // brute-force twin (every order through the simulator) when it is small
 // enough, and by the states engine on the full system otherwise.
+// The interned coefficient rows against a std::map: equal rows give one
+// pointer, distinct rows distinct ones, and every stored row keeps its values
+// while the table grows (rows of 1-8 values drawn from a small range, so
+// that most repeat).
+TEST(Constraints, CoefRowsInternLikeAMap) {
+  const uint64_t seed = test::base_seed(24810);
+  Rng rng(seed);
+  CoefRows table;
+  std::map<std::vector<int64_t>, const int64_t*> twin;
+  std::vector<std::pair<std::vector<int64_t>, const int64_t*>> seen;
+  for (int i = 0; i < test::scaled(20000); ++i) {
+    std::vector<int64_t> row(1 + rng.below(8));
+    for (auto& v : row) v = static_cast<int64_t>(rng.below(5)) - 2;
+    if (rng.below(50) == 0) row[0] = static_cast<int64_t>(rng.next());  // a rare large value
+    const int64_t* p = table.intern(row.data(), static_cast<uint32_t>(row.size()));
+    auto [it, added] = twin.emplace(row, p);
+    ASSERT_EQ(it->second, p) << "seed " << seed << " row " << i << ": an equal row got another pointer";
+    if (i % 7 == 0) seen.emplace_back(row, p);
+  }
+  ASSERT_EQ(table.size(), twin.size()) << "seed " << seed;
+  std::set<const int64_t*> distinct;
+  for (const auto& [row, p] : twin) distinct.insert(p);
+  EXPECT_EQ(distinct.size(), twin.size()) << "seed " << seed << ": distinct rows share a pointer";
+  for (const auto& [row, p] : seen) ASSERT_TRUE(std::equal(row.begin(), row.end(), p)) << "seed " << seed;
+}
+
+// Built systems keep one table for all their constraints, with each distinct
+// row once (gap systems of horizontal instances, pair systems of any).
+TEST(Constraints, BuiltSystemsShareOneTableOfDistinctRows) {
+  const uint64_t base = test::base_seed(24820);
+  int checked = 0;
+  for (int i = 0; i < test::scaled(1500); ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    const Instance inst = random_instance(horizontal_params(seed), seed);
+    const FaceNets faces = FaceNets::build(inst);
+    if (std::any_of(faces.coupling_breaks_cycle.begin(), faces.coupling_breaks_cycle.end(), [](char b) { return b; }))
+      continue;
+    const SpanningTree tree = SpanningTree::build(inst);
+    for (const ConstraintSystem& sys : {build_gap_constraints(inst, tree), build_pair_constraints(inst, tree)}) {
+      if (sys.constraints.empty()) continue;
+      const CoefRows* table = sys.constraints[0].rows.get();
+      std::set<std::vector<int64_t>> rows;
+      for (const CollisionConstraint& c : sys.constraints) {
+        ASSERT_EQ(c.rows.get(), table) << "seed " << seed;
+        ASSERT_EQ(c.coef_rows.size(), c.rel.size()) << "seed " << seed;
+        for (size_t j = 0; j < c.rel.size(); ++j) rows.emplace(c.coef_of(j), c.coef_of(j) + c.num_forms);
+      }
+      ASSERT_EQ(table->size(), rows.size()) << "seed " << seed;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, test::scaled(1500) / 2) << "too few non-empty systems";
+}
+
 TEST(Constraints, StopAtRefutingIsAPrefixThatRefutes) {
   const uint64_t base = test::base_seed(9600);
   int stopped = 0, whole = 0, by_twin = 0;
@@ -276,8 +331,8 @@ TEST(Constraints, StopAtRefutingIsAPrefixThatRefutes) {
     for (size_t k = 0; k < stop.constraints.size(); ++k) {
       const CollisionConstraint& a = stop.constraints[k];
       const CollisionConstraint& b = full.constraints[k];
-      ASSERT_EQ(std::tie(a.region_a, a.region_b, a.base, a.rel, a.coef, a.form_index),
-                std::tie(b.region_a, b.region_b, b.base, b.rel, b.coef, b.form_index))
+      ASSERT_EQ(std::make_tuple(a.region_a, a.region_b, a.base, a.rel, a.coef(), a.form_index),
+                std::make_tuple(b.region_a, b.region_b, b.base, b.rel, b.coef(), b.form_index))
           << "seed " << seed << " constraint " << k;
     }
     if (stop.refuting == kNone) {

@@ -48,10 +48,12 @@ ConstraintSystem random_system(Rng& rng, size_t k) {
     c.num_forms = 1;
     c.base = {rng.between(-5, 0)};
     c.rel = ids;
+    std::vector<int64_t> coef;
     for (size_t j = 0; j < ids.size(); ++j) {
       const int64_t v = rng.between(1, 4);
-      c.coef.push_back(rng.coin() ? v : -v);
+      coef.push_back(rng.coin() ? v : -v);
     }
+    c.set_coef(coef);
     s.constraints.push_back(std::move(c));
   }
   s.index();
@@ -158,8 +160,8 @@ ConstraintSystem tight_system(Rng& rng, size_t k, size_t gaps) {
     std::sort(by_pos.begin(), by_pos.end(), [&](size_t x, size_t y) { return pos[c.rel[x]] < pos[c.rel[y]]; });
     int64_t sum = 0, peak = 0;
     for (size_t j : by_pos) {
-      sum += c.coef[j];
-      if (c.coef[j] > 0) peak = std::max(peak, sum);
+      sum += c.coef_of(j)[0];
+      if (c.coef_of(j)[0] > 0) peak = std::max(peak, sum);
     }
     c.base = {-peak + (g == 0 && raise ? 1 : 0)};
     s.constraints.push_back(std::move(c));
@@ -220,7 +222,7 @@ CollisionConstraint before_gap(CouplingId a, CouplingId b) {
   c.num_forms = 1;
   c.base = {0};
   c.rel = {std::min(a, b), std::max(a, b)};
-  c.coef = a < b ? std::vector<int64_t>{-1, 1} : std::vector<int64_t>{1, -1};
+  c.set_coef(a < b ? std::vector<int64_t>{-1, 1} : std::vector<int64_t>{1, -1});
   return c;
 }
 

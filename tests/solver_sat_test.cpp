@@ -43,10 +43,12 @@ ConstraintSystem random_gap_system(Rng& rng, size_t k) {
     c.num_forms = 1;
     c.base = {rng.between(-4, 0)};
     c.rel = ids;
+    std::vector<int64_t> coef;
     for (size_t j = 0; j < r; ++j) {
       int64_t v = rng.between(1, 3);
-      c.coef.push_back(rng.coin() ? v : -v);
+      coef.push_back(rng.coin() ? v : -v);
     }
+    c.set_coef(coef);
     s.constraints.push_back(std::move(c));
   }
   s.index();
@@ -167,7 +169,7 @@ TEST(SatEngine, ChainAndClosingGap) {
       c.num_forms = 1;
       c.base = {0};
       c.rel = {std::min(a, b), std::max(a, b)};
-      c.coef = a < b ? std::vector<int64_t>{-1, 1} : std::vector<int64_t>{1, -1};
+      c.set_coef(a < b ? std::vector<int64_t>{-1, 1} : std::vector<int64_t>{1, -1});
       s.constraints.push_back(c);
     };
     for (CouplingId i = 0; i + 1 < n; ++i) before(i, i + 1);

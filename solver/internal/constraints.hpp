@@ -28,7 +28,9 @@
 
 #include "common/limits.hpp"
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,14 +40,51 @@
 
 namespace gridlock {
 
+// Distinct coefficient rows, each stored once and never moved: a pointer
+// returned by intern stays valid while the table lives. Pair systems repeat
+// a few rows very many times (a planted 300-coupling sparse shape: 244 216
+// constraints, 8.7 million rows of 1-8 coefficients, 137 distinct), so a
+// constraint keeps one pointer per row instead of the row. Interning is not
+// thread-safe; reading is.
+class CoefRows {
+ public:
+  // The stored copy of row[0..n) (n >= 1), added if new. O(n) expected;
+  // O(1) for one small value (every gap row of a compiled formula).
+  const int64_t* intern(const int64_t* row, uint32_t n) {
+    if (n != 1 || row[0] < -kSmall || row[0] > kSmall) return intern_hashed(row, n);
+    const int64_t*& p = small_[static_cast<size_t>(row[0] + kSmall)];
+    if (p == nullptr) p = intern_hashed(row, n);
+    return p;
+  }
+  size_t size() const { return rows_.size(); }
+
+ private:
+  static constexpr int64_t kSmall = 16;
+  const int64_t* intern_hashed(const int64_t* row, uint32_t n);
+  void grow();
+  std::array<const int64_t*, 2 * kSmall + 1> small_{};  // one-value rows -kSmall..kSmall, once interned
+  std::vector<std::unique_ptr<int64_t[]>> rows_;        // each: n, then the n values
+  std::vector<uint32_t> slots_;                         // open addressing: index in rows_ + 1, 0 empty
+};
+
 struct CollisionConstraint {
   uint32_t region_a = kNone, region_b = kNone;  // Regions numbering (for messages)
   uint32_t num_forms = 0;                       // 1..8
   std::vector<int64_t> base;                    // per form: value with no coupling done
   std::vector<CouplingId> rel;                  // couplings with a non-zero coefficient, increasing
-  std::vector<int64_t> coef;                    // rel.size() * num_forms: coef[j * num_forms + i]
+  std::vector<const int64_t*> coef_rows;        // per rel entry j: its num_forms coefficients (in *rows)
+  std::shared_ptr<CoefRows> rows;               // owns what coef_rows points to (shared by a system)
   std::vector<uint8_t> form_index;              // per form: its place among the eight above (0..7; gaps: 0)
-  const int64_t* coef_of(size_t j) const { return coef.data() + j * num_forms; }
+  // Coupling rel[j]'s coefficient on each form. O(1).
+  const int64_t* coef_of(size_t j) const { return coef_rows[j]; }
+  // Sets the rows from the row-major matrix coef[j * num_forms + i]
+  // (rel.size() * num_forms entries; num_forms and rel set first), interned
+  // into table (a new one when null). O(size) expected.
+  void set_coef(const std::vector<int64_t>& coef, std::shared_ptr<CoefRows> table = nullptr);
+  // That matrix back (tests), or appended to out (cache keys).
+  // O(rel.size() * num_forms).
+  std::vector<int64_t> coef() const;
+  void append_coef(std::vector<int64_t>& out) const;
 };
 
 enum class ConstraintKind { Gaps, Pairs };

@@ -102,10 +102,12 @@ ConstraintSystem reference_pair_constraints(const Instance& inst, const Spanning
           row.resize(c.num_forms, 0);
           row[i] = v;
         }
+      std::vector<int64_t> coef;
       for (const auto& [q, row] : by_coupling) {
         c.rel.push_back(q);
-        c.coef.insert(c.coef.end(), row.begin(), row.end());
+        coef.insert(coef.end(), row.begin(), row.end());
       }
+      c.set_coef(coef);
       sys.constraints.push_back(std::move(c));
     }
   sys.index();
