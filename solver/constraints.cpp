@@ -170,11 +170,18 @@ size_t ConstraintSystem::total_forms() const {
   return s;
 }
 
-void ConstraintSystem::index() {
-  of_coupling.assign(num_couplings, {});
-  for (uint32_t ci = 0; ci < constraints.size(); ++ci)
-    for (uint32_t j = 0; j < constraints[ci].rel.size(); ++j) of_coupling[constraints[ci].rel[j]].push_back({ci, j});
+void CouplingIndex::build(size_t num_couplings, const std::vector<CollisionConstraint>& cs) {
+  start_.assign(num_couplings + 1, 0);
+  for (const CollisionConstraint& c : cs)
+    for (CouplingId q : c.rel) ++start_[q + 1];
+  for (size_t q = 0; q < num_couplings; ++q) start_[q + 1] += start_[q];
+  entries_.resize(start_[num_couplings]);
+  std::vector<size_t> next(start_.begin(), start_.end() - 1);
+  for (uint32_t ci = 0; ci < cs.size(); ++ci)
+    for (uint32_t j = 0; j < cs[ci].rel.size(); ++j) entries_[next[cs[ci].rel[j]]++] = {ci, j};
 }
+
+void ConstraintSystem::index() { of_coupling.build(num_couplings, constraints); }
 
 bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
   // Each form is s_i + c_i p > 0, inside the open window (0, 1).

@@ -307,6 +307,36 @@ TEST(Constraints, BuiltSystemsShareOneTableOfDistinctRows) {
   EXPECT_GT(checked, test::scaled(1500) / 2) << "too few non-empty systems";
 }
 
+// The flat per-coupling index against per-coupling lists filled in
+// constraint order (what it replaced), on the pair systems of random shapes.
+TEST(Constraints, CouplingIndexMatchesPerCouplingLists) {
+  const uint64_t base = test::base_seed(24830);
+  size_t entries = 0;
+  for (int i = 0; i < test::scaled(1500); ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    RandomFamilyParams f;
+    f.family = static_cast<ShapeFamily>(i % 5);
+    f.couplings = 3 + static_cast<uint32_t>(i % 30);
+    const Instance inst = random_family_instance(f, seed);
+    const FaceNets faces = FaceNets::build(inst);
+    if (std::any_of(faces.coupling_breaks_cycle.begin(), faces.coupling_breaks_cycle.end(), [](char b) { return b; }))
+      continue;
+    const ConstraintSystem sys = build_pair_constraints(inst, SpanningTree::build(inst));
+    std::vector<std::vector<CouplingIndex::Entry>> lists(sys.num_couplings);
+    for (uint32_t ci = 0; ci < sys.constraints.size(); ++ci)
+      for (uint32_t j = 0; j < sys.constraints[ci].rel.size(); ++j)
+        lists[sys.constraints[ci].rel[j]].push_back({ci, j});
+    ASSERT_EQ(sys.of_coupling.size(), lists.size()) << "seed " << seed;
+    for (size_t q = 0; q < lists.size(); ++q) {
+      const auto got = sys.of_coupling[q];
+      ASSERT_TRUE(std::equal(got.begin(), got.end(), lists[q].begin(), lists[q].end()))
+          << "seed " << seed << " q " << q;
+      entries += got.size();
+    }
+  }
+  EXPECT_GT(entries, size_t{1000});
+}
+
 TEST(Constraints, StopAtRefutingIsAPrefixThatRefutes) {
   const uint64_t base = test::base_seed(9600);
   int stopped = 0, whole = 0, by_twin = 0;

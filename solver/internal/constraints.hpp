@@ -31,6 +31,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -89,12 +90,31 @@ struct CollisionConstraint {
 
 enum class ConstraintKind { Gaps, Pairs };
 
+// Per coupling q: the entries (constraint index, index j of q in that
+// constraint's rel), in constraint order, as one flat array (no vector per
+// coupling, no growth slack: a pair system has millions of entries).
+class CouplingIndex {
+ public:
+  using Entry = std::pair<uint32_t, uint32_t>;
+  // Coupling q's entries. O(1); q < size().
+  std::span<const Entry> operator[](size_t q) const {
+    return {entries_.data() + start_[q], entries_.data() + start_[q + 1]};
+  }
+  size_t size() const { return start_.empty() ? 0 : start_.size() - 1; }
+  // Rebuilds from every rel of cs (couplings < num_couplings). O(num_couplings + entries).
+  void build(size_t num_couplings, const std::vector<CollisionConstraint>& cs);
+
+ private:
+  std::vector<size_t> start_;  // num_couplings + 1 offsets into entries_
+  std::vector<Entry> entries_;
+};
+
 struct ConstraintSystem {
   ConstraintKind kind = ConstraintKind::Pairs;
   size_t num_couplings = 0;
   std::vector<CollisionConstraint> constraints;
   // Per coupling: (constraint index, index j of the coupling in its rel).
-  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> of_coupling;
+  CouplingIndex of_coupling;
   uint64_t candidate_pairs = 0;  // pairs examined by the builder (statistics)
   // The last constraint when the builder stopped at one that alone makes
   // every schedule collide (see build_pair_constraints); kNone otherwise.
