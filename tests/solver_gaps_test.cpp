@@ -337,7 +337,10 @@ auto system_fields(const ConstraintSystem& s) {
       cs;
   for (const CollisionConstraint& c : s.constraints)
     cs.emplace_back(c.region_a, c.region_b, c.num_forms, c.base, c.rel, c.coef, c.form_index);
-  return std::make_tuple(static_cast<int>(s.kind), s.num_couplings, s.candidate_pairs, s.refuting, s.of_coupling, cs);
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> index(s.num_couplings);
+  for (size_t q = 0; q < s.num_couplings; ++q)
+    for (const auto& [ci, j] : s.of_coupling[q]) index[q].emplace_back(ci, j);
+  return std::make_tuple(static_cast<int>(s.kind), s.num_couplings, s.candidate_pairs, s.refuting, index, cs);
 }
 
 TEST(PreparedRowsTwin, GapCheckerAndConstraintsAgreeWithTheInstancePath) {
