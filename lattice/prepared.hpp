@@ -5,13 +5,15 @@
 // collide (solver/collide.hpp). verify builds one per formula instead of one
 // per check (docs/performance.md, "Fuzzing throughput").
 //
-// The tables are exactly what SpanningTree::build(inst), Regions::build(inst)
-// and FaceNets::build(inst) return: every entry point that takes a
-// `const Instance&` builds a PreparedInstance and gives the same answers.
+// The tables are exactly what SpanningTree::build(inst), Regions::build(inst),
+// FaceNets::build(inst) and nodes_by_row(inst) (lattice/row_order.hpp)
+// return: every entry point that takes a `const Instance&` builds a
+// PreparedInstance, or the table it needs, and gives the same answers.
 #pragma once
 
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
+#include "lattice/row_order.hpp"
 
 namespace gridlock {
 
@@ -22,7 +24,9 @@ struct PreparedInstance {
       : inst(instance),
         tree(SpanningTree::build(instance)),
         regions(Regions::build(instance)),
-        faces(FaceNets::build(instance)) {}
+        faces(FaceNets::build(instance)),
+        rows(nodes_by_row(instance)),
+        runs(row_runs(instance, rows)) {}
   PreparedInstance(const PreparedInstance&) = delete;
   PreparedInstance& operator=(const PreparedInstance&) = delete;
 
@@ -30,6 +34,8 @@ struct PreparedInstance {
   const SpanningTree tree;  // rooted at the anchor
   const Regions regions;
   const FaceNets faces;
+  const std::vector<NodeId> rows;  // every node, by (y, x): the gap checkers' order
+  const std::vector<RowRun> runs;  // row_runs(inst, rows)
 };
 
 }  // namespace gridlock

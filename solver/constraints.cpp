@@ -6,8 +6,8 @@
 
 #include "common/internal/linear_interval.hpp"
 #include "common/random.hpp"
+#include "lattice/row_order.hpp"
 #include "solver/internal/op_tree.hpp"
-#include "solver/internal/row_order.hpp"
 
 namespace gridlock {
 
@@ -193,7 +193,10 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf) {
 
 namespace {
 
+// order and runs: nodes_by_row(inst) and its row_runs (a PreparedInstance's
+// rows and runs, or built for the call).
 ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree, const Regions& regions,
+                                 const std::vector<NodeId>& order, const std::vector<RowRun>& runs,
                                  const Deadline* deadline) {
   ConstraintSystem sys;
   sys.kind = ConstraintKind::Gaps;
@@ -201,10 +204,9 @@ ConstraintSystem gap_constraints(const Instance& inst, const SpanningTree& tree,
   const OpTree ot(inst, tree);
   const auto& cells = inst.cells();
   const auto& ops = inst.ops();
-  std::vector<NodeId> order = nodes_by_row(inst);
   const auto table = std::make_shared<CoefRows>();
   LinForm f;
-  for (const RowRun& run : row_runs(inst, order)) {
+  for (const RowRun& run : runs) {
     for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
       NodeId a = order[i], b = order[i + 1];
       if (deadline && (sys.candidate_pairs & 63) == 0) deadline->check();
@@ -544,10 +546,11 @@ ConstraintSystem pair_constraints(const Instance& inst, const SpanningTree& tree
 }  // namespace
 
 ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline) {
-  return gap_constraints(inst, tree, Regions::build(inst), deadline);
+  const std::vector<NodeId> order = nodes_by_row(inst);
+  return gap_constraints(inst, tree, Regions::build(inst), order, row_runs(inst, order), deadline);
 }
 ConstraintSystem build_gap_constraints(const PreparedInstance& prep, const Deadline* deadline) {
-  return gap_constraints(prep.inst, prep.tree, prep.regions, deadline);
+  return gap_constraints(prep.inst, prep.tree, prep.regions, prep.rows, prep.runs, deadline);
 }
 ConstraintSystem build_pair_constraints(const Instance& inst, const SpanningTree& tree, const Deadline* deadline,
                                         bool stop_at_refuting) {

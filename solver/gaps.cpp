@@ -5,8 +5,9 @@
 
 #include "common/assert.hpp"
 #include "lattice/motion.hpp"
+#include "lattice/prepared.hpp"
+#include "lattice/row_order.hpp"
 #include "solver/internal/op_tree.hpp"
-#include "solver/internal/row_order.hpp"
 
 namespace gridlock {
 
@@ -125,11 +126,12 @@ void check_cycles(const Instance& inst, const BfsTree& t, GapVerdict& v) {
 // Gaps: consecutive nodes of each row, from the radix order, at their final
 // displacements D. Counts them into v and reports the first negative one
 // (if v has no reason yet).
-void check_row_gaps(const Instance& inst, const std::vector<int64_t>& D, GapVerdict& v) {
+// order and runs: nodes_by_row(inst) and its row_runs.
+void check_row_gaps(const Instance& inst, const std::vector<NodeId>& order, const std::vector<RowRun>& runs,
+                    const std::vector<int64_t>& D, GapVerdict& v) {
   const auto& cells = inst.cells();
-  const std::vector<NodeId> order = nodes_by_row(inst);
   bool first_gap = v.reason == GapVerdict::Reason::None;
-  for (const RowRun& run : row_runs(inst, order))
+  for (const RowRun& run : runs)
     for (uint32_t i = run.begin; i + 1 < run.end; ++i) {
       NodeId a = order[i], b = order[i + 1];
       ++v.gaps_checked;
@@ -151,8 +153,8 @@ void check_row_gaps(const Instance& inst, const std::vector<int64_t>& D, GapVerd
 
 // The operations that change the reported gap (v.left, v.right) into
 // v.changes: O(n), once.
-void list_gap_changes(const Instance& inst, GapVerdict& v) {
-  const SpanningTree tree = SpanningTree::build(inst);
+// tree: SpanningTree::build(inst), rooted at the anchor.
+void list_gap_changes(const Instance& inst, const SpanningTree& tree, GapVerdict& v) {
   const OpTree ot(inst, tree);
   // Each operation appears once on the path, and a growth is never on it.
   ot.for_each_op_on_path(face_ref(inst, v.left, true), face_ref(inst, v.right, false), [&](OpId k, int sign) {
@@ -163,15 +165,28 @@ void list_gap_changes(const Instance& inst, GapVerdict& v) {
     if (grows_toward(inst, w, w == v.left ? Dir::PosX : Dir::NegX)) v.changes.push_back({inst.op_of_node(w), -1});
 }
 
-}  // namespace
-
-GapVerdict check_gaps(const Instance& inst) {
+// The checks up to the reported gap's operations (which need the tree).
+GapVerdict gap_verdict(const Instance& inst, const std::vector<NodeId>& order, const std::vector<RowRun>& runs) {
   GRIDLOCK_REQUIRE(inst.horizontal_only(), "check_gaps needs a horizontal-only instance");
   GapVerdict v;
   const BfsTree t = final_displacements(inst);
   check_cycles(inst, t, v);
-  check_row_gaps(inst, t.D, v);
-  if (v.reason == GapVerdict::Reason::Gap) list_gap_changes(inst, v);
+  check_row_gaps(inst, order, runs, t.D, v);
+  return v;
+}
+
+}  // namespace
+
+GapVerdict check_gaps(const Instance& inst) {
+  const std::vector<NodeId> order = nodes_by_row(inst);
+  GapVerdict v = gap_verdict(inst, order, row_runs(inst, order));
+  if (v.reason == GapVerdict::Reason::Gap) list_gap_changes(inst, SpanningTree::build(inst), v);
+  return v;
+}
+
+GapVerdict check_gaps(const PreparedInstance& prep) {
+  GapVerdict v = gap_verdict(prep.inst, prep.rows, prep.runs);
+  if (v.reason == GapVerdict::Reason::Gap) list_gap_changes(prep.inst, prep.tree, v);
   return v;
 }
 

@@ -15,7 +15,7 @@
 //     operation that narrows it (a growth into the gap narrows it; a
 //     contracting node's face bound to its partner is taken into account).
 //
-// No comparison sort: rows come from a radix sort (solver/internal/row_order.hpp).
+// No comparison sort: rows come from a radix sort (lattice/row_order.hpp).
 #pragma once
 
 #include <cstdint>
@@ -26,6 +26,8 @@
 #include "lattice/instance.hpp"
 
 namespace gridlock {
+
+struct PreparedInstance;  // lattice/prepared.hpp
 
 struct GapChange {
   OpId op = kNone;
@@ -61,6 +63,9 @@ struct GapVerdict {
 // Complexity: O(n + e) time and memory (plus O(n) for the one reported gap's
 // operations).
 GapVerdict check_gaps(const Instance& inst);
+// The same from prepared tables (the row order and, for a reported gap, the
+// tree are not rebuilt). The same verdict, field for field.
+GapVerdict check_gaps(const PreparedInstance& prep);
 
 // One line for the verdict's reason, e.g. "gap in row 0 between (0,0) and
 // (2,0): initial size 1, final size -1; narrowed by g1 (-1), g2 (-1)".

@@ -11,11 +11,14 @@
 #include <tuple>
 
 #include "common/random.hpp"
+#include "lattice/prepared.hpp"
 #include "lattice/random_instance.hpp"
+#include "lattice/row_order.hpp"
 #include "lattice/simulate.hpp"
+#include "reductions/compile.hpp"
 #include "solver/gaps.hpp"
 #include "solver/internal/constraints.hpp"
-#include "solver/internal/row_order.hpp"
+#include "support/cnf_testing.hpp"
 #include "support/reference_constraints.hpp"
 #include "support/reference_solver.hpp"
 #include "support/test_scale.hpp"
@@ -391,6 +394,69 @@ TEST(Constraints, StopAtRefutingIsAPrefixThatRefutes) {
   EXPECT_GT(by_twin, 20);
   std::printf("[ stop ] %d stopped (%d checked by every order), %d whole (seed %llu)\n", stopped, by_twin, whole,
               static_cast<unsigned long long>(base));
+}
+
+// Twin of the shared row order: the gap checker and the gap constraints from
+// a PreparedInstance (its rows, runs and tree, built once) against the same
+// functions from the bare Instance (which sort the rows and build the tree
+// themselves), field for field, on seeded random horizontal instances and,
+// one case in four, compiled random formulas (verify's case).
+Instance prepared_twin_case(uint64_t seed, int i) {
+  if (i % 4 != 3) return random_instance(horizontal_params(seed), seed);
+  Rng rng(seed);
+  const int n = static_cast<int>(rng.between(1, 6)), m = static_cast<int>(rng.between(1, 12));
+  return compile_formula(test::random_cnf(rng, n, m, 1, 3, rng.below(3) == 0)).instance;
+}
+
+auto verdict_fields(const GapVerdict& v) {
+  std::vector<std::pair<OpId, int64_t>> changes;
+  for (const GapChange& c : v.changes) changes.emplace_back(c.op, c.delta);
+  return std::make_tuple(v.collision_free, static_cast<int>(v.reason), v.row, v.left, v.right, v.initial_size,
+                         v.final_size, changes, v.cycle, v.mismatch, v.gaps_checked, v.negative_gaps, v.cycles_checked,
+                         v.open_cycles);
+}
+
+auto system_fields(const ConstraintSystem& s) {
+  std::vector<std::tuple<uint32_t, uint32_t, uint32_t, std::vector<int64_t>, std::vector<CouplingId>,
+                         std::vector<int64_t>, std::vector<uint8_t>>>
+      cs;
+  for (const CollisionConstraint& c : s.constraints)
+    cs.emplace_back(c.region_a, c.region_b, c.num_forms, c.base, c.rel, c.coef, c.form_index);
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> index(s.num_couplings);
+  for (size_t q = 0; q < s.num_couplings; ++q)
+    for (const auto& [ci, j] : s.of_coupling[q]) index[q].emplace_back(ci, j);
+  return std::make_tuple(static_cast<int>(s.kind), s.num_couplings, s.candidate_pairs, s.refuting, index, cs);
+}
+
+TEST(PreparedRowsTwin, GapCheckerAndConstraintsAgreeWithTheInstancePath) {
+  const uint64_t base = 24800;  // not scaled: the counts below are asserted
+  int gaps = 0, cycles = 0, clean = 0, systems = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const uint64_t seed = base + static_cast<uint64_t>(i);
+    const Instance inst = prepared_twin_case(seed, i);
+    ASSERT_TRUE(inst.horizontal_only()) << "seed " << seed;
+    const PreparedInstance prep(inst);
+    const std::vector<NodeId> rows = nodes_by_row(inst);
+    ASSERT_EQ(prep.rows, rows) << "seed " << seed;
+    std::vector<std::pair<uint32_t, uint32_t>> runs, prep_runs;
+    for (const RowRun& r : row_runs(inst, rows)) runs.emplace_back(r.begin, r.end);
+    for (const RowRun& r : prep.runs) prep_runs.emplace_back(r.begin, r.end);
+    ASSERT_EQ(prep_runs, runs) << "seed " << seed;
+    const GapVerdict v = check_gaps(inst);
+    ASSERT_EQ(verdict_fields(check_gaps(prep)), verdict_fields(v)) << "seed " << seed;
+    (v.reason == GapVerdict::Reason::Gap ? gaps : v.reason == GapVerdict::Reason::Cycle ? cycles : clean) += 1;
+    if (std::any_of(prep.faces.coupling_breaks_cycle.begin(), prep.faces.coupling_breaks_cycle.end(),
+                    [](char b) { return b != 0; }))
+      continue;  // the gap constraints require no coupling breaking a cycle
+    ++systems;
+    ASSERT_EQ(system_fields(build_gap_constraints(prep)),
+              system_fields(build_gap_constraints(inst, SpanningTree::build(inst))))
+        << "seed " << seed;
+  }
+  EXPECT_GT(gaps, 100);
+  EXPECT_GT(cycles, 20);
+  EXPECT_GT(clean, 100);
+  EXPECT_GT(systems, 1000);
 }
 
 }  // namespace

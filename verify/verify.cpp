@@ -219,7 +219,7 @@ void verify_discrete(VerifyResult& r, const SatResult& sat, const Lift& red, con
   }
   // The gap checker (continuous model), its witness through the simulator.
   t0.restart();
-  GapVerdict gv = check_gaps(inst);
+  GapVerdict gv = check_gaps(prep);
   r.ms_gaps = t0.milliseconds();
   r.continuous = gv.verdict();
   if (gv.collision_free) {

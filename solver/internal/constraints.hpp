@@ -137,7 +137,7 @@ bool step_collides(const int64_t* s, const int64_t* c, uint32_t nf);
 // deadline (optional) is checked every few pairs: LimitReached ends the build.
 ConstraintSystem build_gap_constraints(const Instance& inst, const SpanningTree& tree,
                                        const Deadline* deadline = nullptr);
-// The same from prepared tables (no tree or regions rebuilt).
+// The same from prepared tables (no tree, regions or row order rebuilt).
 ConstraintSystem build_gap_constraints(const PreparedInstance& prep, const Deadline* deadline = nullptr);
 
 // Pair constraints of any instance. Requires no coupling breaking a cycle.

@@ -6,6 +6,8 @@
 // is promised linear time (solver/gaps.hpp), so this is an LSD radix sort on the key (y, x) shifted to
 // start at zero: coordinates are bounded by kMaxCoordinate < 2^30, so the
 // key fits 62 bits, and passes of 11 bits over the bits the key uses sort it.
+// A PreparedInstance (lattice/prepared.hpp) holds one, so the checkers that
+// share it sort once.
 #pragma once
 
 #include <cstdint>

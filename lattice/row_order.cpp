@@ -1,4 +1,4 @@
-#include "solver/internal/row_order.hpp"
+#include "lattice/row_order.hpp"
 
 #include <algorithm>
 #include <bit>
