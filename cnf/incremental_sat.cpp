@@ -3,6 +3,7 @@
 #include <cadical.hpp>
 
 #include <stdexcept>
+#include <string>
 
 #include "common/assert.hpp"
 
@@ -48,6 +49,11 @@ void IncrementalSat::flush() {
   impl_->solver.reserve(vars_);
   for (const int lit : pending_) impl_->solver.add(lit);
   pending_.clear();
+}
+
+void IncrementalSat::set_option(const char* name, int value) {
+  if (!CaDiCaL::Solver::is_valid_option(name) || !impl_->solver.set(name, value))
+    throw std::invalid_argument(std::string("IncrementalSat: cannot set option ") + name);
 }
 
 void IncrementalSat::set_buffered(bool on) {

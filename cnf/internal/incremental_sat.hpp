@@ -54,6 +54,10 @@ class IncrementalSat {
   void trace_proof(std::FILE* file);
   // Flushes the proof written so far.
   void flush_proof();
+  // Sets a CaDiCaL option (its name and value as CaDiCaL documents them),
+  // before the first clause. Throws std::invalid_argument on an unknown
+  // name or a value out of range.
+  void set_option(const char* name, int value);
   // Off: every clause goes to CaDiCaL at once, as before buffering (the
   // twin test's reference; tests/cnf_incremental_twin_test.cpp).
   void set_buffered(bool on);

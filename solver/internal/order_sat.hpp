@@ -65,6 +65,8 @@ class OrderSat {
   SearchOutcome solve(const std::function<bool(const std::vector<CouplingId>&)>& accept);
 
   size_t num_pairs() const { return pair_vars_.size(); }
+  // A CaDiCaL option (IncrementalSat::set_option), before the first clause.
+  void set_solver_option(const char* name, int value) { sat_.set_option(name, value); }
 
   // Proof mode (NO certificates, docs/certificates.md kind pairs), set
   // before the first clause: CaDiCaL writes its DRAT proof to `drat` and
