@@ -52,7 +52,7 @@ bool OrderSat::at_most(const std::vector<std::pair<int, int64_t>>& lits, int64_t
   int64_t total = 0;
   for (auto [l, w] : lits) {
     if (w > bound) {
-      sat_.add_clause({-l});
+      add_unit(-l);
       continue;
     }
     kept.push_back({l, w});
@@ -130,16 +130,37 @@ bool OrderSat::add_closure_clauses(const std::vector<std::pair<CouplingId, Coupl
     }
   }
   for (const PairVar& p : pair_vars_) {
-    if (r(p.lo, p.hi)) sat_.add_clause({p.var});
-    if (r(p.hi, p.lo)) sat_.add_clause({-p.var});
+    if (r(p.lo, p.hi)) add_unit(p.var);
+    if (r(p.hi, p.lo)) add_unit(-p.var);
   }
   for (CouplingId x = 0; x < k_; ++x) {
     if ((x & 1023) == 0) budget_.check(st_);
-    for (auto [c1, l1] : partners.of(x))
+    for (auto [c1, l1] : partners.of(x)) {
+      // c1 R c2 needs a forced edge out of c1 (most couplings have none).
+      if (!reference_ && forced_graph.first[c1] == forced_graph.first[c1 + 1]) continue;
       for (auto [c2, l2] : partners.of(x))
         if (c1 != c2 && r(c1, c2)) sat_.add_clause({-l1, l2});
+    }
   }
   return true;
+}
+
+// A gap's unit (at_most: one literal outweighs the bound) and the forced
+// closure's unit on the same pair are the same clause, added twice. The
+// second one reaches CaDiCaL with its literal already true at the root,
+// and CaDiCaL drops such a clause on arrival (nothing learned, nothing
+// logged: at_most is never used in proof mode), so not sending it leaves
+// CaDiCaL's state as it was.
+void OrderSat::add_unit(int lit) {
+  const auto v = static_cast<size_t>(lit > 0 ? lit : -lit);
+  const auto bit = static_cast<uint8_t>(lit > 0 ? 1 : 2);
+  if (v >= units_.size()) units_.resize(std::max<size_t>(v + 1, 2 * units_.size()), 0);
+  if ((units_[v] & bit) && !reference_) {
+    ++skipped_units_;
+    return;
+  }
+  units_[v] |= bit;
+  sat_.add_clause({lit});
 }
 
 void OrderSat::add_triangle_clauses(const Partners& partners) {

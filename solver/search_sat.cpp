@@ -35,6 +35,13 @@ SearchOutcome search_sat(const ConstraintSystem& sys, SearchBudget& budget, Solv
     }
   }
   OrderSat os(sys.num_couplings, budget, st);
+  // CaDiCaL's "lucky" phases try a few fixed assignments (all false, all
+  // true, forward, backward) by full propagation before the search. On
+  // compiled formulas they cost about half of CaDiCaL's solve instructions
+  // (2.4 % of the 3..6-variable fuzz campaign's total) and the search
+  // without them is no dearer (on 16-variable formulas too). Another
+  // model may be found; the verdict is the same.
+  os.set_solver_option("lucky", 0);
   std::vector<std::pair<CouplingId, CouplingId>> forced;
   for (size_t ci = 0; ci < sys.constraints.size(); ++ci) {
     if ((ci & 255) == 0) budget.check(st);

@@ -20,6 +20,7 @@
 #include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
+#include "support/random_gap_system.hpp"
 #include "support/search_precedence_chronological.hpp"
 #include "support/test_scale.hpp"
 
@@ -33,31 +34,7 @@ using Edges = std::vector<std::pair<CouplingId, CouplingId>>;
 // coefficients ([-4, 4] \ {0}), gaps over few couplings more often (so pairs
 // recur across gaps and cycles through several gaps arise).
 ConstraintSystem random_system(Rng& rng, size_t k) {
-  ConstraintSystem s;
-  s.kind = ConstraintKind::Gaps;
-  s.num_couplings = k;
-  const auto gaps = static_cast<size_t>(rng.between(1, 10));
-  for (size_t g = 0; g < gaps; ++g) {
-    std::vector<CouplingId> ids(k);
-    std::iota(ids.begin(), ids.end(), 0);
-    rng.shuffle(ids);
-    const int64_t most = rng.coin() ? 3 : static_cast<int64_t>(k);
-    ids.resize(static_cast<size_t>(rng.between(2, std::min<int64_t>(most, static_cast<int64_t>(k)))));
-    std::sort(ids.begin(), ids.end());
-    CollisionConstraint c;
-    c.num_forms = 1;
-    c.base = {rng.between(-5, 0)};
-    c.rel = ids;
-    std::vector<int64_t> coef;
-    for (size_t j = 0; j < ids.size(); ++j) {
-      const int64_t v = rng.between(1, 4);
-      coef.push_back(rng.coin() ? v : -v);
-    }
-    c.set_coef(coef);
-    s.constraints.push_back(std::move(c));
-  }
-  s.index();
-  return s;
+  return test::random_gap_system(rng, k, {.max_gaps = 10, .sometimes_three = true, .min_base = -5, .max_coef = 4});
 }
 
 // Every collision-free order (positions: pos[q] of each), by all permutations.

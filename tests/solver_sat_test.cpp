@@ -18,6 +18,7 @@
 #include "solver/internal/search.hpp"
 #include "solver/solve.hpp"
 #include "support/cnf_testing.hpp"
+#include "support/random_gap_system.hpp"
 #include "support/test_scale.hpp"
 
 namespace gridlock {
@@ -27,33 +28,7 @@ using Status = Verdict;
 
 // A random gap system: k couplings, some gaps over 2..k of them with
 // coefficients in [-3, 3] \ {0} and bases in [-4, 0].
-ConstraintSystem random_gap_system(Rng& rng, size_t k) {
-  ConstraintSystem s;
-  s.kind = ConstraintKind::Gaps;
-  s.num_couplings = k;
-  const auto gaps = static_cast<size_t>(rng.between(1, 7));
-  for (size_t g = 0; g < gaps; ++g) {
-    std::vector<CouplingId> ids(k);
-    std::iota(ids.begin(), ids.end(), 0);
-    rng.shuffle(ids);
-    const auto r = static_cast<size_t>(rng.between(2, static_cast<int64_t>(k)));
-    ids.resize(r);
-    std::sort(ids.begin(), ids.end());
-    CollisionConstraint c;
-    c.num_forms = 1;
-    c.base = {rng.between(-4, 0)};
-    c.rel = ids;
-    std::vector<int64_t> coef;
-    for (size_t j = 0; j < r; ++j) {
-      int64_t v = rng.between(1, 3);
-      coef.push_back(rng.coin() ? v : -v);
-    }
-    c.set_coef(coef);
-    s.constraints.push_back(std::move(c));
-  }
-  s.index();
-  return s;
-}
+ConstraintSystem random_gap_system(Rng& rng, size_t k) { return test::random_gap_system(rng, k, {}); }
 
 bool brute_force(const ConstraintSystem& s) {
   std::vector<CouplingId> order(s.num_couplings);

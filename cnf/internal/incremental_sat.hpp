@@ -26,7 +26,12 @@ class IncrementalSat {
   int new_var();
   int num_vars() const { return vars_; }
   // Adds the clause (non-zero literals over variables from new_var). An
-  // empty clause makes the formula unsatisfiable. O(size).
+  // empty clause makes the formula unsatisfiable. O(size). Clauses are
+  // buffered and handed to CaDiCaL, in the order added, at the next solve
+  // or set_phase, right after one reserve() of every variable so far:
+  // CaDiCaL always initializes variables in index order, so this is the
+  // state one-by-one adding reaches, without its per-variable
+  // initialization call as each new variable first appears.
   void add_clause(const std::vector<int>& lits);
   // The same for a clause written in place ({a, b, c}): no vector is built,
   // so the SAT engines' counters and order clauses (many thousands of short
@@ -49,13 +54,24 @@ class IncrementalSat {
   void trace_proof(std::FILE* file);
   // Flushes the proof written so far.
   void flush_proof();
+  // Sets a CaDiCaL option (its name and value as CaDiCaL documents them),
+  // before the first clause. Throws std::invalid_argument on an unknown
+  // name or a value out of range.
+  void set_option(const char* name, int value);
+  // Off: every clause goes to CaDiCaL at once, as before buffering (the
+  // twin test's reference; tests/cnf_incremental_twin_test.cpp).
+  void set_buffered(bool on);
 
  private:
   // The clause [first, last) (each literal checked), then its 0. O(size).
   void add_lits(const int* first, const int* last);
+  // Hands the buffered clauses to CaDiCaL (see add_clause). O(their size).
+  void flush();
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int vars_ = 0;
+  bool buffered_ = true;
+  std::vector<int> pending_;  // buffered clauses, each closed by its 0
 };
 
 }  // namespace gridlock

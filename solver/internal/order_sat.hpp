@@ -65,6 +65,14 @@ class OrderSat {
   SearchOutcome solve(const std::function<bool(const std::vector<CouplingId>&)>& accept);
 
   size_t num_pairs() const { return pair_vars_.size(); }
+  // Reference mode (the twin tests': tests/solver_order_sat_twin_test.cpp):
+  // every unit is sent again when it repeats (see add_unit) and the forced
+  // closure tries every pair of partners, as before these shortcuts.
+  void set_reference(bool on) { reference_ = on; }
+  // Repeated units not sent to CaDiCaL so far (add_unit).
+  size_t skipped_units() const { return skipped_units_; }
+  // A CaDiCaL option (IncrementalSat::set_option), before the first clause.
+  void set_solver_option(const char* name, int value) { sat_.set_option(name, value); }
 
   // Proof mode (NO certificates, docs/certificates.md kind pairs), set
   // before the first clause: CaDiCaL writes its DRAT proof to `drat` and
@@ -96,6 +104,8 @@ class OrderSat {
       return {list.data() + first[x], list.data() + first[x + 1]};
     }
   };
+  // The unit clause {lit}, unless it went in before (not in reference mode).
+  void add_unit(int lit);
   bool add_closure_clauses(const std::vector<std::pair<CouplingId, CouplingId>>& forced, const Partners& partners);
   void add_triangle_clauses(const Partners& partners);
   bool order_of_model(std::vector<CouplingId>& out);
@@ -118,6 +128,9 @@ class OrderSat {
   friend bool encode_gap_constraint(const CollisionConstraint& c, OrderSat& os);
   std::vector<PrecedenceTerm> terms_;
   std::vector<std::pair<int, int64_t>> lits_;
+  std::vector<uint8_t> units_;  // variable -> 1: unit {var} added, 2: unit {-var}, 3: both
+  size_t skipped_units_ = 0;
+  bool reference_ = false;
   std::vector<std::vector<int>>* cycle_log_ = nullptr;  // proof mode
   std::vector<uint32_t> pair_index_;                    // proof mode: variable -> pair_vars_ index + 1
   void add_cycle_clause(const std::vector<int>& c) {
