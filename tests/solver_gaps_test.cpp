@@ -421,7 +421,7 @@ auto system_fields(const ConstraintSystem& s) {
                          std::vector<int64_t>, std::vector<uint8_t>>>
       cs;
   for (const CollisionConstraint& c : s.constraints)
-    cs.emplace_back(c.region_a, c.region_b, c.num_forms, c.base, c.rel, c.coef, c.form_index);
+    cs.emplace_back(c.region_a, c.region_b, c.num_forms, c.base, c.rel, c.coef(), c.form_index);
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> index(s.num_couplings);
   for (size_t q = 0; q < s.num_couplings; ++q)
     for (const auto& [ci, j] : s.of_coupling[q]) index[q].emplace_back(ci, j);
