@@ -110,9 +110,19 @@ CollisionConstraint single_form_constraint(const LinForm& f, uint32_t ra, uint32
 
 }  // namespace
 
-const int64_t* CoefRows::intern_hashed(const int64_t* row, uint32_t n) {
+namespace {
+
+// The slot hash of a row of n coefficients (its length included).
+uint64_t row_hash(const int64_t* row, uint32_t n) {
   uint64_t h = splitmix64_mix(n);
   for (uint32_t i = 0; i < n; ++i) h = splitmix64_mix(h ^ static_cast<uint64_t>(row[i]));
+  return h;
+}
+
+}  // namespace
+
+const int64_t* CoefRows::intern_hashed(const int64_t* row, uint32_t n) {
+  const uint64_t h = row_hash(row, n);
   if (2 * (rows_.size() + 1) > slots_.size()) grow();
   const size_t mask = slots_.size() - 1;
   for (size_t s = h & mask;; s = (s + 1) & mask) {
@@ -135,10 +145,7 @@ void CoefRows::grow() {
   const size_t mask = slots_.size() - 1;
   for (size_t k = 0; k < rows_.size(); ++k) {
     const int64_t* r = rows_[k].get();
-    const auto n = static_cast<uint32_t>(r[0]);
-    uint64_t h = splitmix64_mix(n);
-    for (uint32_t i = 0; i < n; ++i) h = splitmix64_mix(h ^ static_cast<uint64_t>(r[i + 1]));
-    size_t s = h & mask;
+    size_t s = row_hash(r + 1, static_cast<uint32_t>(r[0])) & mask;
     while (slots_[s] != 0) s = (s + 1) & mask;
     slots_[s] = static_cast<uint32_t>(k + 1);
   }
