@@ -16,6 +16,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "cnf/formula.hpp"
 #include "common/diagnostic.hpp"
@@ -30,6 +31,10 @@ struct DimacsOptions {
   // If set, receives the line of the 'p cnf' header (0 if none was read), so
   // that size checks after reading can point at it.
   long* header_line = nullptr;
+  // If set, receives the line on which each clause starts (where its first
+  // literal, or the 0 of an empty clause, stands), one entry per clause of
+  // `out`, so that checks after reading can point at a clause.
+  std::vector<long>* clause_lines = nullptr;
 };
 
 // Reads one formula. Returns nullopt and fills `out` (num_vars from the

@@ -119,6 +119,7 @@ MaybeError Reader::literal(std::string_view tok) {
     clause_line_ = line_no_;
   }
   if (mag == 0) {
+    if (opt_.clause_lines) opt_.clause_lines->push_back(clause_line_);
     out_->clauses.push_back(std::move(clause_));
     clause_.clear();
     clause_open_ = false;
@@ -135,6 +136,7 @@ MaybeError Reader::literal(std::string_view tok) {
 MaybeError Reader::run(Formula& out) {
   out = Formula{};
   out_ = &out;
+  if (opt_.clause_lines) opt_.clause_lines->clear();
   std::string line;
   bool any_content = false;
   bool percent = false;

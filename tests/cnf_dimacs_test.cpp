@@ -186,5 +186,49 @@ TEST(Dimacs, MultiLineCommentCannotInjectClauses) {
   EXPECT_EQ(back.comments, (std::vector<std::string>{"one", "p cnf 5 5", "1 0"}));
 }
 
+TEST(Dimacs, ClauseLinesPointAtWhereEachClauseStarts) {
+  std::vector<long> lines{99};  // stale content is replaced
+  DimacsOptions opt;
+  opt.clause_lines = &lines;
+  Formula f;
+  auto e = read_dimacs_string("c x\np cnf 3 4\n1 2\nc between\n -3 0 0 2\n\n0 3 0\n", "t.cnf", f, opt);
+  ASSERT_FALSE(e) << e->str();
+  EXPECT_EQ(f.clauses, (Clauses{{1, 2, -3}, {}, {2}, {3}}));
+  EXPECT_EQ(lines, (std::vector<long>{3, 5, 5, 7}));
+  // Random layouts: each clause's first token placed after a random number
+  // of line breaks and comments; the recorded line is where it was put.
+  const int cases = test::scaled(500);
+  const uint64_t seed = test::base_seed(20261126);
+  for (int t = 0; t < cases; ++t) {
+    SCOPED_TRACE("GRIDLOCK_TEST_SEED=" + std::to_string(seed) + " case " + std::to_string(t));
+    Rng rng(seed + static_cast<uint64_t>(t));
+    Formula g = test::random_cnf(rng, 5, static_cast<int>(rng.between(0, 12)), 0, 4, true);
+    std::string text = "p cnf 5 " + std::to_string(g.clauses.size()) + "\n";
+    long line = 2;  // the header is line 1
+    std::vector<long> expected;
+    auto breaks = [&] {
+      for (auto k = rng.between(0, 2); k > 0; --k) {
+        const bool comment = rng.between(0, 1) == 1;
+        text += comment ? "\nc note\n" : "\n";
+        line += comment ? 2 : 1;
+      }
+    };
+    for (const auto& c : g.clauses) {
+      breaks();
+      expected.push_back(line);
+      for (int lit : c) {
+        text += std::to_string(lit) + " ";
+        breaks();
+      }
+      text += "0 ";
+    }
+    Formula back;
+    auto err = read_dimacs_string(text + "\n", "r.cnf", back, opt);
+    ASSERT_FALSE(err) << err->str() << "\n" << text;
+    EXPECT_EQ(back.clauses, g.clauses) << text;
+    EXPECT_EQ(lines, expected) << text;
+  }
+}
+
 }  // namespace
 }  // namespace gridlock

@@ -50,8 +50,16 @@ TEST(CompileCli, Errors) {
   std::string f = test::write_file(dir + "/e.cnf", "p cnf 2 2\n1 2 0\n0\n");
   auto r = run_gridlock({"compile", f, "-o", dir + "/i.grid"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err,
-            "gridlock: error: " + f + ": clause 2 is empty; the reduction needs at least one literal per clause\n");
+  EXPECT_EQ(r.err, "gridlock: error: " + f +
+                       ":3: clause 2 is empty; the reduction needs at least one literal per clause ('gridlock cnf "
+                       "to-lsat' gives an equivalent formula without it)\n");
+  // lift compiles the formula as it is too; verify goes through to-lsat.
+  std::string model = test::write_file(dir + "/m.txt", "v 1 2 0\n");
+  r = run_gridlock({"lift", f, "--model", model});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("gridlock: error: " + f + ":3: clause 2 is empty", 0), 0u) << r.err;
+  r = run_gridlock({"verify", f});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
   std::string g = test::write_file(dir + "/g.cnf", "p cnf 2 1\n1 3 0\n");
   r = run_gridlock({"compile", g});
   EXPECT_EQ(r.exit_code, 1);

@@ -34,6 +34,8 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
   opt.strict_count = strict_count;
   long header_line = 0;
   opt.header_line = &header_line;
+  std::vector<long> clause_lines;
+  if (use == FormulaUse::CompileAsIs) opt.clause_lines = &clause_lines;
   protect_input(path);
   {
     Activity act(path == "-" ? "<stdin>" : path, "reading the formula");
@@ -50,7 +52,13 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
                                    " variables but no clause uses one above " + std::to_string(max_used) +
                                    ": at most " + std::to_string(kMaxUnusedVariables) +
                                    " unused variables beyond the last one used are accepted"});
-  if (use == FormulaUse::Compile) {
+  for (size_t h = 0; h < clause_lines.size(); ++h)
+    if (f.clauses[h].empty())
+      throw UserError(Diagnostic{name, clause_lines[h],
+                                 "clause " + std::to_string(h + 1) +
+                                     " is empty; the reduction needs at least one literal per clause "
+                                     "('gridlock cnf to-lsat' gives an equivalent formula without it)"});
+  if (use == FormulaUse::Compile || use == FormulaUse::CompileAsIs) {
     // Both models: the continuous reduction draws 2 nodes more, and verify,
     // fuzz and gen-instances may compile either (never "internal:" midway).
     const uint64_t discrete = compiled_node_count(f), continuous = compiled_node_count(f, TimeModel::Continuous);

@@ -26,8 +26,13 @@ namespace po = boost::program_options;
 //   Compile  Solve's check, and the compiled instance's node count in both
 //            models (43n + 5L + 15m - 11, and 2 more in the continuous one)
 //            within the .grid format's kMaxNodes
-// A failed check is "FILE:LINE: ..." with the header's line.
-enum class FormulaUse { Read, Solve, Compile };
+//   CompileAsIs  Compile's checks, and every clause holds a literal (compile
+//            and lift hand the formula to the reduction as it is; verify,
+//            fuzz and gen-instances go through to-lsat, which removes empty
+//            clauses)
+// A failed check is "FILE:LINE: ..." with the header's line (an empty clause:
+// the line of its 0).
+enum class FormulaUse { Read, Solve, Compile, CompileAsIs };
 inline constexpr int64_t kMaxUnusedVariables = int64_t{1} << 20;
 
 // Reads a DIMACS file ("-" = stdin) or throws UserError("FILE:LINE: ...").

@@ -87,7 +87,7 @@ int run_compile(const std::vector<std::string>& args) {
   const std::string svg_path = vm.count("svg") ? vm["svg"].as<std::string>() : "";
   cli::refuse_overwriting_input(out_path, {path});
   if (!svg_path.empty()) cli::refuse_overwriting_input(svg_path, {path, out_path});
-  Formula f = cli::load_formula(path, true, cli::FormulaUse::Compile);
+  Formula f = cli::load_formula(path, true, cli::FormulaUse::CompileAsIs);
   cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {

@@ -131,7 +131,7 @@ int run_lift(const std::vector<std::string>& args) {
     throw UserError("--schedule is a discrete order; use --times for the continuous instance");
   const bool continuous = vm.count("continuous") || vm.count("times");
   const std::string path = vm["formula"].as<std::string>();
-  Formula f = cli::load_formula(path, true, cli::FormulaUse::Compile);
+  Formula f = cli::load_formula(path, true, cli::FormulaUse::CompileAsIs);
   cli::Activity act(path, "compiling the formula");
   CompiledFormula c;
   try {
