@@ -49,11 +49,12 @@ inline const char* dir_name(Dir d) {
   static const char* names[4] = {"+x", "+y", "-x", "-y"};
   return names[static_cast<int>(d)];
 }
-// Accepts "+x", "-x", "+y", "-y" (and "x"/"y" for the positive ones).
+// Accepts exactly "+x", "-x", "+y", "-y" (docs/grid-format.md: a bare "x"
+// or "y" is an error, as the message says, not a silent +x / +y).
 inline std::optional<Dir> parse_dir(std::string_view s) {
-  if (s == "+x" || s == "x") return Dir::PosX;
+  if (s == "+x") return Dir::PosX;
   if (s == "-x") return Dir::NegX;
-  if (s == "+y" || s == "y") return Dir::PosY;
+  if (s == "+y") return Dir::PosY;
   if (s == "-y") return Dir::NegY;
   return std::nullopt;
 }

@@ -107,7 +107,11 @@ std::optional<Rational> parse_time(const std::string& text) {
 }  // namespace
 
 MaybeError read_order_file(const Instance& inst, const std::string& path, std::vector<CouplingId>& order) {
-  std::vector<std::string> names;
+  // names: a leading "v" dropped (solve's output); kept: a leading "v" kept
+  // where the whole line names couplings ("v c s" is the order v, c, s when
+  // v is a coupling). At most one of the two lists names every coupling once
+  // (kept is longer whenever they differ), so the reading is unambiguous.
+  std::vector<std::string> names, kept;
   long last = 0;
   std::string shown = path == "-" ? "<stdin>" : path;
   auto is_data = [&](const std::vector<std::string>& tok) { return names_couplings_only(inst, tok); };
@@ -115,12 +119,18 @@ MaybeError read_order_file(const Instance& inst, const std::string& path, std::v
                            [&](const std::string&, long no, std::vector<std::string>& tok) -> MaybeError {
                              last = no;
                              if (tok[0] == "s" && !is_data(tok)) return std::nullopt;
+                             if (tok[0] == "v" && is_data(tok)) kept.push_back(tok[0]);
                              size_t i = tok[0] == "v" ? 1 : 0;
-                             for (; i < tok.size(); ++i) names.push_back(tok[i]);
+                             for (; i < tok.size(); ++i) {
+                               names.push_back(tok[i]);
+                               kept.push_back(tok[i]);
+                             }
                              return std::nullopt;
                            });
   if (err) return err;
-  return parse_order(inst, names, shown, last, order);
+  MaybeError dropped = parse_order(inst, names, shown, last, order);
+  if (dropped && kept.size() != names.size() && !parse_order(inst, kept, shown, last, order)) return std::nullopt;
+  return dropped;
 }
 
 std::optional<std::string> check_schedule_bounds(const Instance& inst, const Schedule& s) {

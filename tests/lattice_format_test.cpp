@@ -84,6 +84,8 @@ TEST(GridFormat, RejectsEachBadInputClassWithItsMessage) {
       {"growth into a joined neighbour", kHead + "o g grow 0 0 +x\n",
        "bad.grid:7: growth 'g' into (1,0), which holds a node joined to (0,0) by an edge (use expand)"},
       {"bad direction", kHead + "o a expand 0 0 up\n", "bad.grid:7: bad direction 'up' (one of +x, -x, +y, -y)"},
+      {"direction without sign", kHead + "o a expand 0 0 x\n", "bad.grid:7: bad direction 'x' (one of +x, -x, +y, -y)"},
+      {"direction y without sign", kHead + "o a grow 0 0 y\n", "bad.grid:7: bad direction 'y' (one of +x, -x, +y, -y)"},
       {"bad kind", kHead + "o a push 0 0 +x\n", "bad.grid:7: unknown operation kind 'push' (expand, grow or contract)"},
       {"node in two operations",
        "p grid 3 2 2 0\nn 0 0\nn 1 0\nn 2 0\ne 0 0 1 0\ne 1 0 2 0\no a expand 0 0 +x\n"
@@ -210,6 +212,27 @@ TEST(ScheduleFiles, CouplingsNamedCAndSAreDataNotCommentsInOrders) {
   err = read_order_file(inst, schedule_file("s\nc\n"), order);  // one name per line
   ASSERT_FALSE(err) << err->str();
   EXPECT_EQ(names_in(inst, order), "s c");
+}
+
+// audit9: with a coupling named v, a plain line "v c" is the order v, c (the
+// instance's names win), while solve's "v v c" still reads as v, c.
+TEST(ScheduleFiles, CouplingNamedVKeepsItsPlaceInPlainOrders) {
+  const Instance inst = case4_named("v", "c");
+  std::vector<CouplingId> order;
+  for (const auto& [text, want] : std::vector<std::pair<std::string, std::string>>{{"v c\n", "v c"},
+                                                                                   {"c v\n", "c v"},
+                                                                                   {"c a comment\nv c\n", "v c"},
+                                                                                   {"s YES\nv v c\n", "v c"},
+                                                                                   {"v c v\n", "c v"},
+                                                                                   {"v v\nv c\n", "v c"},
+                                                                                   {"v\nc\n", "v c"}}) {
+    auto err = read_order_file(inst, schedule_file(text), order);
+    ASSERT_FALSE(err) << text << ": " << err->str();
+    EXPECT_EQ(names_in(inst, order), want) << text;
+  }
+  auto err = read_order_file(inst, schedule_file("v c\nv\n"), order);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->str().find("leaves out coupling 'v'"), std::string::npos) << err->str();
 }
 
 TEST(ScheduleFiles, CouplingNamedCGetsItsTimeInTimesFiles) {
