@@ -214,7 +214,7 @@ TEST(ScheduleFiles, CouplingsNamedCAndSAreDataNotCommentsInOrders) {
   EXPECT_EQ(names_in(inst, order), "s c");
 }
 
-// audit9: with a coupling named v, a plain line "v c" is the order v, c (the
+// With a coupling named v, a plain line "v c" is the order v, c (the
 // instance's names win), while solve's "v v c" still reads as v, c.
 TEST(ScheduleFiles, CouplingNamedVKeepsItsPlaceInPlainOrders) {
   const Instance inst = case4_named("v", "c");

@@ -1,8 +1,8 @@
-// Hand-written corner cases of MODEL.md (an audit, /work/notes/audit9.md),
+// Hand-written corner cases of MODEL.md (a hand audit),
 // each answer derived by hand from MODEL.md before the command line was run:
 // touching versus overlapping, contraction pulling (not pushing), lock-step
 // growths and pushes, cycles broken and kept, couplings, vertical operations,
-// the cycle-before-node tie. The files live in tests/data/audit9/. End to
+// the cycle-before-node tie. The files live in tests/data/model_corners/. End to
 // end: the real `gridlock` on each file, every witness fed back to `check`.
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ namespace {
 
 using test::run_gridlock;
 
-const std::string kDir = std::string(GRIDLOCK_DATA_DIR) + "/audit9/";
+const std::string kDir = std::string(GRIDLOCK_DATA_DIR) + "/model_corners/";
 
 // Exit codes: 10 yes, 20 no.
 struct Expected {
@@ -73,7 +73,7 @@ void decide_and_replay(const std::string& file, const std::vector<std::string>& 
   EXPECT_EQ(c.exit_code, witness_want) << file << " " << cmd[0] << " witness\n" << r.out << c.out << c.err;
 }
 
-TEST(Audit9, EveryDeciderGivesTheHandDerivedAnswer) {
+TEST(ModelCorners, EveryDeciderGivesTheHandDerivedAnswer) {
   for (const Expected& e : cases()) {
     const std::string f = path_of(e.file);
     decide_and_replay(f, {"solve"}, e.solve_discrete, false, 10);
@@ -90,7 +90,7 @@ struct CheckCase {
   const char* line;  // expected 'c ...' line of a NO, or "" for YES
 };
 
-TEST(Audit9, CheckReportsTheHandDerivedMoment) {
+TEST(ModelCorners, CheckReportsTheHandDerivedMoment) {
   const std::vector<CheckCase> cases = {
       {"B01-grow-lockstep-push",
        {"--order", "g e"},
@@ -134,7 +134,7 @@ TEST(Audit9, CheckReportsTheHandDerivedMoment) {
 }
 
 // The gap checker (horizontal-only) agrees with the exact continuous solver.
-TEST(Audit9, GapsAgreeWithTheContinuousSolverOnHorizontalCases) {
+TEST(ModelCorners, GapsAgreeWithTheContinuousSolverOnHorizontalCases) {
   for (const char* name :
        {"A02-expand-pair", "A03-contract-pair", "A06-push-into-unjoined", "A09-push-until-touch",
         "A11-contract-pushwrong", "A12-ring-coupled", "A13-ring-uncoupled", "B03-growths-gap2",
