@@ -264,8 +264,7 @@ struct Simulator::Scratch {
   bool rows_fixed = false;
   std::vector<uint32_t> row_sorted, row_end;
   std::vector<RowItem> row_items;
-  std::vector<uint32_t> row_scratch, row_count;  // sort_rows's work arrays
-  std::vector<uint32_t> moving_index;            // per region: its index in `moving` (valid when stamped)
+  std::vector<uint32_t> moving_index;  // per region: its index in `moving` (valid when stamped)
   // Per coupling q, what an interval in which q alone runs moves (it depends
   // on q only: the cut, the velocities relative to the largest component,
   // the running growth): the moving regions in collect_moving's order and
@@ -322,7 +321,6 @@ struct Simulator::Scratch {
     bind_rows();
   }
   void bind_rows();
-  void sort_rows();
 
   SimResult run(const Schedule& s);
 
@@ -771,43 +769,6 @@ void Simulator::Scratch::bind_rows() {
   row_end.clear();
 }
 
-// row_sorted and row_end, on the first row sweep after bind (most runs
-// never need them): two stable counting sorts, by base x then by row, when
-// the shape's box is at most a few times wider and higher than the number
-// of regions (compiled formulas); otherwise a comparison sort.
-void Simulator::Scratch::sort_rows() {
-  const Regions& R = regions();
-  const size_t nr = R.size();
-  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
-  for (const RegionShape& sh : R.shapes) {
-    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
-    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
-  }
-  const auto row = [&](uint32_t r) { return R.shapes[r].base[2]; };
-  row_sorted.resize(nr);
-  const int64_t limit = 4 * static_cast<int64_t>(nr) + 64;
-  if (xhi - xlo < limit && yhi - ylo < limit) {
-    std::vector<uint32_t>& by_x = row_scratch;
-    by_x.resize(nr);
-    const auto counting = [&](auto coord, int64_t lo, int64_t hi, const auto& from, std::vector<uint32_t>& to) {
-      row_count.assign(static_cast<size_t>(hi - lo + 2), 0);
-      for (uint32_t r : from) ++row_count[static_cast<size_t>(coord(r) - lo + 1)];
-      for (size_t i = 1; i < row_count.size(); ++i) row_count[i] += row_count[i - 1];
-      for (uint32_t r : from) to[row_count[static_cast<size_t>(coord(r) - lo)]++] = r;
-    };
-    std::iota(row_sorted.begin(), row_sorted.end(), 0u);
-    counting([&](uint32_t r) { return R.shapes[r].base[0]; }, xlo, xhi, row_sorted, by_x);
-    counting(row, ylo, yhi, by_x, row_sorted);
-  } else {
-    std::iota(row_sorted.begin(), row_sorted.end(), 0u);
-    std::sort(row_sorted.begin(), row_sorted.end(), [&](uint32_t a, uint32_t b) {
-      return std::pair(row(a), R.shapes[a].base[0]) < std::pair(row(b), R.shapes[b].base[0]);
-    });
-  }
-  for (size_t i = 1; i <= nr; ++i)
-    if (i == nr || row(row_sorted[i]) != row(row_sorted[i - 1])) row_end.push_back(static_cast<uint32_t>(i));
-}
-
 // The broad phase by rows, for intervals where many regions move slowly
 // (verify's gap witness: every coupling at once). Regions of different rows
 // never overlap (their y-extents are fixed unit rows), so the candidates
@@ -820,7 +781,16 @@ void Simulator::Scratch::sort_rows() {
 // the grid path's (SimulatorTwin.RowSweepAgreesWithCellGrid). O(r) per
 // interval for r regions, plus the pairs.
 void Simulator::Scratch::row_broad_phase(int64_t span) {
-  if (row_sorted.size() != regions().size()) sort_rows();
+  if (row_sorted.size() != regions().size()) {
+    // The prepared node order merged with the other regions (reuse), or the
+    // counting sorts: the same order (PreparedRowOrder.RegionsByRowTwin).
+    row_sorted = reuse ? regions_by_row(regions(), prep->rows) : regions_by_row(regions());
+    const Regions& R = regions();
+    const size_t nr = R.size();
+    for (size_t i = 1; i <= nr; ++i)
+      if (i == nr || R.shapes[row_sorted[i]].base[2] != R.shapes[row_sorted[i - 1]].base[2])
+        row_end.push_back(static_cast<uint32_t>(i));
+  }
   row_items.resize(row_sorted.size());
   for (size_t i = 0; i < row_sorted.size(); ++i) {
     const uint32_t r = row_sorted[i];
@@ -942,7 +912,9 @@ SimResult Simulator::Scratch::run(const Schedule& s) {
       moving_against_moving(span, vmax);
     }
     if (!best.none()) return node_result(now);
-    advance(span);
+    // After the last interval nothing reads the positions (reuse: skip the
+    // advance; reset_positions then has nothing of this interval to undo).
+    if (!reuse || events.back().time != events[ei].time) advance(span);
   }
   if (cycle_found) return cycle_result();
   SimResult result;
