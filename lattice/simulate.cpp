@@ -54,8 +54,6 @@ Rational to_rational(__int128 num, __int128 den) {
   return Rational(static_cast<int64_t>(num), static_cast<int64_t>(den));
 }
 
-int axis_of(size_t face) { return face < 2 ? 0 : 1; }
-
 // Two boxes {xlo, xhi, ylo, yhi} overlap with positive area. Regions that
 // collide during an interval have swept boxes (a static region: its
 // rectangle) that do, so this is a filter before the exact test.
@@ -343,7 +341,17 @@ struct Simulator::Scratch {
     if (inst().ops()[k].kind == OpKind::Contract) add_moving(inst().ops()[k].v);
   }
   int64_t sweep_boxes(int64_t span);
-  void set_swept(size_t i, int64_t span);
+  // The swept box of moving region i over `span`, from its rect and rvel.
+  void set_swept(size_t i, int64_t span) {
+    const std::array<int64_t, 4>& p = rect[moving[i]];
+    const std::array<int64_t, 4>& v = rvel[moving[i]];
+    std::array<int64_t, 4>& sw = swept[i];
+    for (size_t f = 0; f < 4; f += 2) {
+      const int64_t a1 = p[f] + v[f] * span, b1 = p[f + 1] + v[f + 1] * span;
+      sw[f] = std::min(p[f], a1);
+      sw[f + 1] = std::max(p[f + 1], b1);
+    }
+  }
   int64_t find_moving(int64_t span);
   int64_t reuse_solo(const Solo& so, int64_t span);
   void test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t span);
@@ -531,32 +539,25 @@ void Simulator::Scratch::collect_moving() {
 int64_t Simulator::Scratch::sweep_boxes(int64_t span) {
   int64_t vmax = 1;
   swept.resize(moving.size());
+  const auto vel_of = [&](NodeId w) { return node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0}; };
   for (size_t i = 0; i < moving.size(); ++i) {
-    uint32_t r = moving[i];
+    const uint32_t r = moving[i];
     moving_index[r] = static_cast<uint32_t>(i);
     const RegionShape& sh = regions().shapes[r];
-    for (int f = 0; f < 4; ++f) {
-      const NodeId w = sh.ref[f];
-      const Vec2 v = node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0};
-      int64_t vf = axis_of(f) == 0 ? v.x : v.y;
-      if (sh.grow_op != kNone && f == sh.grow_face && running[inst().ops()[sh.grow_op].coupling]) vf += sh.grow_sign;
-      rvel[r][f] = vf;
-      vmax = std::max(vmax, vf < 0 ? -vf : vf);
-    }
+    // Faces usually follow one node (all four for a node's own region):
+    // each distinct node's velocity is looked up once.
+    const Vec2 v0 = vel_of(sh.ref[0]);
+    const Vec2 v1 = sh.ref[1] == sh.ref[0] ? v0 : vel_of(sh.ref[1]);
+    const Vec2 v2 = sh.ref[2] == sh.ref[0] ? v0 : vel_of(sh.ref[2]);
+    const Vec2 v3 = sh.ref[3] == sh.ref[2] ? v2 : vel_of(sh.ref[3]);
+    std::array<int64_t, 4>& vel = rvel[r];
+    vel = {v0.x, v1.x, v2.y, v3.y};
+    if (sh.grow_op != kNone && running[inst().ops()[sh.grow_op].coupling])
+      vel[static_cast<size_t>(sh.grow_face)] += sh.grow_sign;
+    for (const int64_t vf : vel) vmax = std::max(vmax, vf < 0 ? -vf : vf);
     set_swept(i, span);
   }
   return vmax;
-}
-
-// The swept box of moving region i over `span`, from its rect and rvel.
-void Simulator::Scratch::set_swept(size_t i, int64_t span) {
-  const uint32_t r = moving[i];
-  for (int f = 0; f < 4; f += 2) {
-    int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
-    int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
-    swept[i][f] = std::min(a0, a1);
-    swept[i][f + 1] = std::max(b0, b1);
-  }
 }
 
 // The interval's moving regions, their velocities and swept boxes; returns
