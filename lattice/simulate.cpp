@@ -642,7 +642,7 @@ void Simulator::Scratch::moving_against_static(int64_t span) {
 // resting on an assumption about the shape). All couplings at once move
 // whole gadgets rigidly: most neighbours then translate alike, and they
 // share cells in every sub-step.
-bool Simulator::Scratch::rigid_apart(uint32_t a, uint32_t b) const {
+inline bool Simulator::Scratch::rigid_apart(uint32_t a, uint32_t b) const {
   const auto& va = rvel[a];
   return skip_rigid && va[0] == va[1] && va[2] == va[3] && va == rvel[b] && !boxes_overlap(rect[a], rect[b]);
 }
