@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cstdlib>
+#include <numeric>
+#include <utility>
 
 #include "common/assert.hpp"
+#include "lattice/motion.hpp"
 
 namespace gridlock {
 
@@ -58,6 +62,55 @@ std::vector<RowRun> row_runs(const Instance& inst, const std::vector<NodeId>& or
     i = j;
   }
   return runs;
+}
+
+std::vector<uint32_t> regions_by_row(const Regions& regions, const std::vector<NodeId>& rows) {
+  const auto& shapes = regions.shapes;
+  const auto n = static_cast<uint32_t>(rows.size());
+  const auto nr = static_cast<uint32_t>(shapes.size());
+  GRIDLOCK_ASSERT(n <= nr, "regions_by_row needs the regions of the nodes' instance");
+  const auto less = [&](uint32_t a, uint32_t b) {
+    const int64_t* x = shapes[a].base;
+    const int64_t* y = shapes[b].base;
+    return x[2] != y[2] ? x[2] < y[2] : x[0] != y[0] ? x[0] < y[0] : a < b;
+  };
+  std::vector<uint32_t> extra(nr - n);
+  std::iota(extra.begin(), extra.end(), n);
+  std::sort(extra.begin(), extra.end(), less);
+  std::vector<uint32_t> out(nr);
+  std::merge(rows.begin(), rows.end(), extra.begin(), extra.end(), out.begin(), less);
+  return out;
+}
+
+std::vector<uint32_t> regions_by_row(const Regions& regions) {
+  const auto& shapes = regions.shapes;
+  const size_t nr = shapes.size();
+  std::vector<uint32_t> out(nr);
+  std::iota(out.begin(), out.end(), 0u);
+  if (nr == 0) return out;
+  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
+  for (const RegionShape& sh : shapes) {
+    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
+    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
+  }
+  const auto row = [&](uint32_t r) { return shapes[r].base[2]; };
+  const int64_t limit = 4 * static_cast<int64_t>(nr) + 64;
+  if (xhi - xlo < limit && yhi - ylo < limit) {
+    std::vector<uint32_t> by_x(nr), count;
+    const auto counting = [&](auto coord, int64_t lo, int64_t hi, const auto& from, std::vector<uint32_t>& to) {
+      count.assign(static_cast<size_t>(hi - lo + 2), 0);
+      for (uint32_t r : from) ++count[static_cast<size_t>(coord(r) - lo + 1)];
+      for (size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
+      for (uint32_t r : from) to[count[static_cast<size_t>(coord(r) - lo)]++] = r;
+    };
+    counting([&](uint32_t r) { return shapes[r].base[0]; }, xlo, xhi, out, by_x);
+    counting(row, ylo, yhi, by_x, out);
+  } else {
+    std::sort(out.begin(), out.end(), [&](uint32_t a, uint32_t b) {
+      return std::pair(row(a), shapes[a].base[0]) < std::pair(row(b), shapes[b].base[0]);
+    });
+  }
+  return out;
 }
 
 }  // namespace gridlock

@@ -17,6 +17,8 @@
 
 namespace gridlock {
 
+struct Regions;  // lattice/motion.hpp
+
 // Returns every node id, ordered by (y, x) of its cell.
 // Requires: cells within +-kMaxCoordinate (guaranteed by InstanceBuilder).
 // Complexity: O(n) time (at most 6 counting passes of 2^11 buckets, one per
@@ -29,5 +31,18 @@ struct RowRun {
 };
 // The maximal runs of equal y in `order` (which nodes_by_row produced). O(n).
 std::vector<RowRun> row_runs(const Instance& inst, const std::vector<NodeId>& order);
+
+// Every region id (lattice/motion.hpp: the nodes, then one per expansion
+// and growth) ordered by (row, x, id) of its base's lower-left corner: the
+// simulator's row sweep's starting order. From `rows` (nodes_by_row of the
+// regions' instance, a node's region has its cell as base) merged with the
+// other regions, sorted: O(n + m log m) for m expansions and growths.
+std::vector<uint32_t> regions_by_row(const Regions& regions, const std::vector<NodeId>& rows);
+// The same order without the node order: two stable counting sorts (by x,
+// then by row) when the base corners span at most 4 r + 64 cells each way
+// for r regions, otherwise a comparison sort by (row, x) (which may order
+// the regions of one corner differently). O(r + span). The simulator's
+// previous path, kept as the twin of the one above.
+std::vector<uint32_t> regions_by_row(const Regions& regions);
 
 }  // namespace gridlock

@@ -54,8 +54,6 @@ Rational to_rational(__int128 num, __int128 den) {
   return Rational(static_cast<int64_t>(num), static_cast<int64_t>(den));
 }
 
-int axis_of(size_t face) { return face < 2 ? 0 : 1; }
-
 // Two boxes {xlo, xhi, ylo, yhi} overlap with positive area. Regions that
 // collide during an interval have swept boxes (a static region: its
 // rectangle) that do, so this is a filter before the exact test.
@@ -264,8 +262,7 @@ struct Simulator::Scratch {
   bool rows_fixed = false;
   std::vector<uint32_t> row_sorted, row_end;
   std::vector<RowItem> row_items;
-  std::vector<uint32_t> row_scratch, row_count;  // sort_rows's work arrays
-  std::vector<uint32_t> moving_index;            // per region: its index in `moving` (valid when stamped)
+  std::vector<uint32_t> moving_index;  // per region: its index in `moving` (valid when stamped)
   // Per coupling q, what an interval in which q alone runs moves (it depends
   // on q only: the cut, the velocities relative to the largest component,
   // the running growth): the moving regions in collect_moving's order and
@@ -322,7 +319,6 @@ struct Simulator::Scratch {
     bind_rows();
   }
   void bind_rows();
-  void sort_rows();
 
   SimResult run(const Schedule& s);
 
@@ -345,7 +341,17 @@ struct Simulator::Scratch {
     if (inst().ops()[k].kind == OpKind::Contract) add_moving(inst().ops()[k].v);
   }
   int64_t sweep_boxes(int64_t span);
-  void set_swept(size_t i, int64_t span);
+  // The swept box of moving region i over `span`, from its rect and rvel.
+  void set_swept(size_t i, int64_t span) {
+    const std::array<int64_t, 4>& p = rect[moving[i]];
+    const std::array<int64_t, 4>& v = rvel[moving[i]];
+    std::array<int64_t, 4>& sw = swept[i];
+    for (size_t f = 0; f < 4; f += 2) {
+      const int64_t a1 = p[f] + v[f] * span, b1 = p[f + 1] + v[f + 1] * span;
+      sw[f] = std::min(p[f], a1);
+      sw[f + 1] = std::max(p[f + 1], b1);
+    }
+  }
   int64_t find_moving(int64_t span);
   int64_t reuse_solo(const Solo& so, int64_t span);
   void test_pair(uint32_t a, uint32_t b, bool b_moves, int64_t span);
@@ -533,32 +539,25 @@ void Simulator::Scratch::collect_moving() {
 int64_t Simulator::Scratch::sweep_boxes(int64_t span) {
   int64_t vmax = 1;
   swept.resize(moving.size());
+  const auto vel_of = [&](NodeId w) { return node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0}; };
   for (size_t i = 0; i < moving.size(); ++i) {
-    uint32_t r = moving[i];
+    const uint32_t r = moving[i];
     moving_index[r] = static_cast<uint32_t>(i);
     const RegionShape& sh = regions().shapes[r];
-    for (int f = 0; f < 4; ++f) {
-      const NodeId w = sh.ref[f];
-      const Vec2 v = node_stamp[w] == stamp ? node_vel[w] : Vec2{0, 0};
-      int64_t vf = axis_of(f) == 0 ? v.x : v.y;
-      if (sh.grow_op != kNone && f == sh.grow_face && running[inst().ops()[sh.grow_op].coupling]) vf += sh.grow_sign;
-      rvel[r][f] = vf;
-      vmax = std::max(vmax, vf < 0 ? -vf : vf);
-    }
+    // Faces usually follow one node (all four for a node's own region):
+    // each distinct node's velocity is looked up once.
+    const Vec2 v0 = vel_of(sh.ref[0]);
+    const Vec2 v1 = sh.ref[1] == sh.ref[0] ? v0 : vel_of(sh.ref[1]);
+    const Vec2 v2 = sh.ref[2] == sh.ref[0] ? v0 : vel_of(sh.ref[2]);
+    const Vec2 v3 = sh.ref[3] == sh.ref[2] ? v2 : vel_of(sh.ref[3]);
+    std::array<int64_t, 4>& vel = rvel[r];
+    vel = {v0.x, v1.x, v2.y, v3.y};
+    if (sh.grow_op != kNone && running[inst().ops()[sh.grow_op].coupling])
+      vel[static_cast<size_t>(sh.grow_face)] += sh.grow_sign;
+    for (const int64_t vf : vel) vmax = std::max(vmax, vf < 0 ? -vf : vf);
     set_swept(i, span);
   }
   return vmax;
-}
-
-// The swept box of moving region i over `span`, from its rect and rvel.
-void Simulator::Scratch::set_swept(size_t i, int64_t span) {
-  const uint32_t r = moving[i];
-  for (int f = 0; f < 4; f += 2) {
-    int64_t a0 = rect[r][f], a1 = rect[r][f] + rvel[r][f] * span;
-    int64_t b0 = rect[r][f + 1], b1 = rect[r][f + 1] + rvel[r][f + 1] * span;
-    swept[i][f] = std::min(a0, a1);
-    swept[i][f + 1] = std::max(b0, b1);
-  }
 }
 
 // The interval's moving regions, their velocities and swept boxes; returns
@@ -643,7 +642,7 @@ void Simulator::Scratch::moving_against_static(int64_t span) {
 // resting on an assumption about the shape). All couplings at once move
 // whole gadgets rigidly: most neighbours then translate alike, and they
 // share cells in every sub-step.
-bool Simulator::Scratch::rigid_apart(uint32_t a, uint32_t b) const {
+inline bool Simulator::Scratch::rigid_apart(uint32_t a, uint32_t b) const {
   const auto& va = rvel[a];
   return skip_rigid && va[0] == va[1] && va[2] == va[3] && va == rvel[b] && !boxes_overlap(rect[a], rect[b]);
 }
@@ -771,43 +770,6 @@ void Simulator::Scratch::bind_rows() {
   row_end.clear();
 }
 
-// row_sorted and row_end, on the first row sweep after bind (most runs
-// never need them): two stable counting sorts, by base x then by row, when
-// the shape's box is at most a few times wider and higher than the number
-// of regions (compiled formulas); otherwise a comparison sort.
-void Simulator::Scratch::sort_rows() {
-  const Regions& R = regions();
-  const size_t nr = R.size();
-  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
-  for (const RegionShape& sh : R.shapes) {
-    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
-    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
-  }
-  const auto row = [&](uint32_t r) { return R.shapes[r].base[2]; };
-  row_sorted.resize(nr);
-  const int64_t limit = 4 * static_cast<int64_t>(nr) + 64;
-  if (xhi - xlo < limit && yhi - ylo < limit) {
-    std::vector<uint32_t>& by_x = row_scratch;
-    by_x.resize(nr);
-    const auto counting = [&](auto coord, int64_t lo, int64_t hi, const auto& from, std::vector<uint32_t>& to) {
-      row_count.assign(static_cast<size_t>(hi - lo + 2), 0);
-      for (uint32_t r : from) ++row_count[static_cast<size_t>(coord(r) - lo + 1)];
-      for (size_t i = 1; i < row_count.size(); ++i) row_count[i] += row_count[i - 1];
-      for (uint32_t r : from) to[row_count[static_cast<size_t>(coord(r) - lo)]++] = r;
-    };
-    std::iota(row_sorted.begin(), row_sorted.end(), 0u);
-    counting([&](uint32_t r) { return R.shapes[r].base[0]; }, xlo, xhi, row_sorted, by_x);
-    counting(row, ylo, yhi, by_x, row_sorted);
-  } else {
-    std::iota(row_sorted.begin(), row_sorted.end(), 0u);
-    std::sort(row_sorted.begin(), row_sorted.end(), [&](uint32_t a, uint32_t b) {
-      return std::pair(row(a), R.shapes[a].base[0]) < std::pair(row(b), R.shapes[b].base[0]);
-    });
-  }
-  for (size_t i = 1; i <= nr; ++i)
-    if (i == nr || row(row_sorted[i]) != row(row_sorted[i - 1])) row_end.push_back(static_cast<uint32_t>(i));
-}
-
 // The broad phase by rows, for intervals where many regions move slowly
 // (verify's gap witness: every coupling at once). Regions of different rows
 // never overlap (their y-extents are fixed unit rows), so the candidates
@@ -820,7 +782,16 @@ void Simulator::Scratch::sort_rows() {
 // the grid path's (SimulatorTwin.RowSweepAgreesWithCellGrid). O(r) per
 // interval for r regions, plus the pairs.
 void Simulator::Scratch::row_broad_phase(int64_t span) {
-  if (row_sorted.size() != regions().size()) sort_rows();
+  if (row_sorted.size() != regions().size()) {
+    // The prepared node order merged with the other regions (reuse), or the
+    // counting sorts: the same order (PreparedRowOrder.RegionsByRowTwin).
+    row_sorted = reuse ? regions_by_row(regions(), prep->rows) : regions_by_row(regions());
+    const Regions& R = regions();
+    const size_t nr = R.size();
+    for (size_t i = 1; i <= nr; ++i)
+      if (i == nr || R.shapes[row_sorted[i]].base[2] != R.shapes[row_sorted[i - 1]].base[2])
+        row_end.push_back(static_cast<uint32_t>(i));
+  }
   row_items.resize(row_sorted.size());
   for (size_t i = 0; i < row_sorted.size(); ++i) {
     const uint32_t r = row_sorted[i];
@@ -942,7 +913,9 @@ SimResult Simulator::Scratch::run(const Schedule& s) {
       moving_against_moving(span, vmax);
     }
     if (!best.none()) return node_result(now);
-    advance(span);
+    // After the last interval nothing reads the positions (reuse: skip the
+    // advance; reset_positions then has nothing of this interval to undo).
+    if (!reuse || events.back().time != events[ei].time) advance(span);
   }
   if (cycle_found) return cycle_result();
   SimResult result;

@@ -108,9 +108,13 @@ class Simulator {
   // interval in which one coupling alone runs (every interval of an order)
   // takes its moving regions and face velocities from the first such
   // interval of that coupling since the last rebind instead of cutting the
-  // tree again. The same pairs are tested: identical results and stats, but
-  // for the reused_intervals counter. On by default; off only for the twin
-  // tests (the old computation).
+  // tree again; the row sweep starts from the prepared node order merged
+  // with the other regions (regions_by_row, lattice/row_order.hpp) instead
+  // of sorting all regions again; and the last interval of a run does not
+  // advance the regions (nothing reads them after it). The same pairs are
+  // tested: identical results and stats, but for the reused_intervals
+  // counter. On by default; off only for the twin tests (the old
+  // computation).
   void set_reuse_intervals(bool on) { reuse_ = on; }
 
   // Simulates prep from now on (its tables must outlive the simulator),
