@@ -5,7 +5,6 @@
 // 20-byte file claiming two billion clauses costs nothing.
 #include <charconv>
 #include <climits>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +12,7 @@
 #include <string_view>
 
 #include "cnf/dimacs.hpp"
+#include "common/refused_byte.hpp"
 
 namespace gridlock {
 
@@ -148,11 +148,7 @@ MaybeError Reader::run(Formula& out) {
     const bool comment = i < line.size() && line[i] == 'c';
     for (size_t k = 0; k < line.size(); ++k) {
       auto b = static_cast<unsigned char>(line[k]);
-      if (is_binary(b, comment)) {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "0x%02x", b);
-        return error(std::string("binary input: byte ") + hex + " at column " + std::to_string(k + 1));
-      }
+      if (is_binary(b, comment)) return error(refused_byte_message(line, k, line_no_));
     }
     if (i == line.size()) continue;
     any_content = true;

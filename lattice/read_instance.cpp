@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "common/refused_byte.hpp"
 #include "lattice/grid_format.hpp"
 
 namespace gridlock {
@@ -80,9 +81,7 @@ bool Reader::next_line() {
   for (size_t i = 0; i < line_.size(); ++i) {
     auto b = static_cast<unsigned char>(line_[i]);
     if ((b < 0x20 && b != '\t') || b == 0x7f || (b >= 0x80 && !comment)) {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "0x%02x", b);
-      err_ = error(std::string("binary input: byte ") + hex + " at column " + std::to_string(i + 1));
+      err_ = error(refused_byte_message(line_, i, line_no_));
       return false;
     }
   }

@@ -1,6 +1,5 @@
 #include "lattice/schedule.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -9,6 +8,7 @@
 #include <sstream>
 
 #include "common/assert.hpp"
+#include "common/refused_byte.hpp"
 
 namespace gridlock {
 
@@ -78,11 +78,8 @@ MaybeError for_each_line(const std::string& path, IsData is_data, Fn fn) {
     const bool comment = !tok.empty() && ((tok[0] == "c" && !is_data(tok)) || tok[0][0] == '#');
     for (size_t k = 0; k < text.size(); ++k) {
       const auto b = static_cast<unsigned char>(text[k]);
-      if ((b < 0x20 && b != '\t' && b != '\r') || b == 0x7f || (b >= 0x80 && !comment)) {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "0x%02x", b);
-        return Diagnostic{name, no, std::string("binary input: byte ") + hex + " at column " + std::to_string(k + 1)};
-      }
+      if ((b < 0x20 && b != '\t' && b != '\r') || b == 0x7f || (b >= 0x80 && !comment))
+        return Diagnostic{name, no, refused_byte_message(text, k, no)};
     }
     if (tok.empty() || comment) continue;
     if (auto e = fn(name, no, tok)) return e;
