@@ -172,6 +172,10 @@ void fill_stats(CompiledFormula& out, const Formula& f, size_t separated_link, s
 
 }  // namespace
 
+std::string empty_clause_message(size_t h) {
+  return "clause " + std::to_string(h + 1) + " is empty; the reduction needs at least one literal per clause";
+}
+
 CompiledFormula compile_formula(const Formula& f, Mutation mutation, TimeModel model) {
   if (auto e = validate(f); !e.empty()) throw std::invalid_argument("compile: " + e);
   if (uint64_t nodes = compiled_node_count(f, model); nodes > static_cast<uint64_t>(kMaxNodes))
@@ -179,9 +183,7 @@ CompiledFormula compile_formula(const Formula& f, Mutation mutation, TimeModel m
                                 " nodes (43n + 5L + 15m - 11), more than the .grid format's limit of " +
                                 std::to_string(kMaxNodes));
   for (size_t h = 0; h < f.clauses.size(); ++h)
-    if (f.clauses[h].empty())
-      throw std::invalid_argument("clause " + std::to_string(h + 1) +
-                                  " is empty; the reduction needs at least one literal per clause");
+    if (f.clauses[h].empty()) throw std::invalid_argument(empty_clause_message(h));
   const int n = f.num_vars;
   const size_t m = f.clauses.size();
 

@@ -89,8 +89,13 @@ struct CompiledFormula {
 // anything is drawn.
 uint64_t compiled_node_count(const Formula& f, TimeModel model = TimeModel::Discrete);
 
+// Why the reduction refuses clause h (0-based) of a formula: it is empty.
+// The one wording, for compile_formula and for the command line's check
+// right after reading (which adds the clause's line). O(1).
+std::string empty_clause_message(size_t h);
+
 // Compiles f. Requires validate(f) empty and every clause non-empty (throws
-// std::invalid_argument naming the first empty clause, 1-based), and
+// std::invalid_argument with empty_clause_message of the first empty one), and
 // compiled_node_count(f) <= kMaxNodes (checked first, before any allocation:
 // std::invalid_argument "the compiled instance would have N nodes ..."). The mutation
 // breaks one gadget kind (tests and the fuzzer's self-test only).

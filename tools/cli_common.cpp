@@ -54,10 +54,9 @@ Formula load_formula(const std::string& path, bool strict_count, FormulaUse use)
                                    " unused variables beyond the last one used are accepted"});
   for (size_t h = 0; h < clause_lines.size(); ++h)
     if (f.clauses[h].empty())
-      throw UserError(Diagnostic{name, clause_lines[h],
-                                 "clause " + std::to_string(h + 1) +
-                                     " is empty; the reduction needs at least one literal per clause "
-                                     "('gridlock cnf to-lsat' gives an equivalent formula without it)"});
+      throw UserError(
+          Diagnostic{name, clause_lines[h],
+                     empty_clause_message(h) + " ('gridlock cnf to-lsat' gives an equivalent formula without it)"});
   if (use == FormulaUse::Compile || use == FormulaUse::CompileAsIs) {
     // Both models: the continuous reduction draws 2 nodes more, and verify,
     // fuzz and gen-instances may compile either (never "internal:" midway).
