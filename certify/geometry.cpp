@@ -28,6 +28,15 @@ void counting_pass(const std::vector<NodeId>& in, std::vector<NodeId>& out, int6
   for (NodeId w : in) out[start[static_cast<size_t>(key(w) - lo)]++] = w;
 }
 
+// How far the other end of an edge operation's edge moves relative to end
+// a when the operation is done: an expansion u->v moves v away from u, a
+// contraction toward it.
+Vec2 far_end_move(const Operation& op, NodeId a) {
+  const Vec2 d = unit(op.dir);
+  const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
+  return Vec2{s * d.x, s * d.y};
+}
+
 }  // namespace
 
 std::vector<NodeId> nodes_in_row_order(const std::vector<Vec2>& cells) {
@@ -94,10 +103,31 @@ std::optional<std::string> CertifyGeometry::walk_nets(const std::vector<NodeId>&
     const OpId k = inst_.edges()[e].op;
     if (k == kNone) continue;
     const Operation& op = inst_.ops()[k];
-    // b relative to a: an expansion u->v moves v away from u, a contraction toward it.
-    const Vec2 d = unit(op.dir);
-    const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
-    nets[op.coupling] = nets[op.coupling] + Vec2{s * d.x, s * d.y};
+    nets[op.coupling] = nets[op.coupling] + far_end_move(op, a);
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> CertifyGeometry::cycle_breaker() const {
+  const auto& edges = inst_.edges();
+  for (size_t e = 0; e < edges.size(); ++e) {
+    if (tree_.tree_edge[e]) continue;
+    const NodeId a = edges[e].a, b = edges[e].b;
+    for (int axis = 0; axis < 2; ++axis) {
+      // (D_b - D_a along the tree) minus what the edge's own operation moves b by.
+      CouplingForm f;
+      add_path(a, b, 1, f, axis);
+      if (edges[e].op != kNone) {
+        const Operation& op = inst_.ops()[edges[e].op];
+        const Vec2 m = far_end_move(op, a);
+        f.terms.push_back({op.coupling, -(axis == 0 ? m.x : m.y)});
+      }
+      normalise(f);
+      if (!f.terms.empty())
+        return "coupling " + inst_.couplings()[f.terms[0].first].name +
+               " has a non-zero net around the cycle closed by " + inst_.node_label(a) + " - " + inst_.node_label(b) +
+               ": running it alone collides";
+    }
   }
   return std::nullopt;
 }

@@ -64,6 +64,14 @@ class CertifyGeometry {
   // grown region's far face). O(tree path lengths).
   std::vector<CouplingForm> region_forms(uint32_t ra, uint32_t rb) const;
 
+  // A coupling whose operations alone do not sum to zero around some cycle:
+  // the reason naming it and the edge that closes the cycle, or nullopt when
+  // every coupling closes every cycle. Checks the fundamental cycle of each
+  // edge outside the spanning tree (they generate the cycle space) against
+  // the tree path between its ends, per coupling and axis.
+  // O(sum of those tree paths).
+  std::optional<std::string> cycle_breaker() const;
+
   const Regions& regions() const { return regions_; }
 
   // Every gap inequality of a horizontal-only instance: for each pair of
