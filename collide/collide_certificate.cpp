@@ -173,7 +173,6 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
   const std::vector<RegionForm> forms = region_forms(inst, regions);
   std::string body;
   auto on_apart = [&](uint32_t a, uint32_t b, const PathNets& nets) {
-    ++out.pairs;
     const auto lam = pair_multipliers(forms[a], forms[b], nets);
     if (!lam) return;
     ++out.lines;
@@ -181,14 +180,17 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
     for (int64_t v : *lam) body += " " + std::to_string(v);
     body += "\n";
   };
-  if (auto hit = pairwise_collision(inst, tree, regions, TimeModel::Continuous, nullptr, deadline,
+  PairwiseStats stats;
+  if (auto hit = pairwise_collision(inst, tree, regions, TimeModel::Continuous, &stats, deadline,
                                     ZonotopeTest::Incremental, {}, on_apart)) {
+    out.pairs = stats.pairs;
     out.why_none = region_label(inst, regions, hit->a) + " and " + region_label(inst, regions, hit->b) +
                    " can collide in continuous time";
     out.meet_a = hit->a, out.meet_b = hit->b;
     if (partial) out.text = header(inst) + body;
     return out;
   }
+  out.pairs = stats.pairs;
   out.text = header(inst) + body;
   return out;
 }

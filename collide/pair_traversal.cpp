@@ -188,13 +188,11 @@ std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uin
                                        PathNetTracker& path, TimeModel model, ZonotopeTest ztest, PairwiseStats& st,
                                        const ApartFn& on_apart) {
   ++st.pairs;
-  bool hit = pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y);
-  if (hit) {
-    ++st.full_tests;
-    hit = model == TimeModel::Continuous   ? continuous_decision(forms, a, b, path, ztest, st)
-          : ztest == ZonotopeTest::PerPair ? discrete_pair_collides_per_vector(forms[a], forms[b], path.nets())
-                                           : discrete_pair_collides(forms[a], forms[b], path.nets());
-  }
+  if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
+  ++st.full_tests;
+  const bool hit = model == TimeModel::Continuous   ? continuous_decision(forms, a, b, path, ztest, st)
+                   : ztest == ZonotopeTest::PerPair ? discrete_pair_collides_per_vector(forms[a], forms[b], path.nets())
+                                                    : discrete_pair_collides(forms[a], forms[b], path.nets());
   if (!hit) {
     if (on_apart) on_apart(a, b, path.nets());
     return std::nullopt;

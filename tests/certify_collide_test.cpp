@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "certify/certify.hpp"
+#include "certify/internal/geometry.hpp"
 #include "collide/collide.hpp"
 #include "collide/collide_certificate.hpp"
 #include "common/random.hpp"
@@ -247,6 +248,55 @@ TEST(CertifyCollide, LinesOfYesInstancesCheckedOneByOne) {
   std::cout << "[certify-collide] " << instances << " YES instances: " << lines << " lines checked one by one, "
             << tries << " multipliers for a meeting pair refused\n";
   EXPECT_GT(tries, 10000);
+}
+
+// The face bounds the checker's sweep relies on hold at every progress
+// vector: each overlap form of a pair at p (random vertices and points of
+// the cube, as multiples of 1/8) is at most the bound from the two boxes;
+// and the path bounds set a pair apart only when one form really is <= 0
+// on the whole cube (its base plus its positive coefficients).
+TEST(CertifyCollide, FaceAndPathBoundsHoldEverywhere) {
+  int checked = 0, apart = 0;
+  for (int i = 0; i < test::scaled(400); ++i) {
+    const uint64_t seed = test::base_seed(91000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 7 + 1);
+    const Instance inst = test_instance(i, 2, seed, rng);
+    const CertifyGeometry geo(inst);
+    const std::vector<CertifyGeometry::RegionBox> box = geo.region_boxes(geo.displacement_ranges());
+    const PathBounds bounds(geo);
+    const uint32_t nr = static_cast<uint32_t>(geo.regions().size());
+    for (int t = 0; t < 40; ++t) {
+      const uint32_t a = static_cast<uint32_t>(rng.below(nr)), b = static_cast<uint32_t>(rng.below(nr));
+      if (a == b) continue;
+      const std::vector<CouplingForm> forms = geo.region_forms(a, b);
+      // PathBounds::apart only when one form is <= 0 on the whole cube.
+      if (bounds.apart(a, b)) {
+        bool one = false;
+        for (const CouplingForm& f : forms) {
+          int64_t m = f.base;
+          for (auto [q, c] : f.terms) m += std::max<int64_t>(0, c);
+          one = one || m <= 0;
+        }
+        ASSERT_TRUE(one) << where(seed) << ": regions " << a << ", " << b << " set apart by the path bounds alone";
+        ++apart;
+      }
+      // Forms 0..3: A.xhi - B.xlo, B.xhi - A.xlo, A.yhi - B.ylo, B.yhi - A.ylo.
+      const int64_t bound[4] = {box[a].hi[1] - box[b].lo[0], box[b].hi[1] - box[a].lo[0], box[a].hi[3] - box[b].lo[2],
+                                box[b].hi[3] - box[a].lo[2]};
+      std::vector<int64_t> p8(inst.couplings().size());  // progress times 8
+      for (int64_t& v : p8)
+        v = rng.below(2) == 0 ? 8 * static_cast<int64_t>(rng.below(2)) : static_cast<int64_t>(rng.below(9));
+      for (int f = 0; f < 4; ++f) {
+        int64_t at8 = 8 * forms[f].base;
+        for (auto [q, c] : forms[f].terms) at8 += c * p8[q];
+        ASSERT_LE(at8, 8 * bound[f]) << where(seed) << ": regions " << a << ", " << b << ", form " << f;
+        ++checked;
+      }
+    }
+  }
+  std::cout << "[certify-collide] " << checked << " overlap forms within the face bounds; " << apart
+            << " pairs set apart by the path bounds, each with a form <= 0 on the cube\n";
+  EXPECT_GT(apart, 1000);
 }
 
 }  // namespace

@@ -6,7 +6,10 @@
 //      p in [0,1]^k iff its eight forms (CertifyGeometry::region_forms) are
 //      all > 0;
 //   2. for every pair of distinct regions, either one form alone is <= 0
-//      over the whole cube (the checker tries the eight itself), or an
+//      over the whole cube (the checker tries the eight itself, after a
+//      sweep over bounds of each region's faces that settles far pairs
+//      in O(1), CertifyGeometry::region_boxes, and bounds along the tree
+//      path in O(log n), PathBounds), or an
 //      'r A B L1 ... L8' line gives multipliers L >= 0, not all zero, whose
 //      combination of the eight forms is <= 0 over the whole cube (its base
 //      plus its positive coefficients: the maximum over the cube).
@@ -27,9 +30,11 @@ bool is_collide_certificate(std::string_view text);
 // Checks text as a collide certificate of inst; sets r.kind ("collide"),
 // r.proved or r.reason ("line N: ..." where a line is to blame),
 // r.inequalities (r lines checked) and r.lemmas (pairs the checker ruled
-// out with one form). Exact integers, overflow a reason. Time: O(R^2 L)
-// for R regions and tree paths of length L (the forms of every pair), plus
-// O(e L) for the cycles.
+// out without a line). Exact integers, overflow a reason. Time: O(R log R)
+// for the face bounds of every region and a sweep over them, O(log n) for
+// the path bounds of each pair the sweep meets (O(R^2) of them at worst),
+// O(L) for the forms of each r line and of each pair those bounds leave
+// (tree paths of length L); O(e L) for the cycles.
 void check_collide_proof(const Instance& inst, std::string_view text, CertifyResult& r);
 
 }  // namespace gridlock
