@@ -6,9 +6,8 @@
 #include <cstdio>
 
 namespace gridlock {
-namespace {
 
-std::vector<std::string_view> words_of(std::string_view line) {
+std::vector<std::string_view> certificate_words(std::string_view line) {
   std::vector<std::string_view> w;
   size_t i = 0;
   while (i < line.size()) {
@@ -20,16 +19,32 @@ std::vector<std::string_view> words_of(std::string_view line) {
   return w;
 }
 
-bool parse_int(std::string_view s, int64_t& v) {
+bool certificate_int(std::string_view s, int64_t& v) {
   auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   return ec == std::errc() && p == s.data() + s.size();
 }
+
+std::optional<std::string> for_each_certificate_line(std::string_view text, const CertificateLineFn& f) {
+  size_t line = 0;
+  for (size_t pos = 0; pos < text.size();) {
+    const size_t end = std::min(text.find('\n', pos), text.size());
+    const std::vector<std::string_view> w = certificate_words(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line;
+    if (w.empty() || w[0] == "c") continue;
+    if (auto e = f(line, w)) return e;
+  }
+  return std::nullopt;
+}
+
+namespace {
 
 // "x,y" -> the node in that cell.
 std::optional<std::string> cell_node(const Instance& inst, std::string_view w, NodeId& out) {
   const size_t comma = w.find(',');
   Vec2 c{};
-  if (comma == std::string_view::npos || !parse_int(w.substr(0, comma), c.x) || !parse_int(w.substr(comma + 1), c.y))
+  if (comma == std::string_view::npos || !certificate_int(w.substr(0, comma), c.x) ||
+      !certificate_int(w.substr(comma + 1), c.y))
     return "'" + std::string(w) + "' is not a cell x,y";
   out = inst.node_at(c);
   if (out == kNone) return "no node in cell " + std::string(w);
@@ -80,14 +95,7 @@ std::optional<std::string> header_line(const Instance& inst, const std::vector<s
     out.model = std::string(w[3]);
     return std::nullopt;
   }
-  int64_t k = 0;
-  if (w.size() != 3 || !parse_int(w[1], k)) return at(line, "expected 'couplings COUNT DIGEST'");
-  char digest[17];
-  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(certificate_digest(inst)));
-  if (k != static_cast<int64_t>(inst.couplings().size()) || w[2] != digest)
-    return at(line, "certificate for another instance: its couplings are " + std::to_string(k) + " with digest " +
-                        std::string(w[2]) + ", this instance has " + std::to_string(inst.couplings().size()) +
-                        " with digest " + digest);
+  if (auto e = check_couplings_line(inst, w)) return at(line, *e);
   return std::nullopt;
 }
 
@@ -154,6 +162,18 @@ std::optional<std::string> read_region(const Instance& inst, const Regions& regi
   return region(inst, regions, w, out);
 }
 
+std::optional<std::string> check_couplings_line(const Instance& inst, const std::vector<std::string_view>& w) {
+  int64_t k = 0;
+  if (w.size() != 3 || !certificate_int(w[1], k)) return std::string("expected 'couplings COUNT DIGEST'");
+  char digest[17];
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(certificate_digest(inst)));
+  if (k != static_cast<int64_t>(inst.couplings().size()) || w[2] != digest)
+    return "certificate for another instance: its couplings are " + std::to_string(k) + " with digest " +
+           std::string(w[2]) + ", this instance has " + std::to_string(inst.couplings().size()) + " with digest " +
+           digest;
+  return std::nullopt;
+}
+
 uint64_t certificate_digest(const Instance& inst) {
   uint64_t h = 14695981039346656037ull;
   for (const Coupling& c : inst.couplings()) {
@@ -166,31 +186,26 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
   out = CertificateText{};
   bool digest_seen = false;
   Regions regions;  // built at the first lemma line
-  size_t line = 0;
-  for (size_t pos = 0; pos < text.size();) {
-    const size_t end = std::min(text.find('\n', pos), text.size());
-    const std::vector<std::string_view> w = words_of(text.substr(pos, end - pos));
-    pos = end + 1;
-    ++line;
-    if (w.empty() || w[0] == "c") continue;
-    std::optional<std::string> e;
+  auto one = [&](size_t line, const std::vector<std::string_view>& w) -> std::optional<std::string> {
     if (w[0] == "p" || w[0] == "couplings") {
-      e = header_line(inst, w, line, out);
       digest_seen |= w[0] == "couplings";
-    } else if (out.kind == "bounds" && w[0].size() == 1 &&
-               std::string_view("asietlgfw").find(w[0][0]) != std::string_view::npos) {
-      out.body.emplace_back(line, std::vector<std::string>(w.begin(), w.end()));
-    } else if (w[0] == "o" || w[0] == "l" || w[0] == "x") {
-      if (regions.size() == 0) regions = Regions::build(inst);
-      e = lemma_line(inst, regions, w, line, out);
-    } else if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "pairs" || w[0] == "final-gap" || w[0] == "final-cycle" ||
-               w[0] == "bounds") {
-      e = evidence_line(inst, w, line, out);
-    } else {
-      e = at(line, "unknown line kind '" + std::string(w[0]) + "'");
+      return header_line(inst, w, line, out);
     }
-    if (e) return e;
-  }
+    if (out.kind == "bounds" && w[0].size() == 1 &&
+        std::string_view("asietlgfw").find(w[0][0]) != std::string_view::npos) {
+      out.body.emplace_back(line, std::vector<std::string>(w.begin(), w.end()));
+      return std::nullopt;
+    }
+    if (w[0] == "o" || w[0] == "l" || w[0] == "x") {
+      if (regions.size() == 0) regions = Regions::build(inst);
+      return lemma_line(inst, regions, w, line, out);
+    }
+    if (w[0] == "breaker" || w[0] == "gaps" || w[0] == "pairs" || w[0] == "final-gap" || w[0] == "final-cycle" ||
+        w[0] == "bounds")
+      return evidence_line(inst, w, line, out);
+    return at(line, "unknown line kind '" + std::string(w[0]) + "'");
+  };
+  if (auto e = for_each_certificate_line(text, one)) return e;
   if (out.model.empty()) return std::string("no 'p gridlock-no-certificate 1 MODEL' line");
   if (!digest_seen) return std::string("no 'couplings COUNT DIGEST' line");
   if (out.kind.empty()) return std::string("no evidence (breaker, gaps, pairs, final-gap, final-cycle or bounds)");

@@ -3,6 +3,7 @@
 
 #include "certify/internal/bounds_proof.hpp"
 #include "certify/internal/certificate_text.hpp"
+#include "certify/internal/collide_proof.hpp"
 #include "certify/internal/geometry.hpp"
 #include "certify/internal/order_proof.hpp"
 #include "certify/internal/pair_pattern.hpp"
@@ -113,6 +114,12 @@ void check_pairs_proof(const Instance& inst, const CertificateText& c, CertifyRe
 
 CertifyResult certify(const Instance& inst, std::string_view text, const std::string& model) {
   CertifyResult r;
+  // gridlock collide's NO (no schedule collides): continuous, so it also
+  // proves the discrete model's NO.
+  if (is_collide_certificate(text)) {
+    check_collide_proof(inst, text, r);
+    return r;
+  }
   CertificateText c;
   if (auto e = read_certificate(inst, text, c)) {
     r.reason = *e;

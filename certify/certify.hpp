@@ -11,6 +11,7 @@
 //   geometry.*          displacements, cycle sums, gaps, gap inequalities
 //   order_proof.*       the forward RUP check of a lemma log
 //   pair_pattern.*      why an x line's clause holds (a colliding pair of regions)
+//   collide_proof.*     gridlock collide's NO: every pair of regions kept apart
 //   certify.cpp         which kind proves what
 #pragma once
 
@@ -25,14 +26,18 @@ namespace gridlock {
 struct CertifyResult {
   bool proved = false;        // true: the certificate proves that inst has no schedule
   std::string reason;         // not proved: what failed, "line N: ..." where a line is to blame
-  std::string kind;           // breaker, gaps, pairs, final-gap or final-cycle (once read)
-  uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance; pairs: x lines checked
-  uint64_t lemmas = 0;        // gaps: lemma lines checked; pairs: o and l lines
+  std::string kind;           // breaker, gaps, pairs, final-gap, final-cycle, bounds or collide (once read)
+  uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance; pairs: x lines checked;
+                              // collide: r lines checked
+  uint64_t lemmas = 0;        // gaps: lemma lines checked; pairs: o and l lines; collide: pairs one form rules out
   uint64_t axioms = 0;        // gaps: order-closure clauses derived
 };
 
 // Checks `text` as a NO certificate of inst in the model `model`
 // ("discrete" or "continuous"; the certificate's own p line must agree).
+// A certificate of gridlock collide (p gridlock-collide-no-certificate,
+// kind "collide") proves instead that no schedule collides, in either
+// model (certify/internal/collide_proof.hpp).
 // Never throws on bad text: every problem is a reason. Time: reading and
 // geometry O(text + n + sum of tree-path lengths of the gaps); the proof
 // check O(lemmas x propagation), like the solver that wrote it; memory

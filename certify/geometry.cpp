@@ -1,6 +1,7 @@
 #include "certify/internal/geometry.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace gridlock {
 namespace {
@@ -26,6 +27,15 @@ void counting_pass(const std::vector<NodeId>& in, std::vector<NodeId>& out, int6
   for (NodeId w : in) ++start[static_cast<size_t>(key(w) - lo) + 1];
   for (size_t i = 1; i <= span; ++i) start[i] += start[i - 1];
   for (NodeId w : in) out[start[static_cast<size_t>(key(w) - lo)]++] = w;
+}
+
+// How far the other end of an edge operation's edge moves relative to end
+// a when the operation is done: an expansion u->v moves v away from u, a
+// contraction toward it.
+Vec2 far_end_move(const Operation& op, NodeId a) {
+  const Vec2 d = unit(op.dir);
+  const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
+  return Vec2{s * d.x, s * d.y};
 }
 
 }  // namespace
@@ -94,12 +104,101 @@ std::optional<std::string> CertifyGeometry::walk_nets(const std::vector<NodeId>&
     const OpId k = inst_.edges()[e].op;
     if (k == kNone) continue;
     const Operation& op = inst_.ops()[k];
-    // b relative to a: an expansion u->v moves v away from u, a contraction toward it.
-    const Vec2 d = unit(op.dir);
-    const int64_t s = int64_t{op.kind == OpKind::Expand ? 1 : -1} * (a == op.u ? 1 : -1);
-    nets[op.coupling] = nets[op.coupling] + Vec2{s * d.x, s * d.y};
+    nets[op.coupling] = nets[op.coupling] + far_end_move(op, a);
   }
   return std::nullopt;
+}
+
+std::optional<std::string> CertifyGeometry::cycle_breaker() const {
+  const auto& edges = inst_.edges();
+  for (size_t e = 0; e < edges.size(); ++e) {
+    if (tree_.tree_edge[e]) continue;
+    const NodeId a = edges[e].a, b = edges[e].b;
+    for (int axis = 0; axis < 2; ++axis) {
+      // (D_b - D_a along the tree) minus what the edge's own operation moves b by.
+      CouplingForm f;
+      add_path(a, b, 1, f, axis);
+      if (edges[e].op != kNone) {
+        const Operation& op = inst_.ops()[edges[e].op];
+        const Vec2 m = far_end_move(op, a);
+        f.terms.push_back({op.coupling, -(axis == 0 ? m.x : m.y)});
+      }
+      normalise(f);
+      if (!f.terms.empty())
+        return "coupling " + inst_.couplings()[f.terms[0].first].name +
+               " has a non-zero net around the cycle closed by " + inst_.node_label(a) + " - " + inst_.node_label(b) +
+               ": running it alone collides";
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<CertifyGeometry::Range> CertifyGeometry::displacement_ranges() const {
+  std::vector<Range> range(inst_.num_nodes(), {0, 0, 0, 0});
+  for (NodeId w : tree_.order) {  // parents first
+    if (tree_.parent[w] == kNone) continue;
+    const Vec2 v = op_child_vector(inst_, tree_, w);
+    const Range& up = range[tree_.parent[w]];
+    range[w] = {up[0] + std::min<int64_t>(0, v.x), up[1] + std::max<int64_t>(0, v.x), up[2] + std::min<int64_t>(0, v.y),
+                up[3] + std::max<int64_t>(0, v.y)};
+  }
+  return range;
+}
+
+std::vector<CertifyGeometry::RegionBox> CertifyGeometry::region_boxes(const std::vector<Range>& ranges) const {
+  std::vector<RegionBox> boxes(regions_.size());
+  for (size_t r = 0; r < regions_.size(); ++r) {
+    const RegionShape& s = regions_.shapes[r];
+    for (int f = 0; f < 4; ++f) {
+      const Range& d = ranges[s.ref[f]];
+      const size_t lo = f < 2 ? 0 : 2;  // the axis's entries of a Range: low, then high
+      const int64_t grow = s.grow_op != kNone && s.grow_face == f ? s.grow_sign : 0;
+      boxes[r].lo[f] = s.base[f] + d[lo] + std::min<int64_t>(0, grow);
+      boxes[r].hi[f] = s.base[f] + d[lo + 1] + std::max<int64_t>(0, grow);
+    }
+  }
+  return boxes;
+}
+
+PathBounds::PathBounds(const CertifyGeometry& geo) : geo_(geo), range_(geo.displacement_ranges()) {
+  const SpanningTree& t = geo.tree();
+  const size_t n = t.parent.size();
+  up_.emplace_back(n);
+  for (NodeId w = 0; w < n; ++w) up_[0][w] = t.parent[w] == kNone ? w : t.parent[w];
+  for (size_t k = 1; (size_t{1} << k) < n; ++k) {
+    up_.emplace_back(n);
+    for (NodeId w = 0; w < n; ++w) up_[k][w] = up_[k - 1][up_[k - 1][w]];
+  }
+}
+
+NodeId PathBounds::lca(NodeId u, NodeId v) const {
+  const std::vector<uint32_t>& depth = geo_.depths();
+  if (depth[u] < depth[v]) std::swap(u, v);
+  for (size_t k = up_.size(); k-- > 0;)
+    if (depth[u] - depth[v] >= (uint32_t{1} << k)) u = up_[k][u];
+  if (u == v) return u;
+  for (size_t k = up_.size(); k-- > 0;)
+    if (up_[k][u] != up_[k][v]) u = up_[k][u], v = up_[k][v];
+  return up_[0][u];
+}
+
+int64_t PathBounds::face_difference_max(uint32_t a, int fa, uint32_t b, int fb) const {
+  const RegionShape &sa = geo_.regions().shapes[a], &sb = geo_.regions().shapes[b];
+  const NodeId u = sa.ref[fa], v = sb.ref[fb];
+  const CertifyGeometry::Range &ru = range_[u], &rv = range_[v], &rl = range_[lca(u, v)];
+  const size_t lo = fa < 2 ? 0 : 2, hi = lo + 1;  // the axis's entries of a Range
+  // D_u - D_v = (D_u - D_l) - (D_v - D_l), each within its range from l.
+  int64_t m = sa.base[fa] - sb.base[fb] + (ru[hi] - rl[hi]) - (rv[lo] - rl[lo]);
+  if (sa.grow_op != kNone && sa.grow_face == fa) m += std::max(0, sa.grow_sign);
+  if (sb.grow_op != kNone && sb.grow_face == fb) m += std::max(0, -sb.grow_sign);
+  return m;
+}
+
+bool PathBounds::apart(uint32_t a, uint32_t b) const {
+  return face_difference_max(a, 1, b, 0) <= 0 || face_difference_max(b, 1, a, 0) <= 0 ||
+         face_difference_max(a, 3, b, 2) <= 0 || face_difference_max(b, 3, a, 2) <= 0 ||
+         face_difference_max(a, 1, a, 0) <= 0 || face_difference_max(b, 1, b, 0) <= 0 ||
+         face_difference_max(a, 3, a, 2) <= 0 || face_difference_max(b, 3, b, 2) <= 0;
 }
 
 CouplingForm CertifyGeometry::overlap_form(NodeId a, NodeId b) const {

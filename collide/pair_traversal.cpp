@@ -185,14 +185,18 @@ bool continuous_decision(const std::vector<RegionForm>& forms, uint32_t a, uint3
 // reach filter, then the exact test of the model, counted in st; on a
 // meeting, the collision with its witness.
 std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uint32_t a, uint32_t b,
-                                       PathNetTracker& path, TimeModel model, ZonotopeTest ztest, PairwiseStats& st) {
+                                       PathNetTracker& path, TimeModel model, ZonotopeTest ztest, PairwiseStats& st,
+                                       const ApartFn& on_apart) {
   ++st.pairs;
   if (!pair_may_meet(forms[a], forms[b], path.reach_x, path.reach_y)) return std::nullopt;
   ++st.full_tests;
-  bool hit = model == TimeModel::Continuous   ? continuous_decision(forms, a, b, path, ztest, st)
-             : ztest == ZonotopeTest::PerPair ? discrete_pair_collides_per_vector(forms[a], forms[b], path.nets())
-                                              : discrete_pair_collides(forms[a], forms[b], path.nets());
-  if (!hit) return std::nullopt;
+  const bool hit = model == TimeModel::Continuous   ? continuous_decision(forms, a, b, path, ztest, st)
+                   : ztest == ZonotopeTest::PerPair ? discrete_pair_collides_per_vector(forms[a], forms[b], path.nets())
+                                                    : discrete_pair_collides(forms[a], forms[b], path.nets());
+  if (!hit) {
+    if (on_apart) on_apart(a, b, path.nets());
+    return std::nullopt;
+  }
   PairCollision pc;
   pc.a = a, pc.b = b;
   PathNets nets = path.nets();
@@ -207,7 +211,8 @@ std::optional<PairCollision> test_pair(const std::vector<RegionForm>& forms, uin
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats, const Deadline* deadline,
                                                 ZonotopeTest ztest,
-                                                const std::function<void(uint64_t, uint64_t)>& on_source) {
+                                                const std::function<void(uint64_t, uint64_t)>& on_source,
+                                                const ApartFn& on_apart) {
   const size_t n = inst.num_nodes(), nq = inst.couplings().size();
   std::vector<RegionForm> forms = region_forms(inst, regions);
   std::vector<std::vector<uint32_t>> regs_of(n);
@@ -220,7 +225,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
   PairwiseStats st;
   std::optional<PairCollision> found;
   auto test = [&](uint32_t a, uint32_t b) {
-    found = test_pair(forms, a, b, path, model, ztest, st);
+    found = test_pair(forms, a, b, path, model, ztest, st, on_apart);
     return found.has_value();
   };
   struct Frame {

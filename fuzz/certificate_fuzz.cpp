@@ -6,6 +6,8 @@
 // reason or a proof; never a crash, a sanitizer report, or an exception.
 // An accepted certificate must really be one: the instance is NO in both
 // models, so acceptance itself is no bug, but a reason must be empty then.
+// A collide certificate (no schedule collides) must never be accepted: some
+// schedule of this instance collides ('gridlock collide' says YES).
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -36,6 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const char* model : {"discrete", "continuous"}) {
     const gridlock::CertifyResult r = gridlock::certify(fuzz_instance(), text, model);
     if (r.proved != r.reason.empty()) __builtin_trap();
+    if (r.proved && r.kind == "collide") __builtin_trap();
   }
   return 0;
 }

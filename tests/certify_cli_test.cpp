@@ -22,6 +22,17 @@ const char* const kPush =
 const char* const kSquare =
     "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 0 0 1\ne 1 0 1 1\ne 0 1 1 1\no a expand 0 0 +x\n";
 
+// (2,0) rides coupling Q diagonally past (0,0), corner to corner: x overlap
+// needs Q past 1/2, y overlap Q before 1/2. No schedule collides, and only
+// the sum of those two forms shows it (an r line).
+const char* const kDiagonal =
+    "p grid 17 16 4 1\nn 0 0\nn -1 0\nn -2 0\nn -3 0\nn -4 0\nn -4 1\nn -4 2\nn -4 3\nn -3 3\n"
+    "n -2 3\nn -1 3\nn 0 3\nn 1 3\nn 2 3\nn 2 2\nn 2 1\nn 2 0\ne 0 0 -1 0\ne -1 0 -2 0\n"
+    "e -2 0 -3 0\ne -3 0 -4 0\ne -4 0 -4 1\ne -4 1 -4 2\ne -4 2 -4 3\ne -4 3 -3 3\n"
+    "e -3 3 -2 3\ne -2 3 -1 3\ne -1 3 0 3\ne 0 3 1 3\ne 1 3 2 3\ne 2 3 2 2\ne 2 2 2 1\n"
+    "e 2 1 2 0\no e1 expand 0 0 -x\no e2 expand -2 0 -x\no e3 expand -4 0 +y\n"
+    "o e4 expand -4 2 +y\nq Q e1 e2 e3 e4\n";
+
 void expect_certified(const std::string& grid, const std::string& cert, const std::string& model,
                       const std::string& kind) {
   const auto s = run_gridlock({"solve", grid, "--model", model, "--certificate", cert});
@@ -100,6 +111,41 @@ TEST(CertifyCli, BrokenCertificatesRefusedWithTheReason) {
     }
     EXPECT_NE(r.err.find(want), std::string::npos) << "want '" << want << "' in " << r.err;
   }
+}
+
+// gridlock collide --certificate: written with a NO, checked by certify in
+// both models; a changed multiplier, a foreign instance and a YES refused.
+TEST(CertifyCli, CollideCertificateEndToEnd) {
+  const std::string d = test::temp_dir();
+  const std::string diag = test::write_file(d + "/diag.grid", kDiagonal), cert = d + "/diag.cert";
+  const auto w = run_gridlock({"collide", diag, "--certificate", cert});
+  ASSERT_EQ(w.exit_code, 20) << w.out << w.err;
+  EXPECT_NE(w.out.find("1 with multipliers"), std::string::npos) << w.out;
+  const std::string text = test::read_file(cert);
+  EXPECT_NE(text.find("p gridlock-collide-no-certificate 1 continuous\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("r 0,0 2,0 1 0 1 0 0 0 0 0\n"), std::string::npos) << text;
+  for (const char* model : {"continuous", "discrete"}) {
+    const auto c = run_gridlock({"certify", diag, cert, "--model", model});
+    EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+    EXPECT_NE(c.out.find("s NO"), std::string::npos);
+    EXPECT_NE(c.out.find("c certificate checked"), std::string::npos);
+    EXPECT_NE(c.out.find("no schedule collides"), std::string::npos) << c.out;
+  }
+  std::string bad = text;
+  bad.replace(bad.find("r 0,0 2,0 1 0 1"), 15, "r 0,0 2,0 1 0 0");
+  const std::string badf = test::write_file(d + "/bad.cert", bad);
+  const auto b = run_gridlock({"certify", diag, badf});
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_NE(b.err.find(badf + ":3: certificate rejected: the combination of the forms is positive"), std::string::npos)
+      << b.err;
+  const std::string push = test::write_file(d + "/push.grid", kPush);
+  const auto other = run_gridlock({"certify", push, cert});
+  EXPECT_EQ(other.exit_code, 1);
+  EXPECT_NE(other.err.find("certificate for another instance"), std::string::npos) << other.err;
+  // A YES (a breaks the square's cycle) writes nothing.
+  const std::string square = test::write_file(d + "/sq.grid", kSquare);
+  EXPECT_EQ(run_gridlock({"collide", square, "--certificate", d + "/sq.cert"}).exit_code, 10);
+  EXPECT_FALSE(std::filesystem::exists(d + "/sq.cert"));
 }
 
 TEST(CertifyCli, VerifyAndGenInstancesUseIt) {

@@ -15,7 +15,8 @@ namespace {
 namespace po = boost::program_options;
 
 const char* const kCertifyDescription =
-    "Checks a NO certificate (written by 'gridlock solve --certificate C') without the solvers:\n"
+    "Checks a NO certificate (written by 'gridlock solve --certificate C', or by 'gridlock collide\n"
+    "--certificate C': no schedule collides) without the solvers:\n"
     "the checker re-derives the gap inequalities, displacements and region forms from the\n"
     "instance, checks the reason of every clause (in continuous time with exact rationals) and\n"
     "every lemma by unit propagation (docs/certificates.md). s NO (exit 20) and\n"
@@ -61,6 +62,9 @@ int run_certify(const std::vector<std::string>& args) {
   if (r.kind == "gaps")
     ans.comment(std::to_string(r.inequalities) + " gap inequalities derived, " + std::to_string(r.axioms) +
                 " closure clauses, " + std::to_string(r.lemmas) + " lemmas checked");
+  if (r.kind == "collide")
+    ans.comment("no schedule collides (gridlock collide's NO, in both models): " + std::to_string(r.inequalities) +
+                " pairs of regions kept apart by their multipliers, " + std::to_string(r.lemmas) + " by one form");
   if (r.kind == "bounds")
     ans.comment(std::to_string(r.inequalities) + " clauses checked against the instance, " + std::to_string(r.axioms) +
                 " selector definitions, " + std::to_string(r.lemmas) + " lemmas checked");

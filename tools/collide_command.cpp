@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "collide/collide.hpp"
+#include "collide/collide_certificate.hpp"
 #include "common/limits.hpp"
 #include "lattice/simulate.hpp"
 #include "tools/cli_common.hpp"
@@ -24,6 +25,8 @@ po::options_description collide_options() {
       "auto, tree (no couplings: centroid decomposition), tree-pairwise (no couplings: all pairs), "
       "pairwise (any instance: exact per-pair tests)")(
       "svg", po::value<std::string>(), "draw the colliding schedule's configuration at the collision to this SVG file")(
+      "certificate", po::value<std::string>(),
+      "with a NO, write a certificate to FILE that 'gridlock certify' checks (docs/certificates.md)")(
       "timeout", po::value<std::string>(), "give up after S seconds, reading included (s UNKNOWN, exit 0)")(
       "json", "print one JSON object instead of c/s/v lines");
   return opts;
@@ -41,6 +44,29 @@ CollideMethod method_arg(const std::string& name) {
   if (name == "tree-pairwise") return CollideMethod::TreePairwise;
   if (name == "pairwise") return CollideMethod::Pairwise;
   throw UserError("--method must be auto, tree, tree-pairwise or pairwise, not '" + name + "'");
+}
+
+// --certificate C with a NO: the certificate (continuous; it proves the
+// discrete NO too), or a comment saying why there is none.
+void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, const std::string& cert_path,
+                          const Deadline* deadline) {
+  CollideCertificate cert;
+  try {
+    cert = collide_no_certificate(inst, deadline);
+  } catch (const LimitReached&) {
+    ans.comment("no certificate: limit reached while writing it");
+    return;
+  }
+  if (cert.text.empty()) {
+    if (model == TimeModel::Continuous)
+      throw std::logic_error("collide: a continuous NO without a certificate: " + cert.why_none);
+    ans.comment("no certificate: " + cert.why_none + " (discrete NOs of such instances carry no certificate yet)");
+    return;
+  }
+  cli::write_text_file(cert_path, cert.text);
+  ans.comment("certificate written to " + cert_path + ": " + std::to_string(cert.pairs) + " pairs of regions, " +
+              std::to_string(cert.lines) + " with multipliers ('gridlock certify' checks it)");
+  ans.data()["certificate"] = cert_path;
 }
 
 // A colliding schedule found: what was predicted, the simulator's collision,
@@ -83,12 +109,14 @@ int run_collide(const std::vector<std::string>& args) {
   po::options_description opts = collide_options();
   po::variables_map vm;
   if (!cli::parse_args_one_input(
-          args, opts, "instance", vm, "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--json]",
+          args, opts, "instance", vm,
+          "collide INSTANCE.grid [--model continuous|discrete] [--svg OUT.svg] [--certificate C] [--json]",
           "Colliding Schedule: can some schedule of the couplings cause a collision?\n"
           "s YES (exit 10) with a colliding schedule, already run through the exact simulator:\n"
           "discrete model: 'v' lines with the order (gridlock check --order-file reads them);\n"
           "continuous model: one 'v NAME TIME' line per coupling (gridlock check --times reads them).\n"
-          "s NO (exit 20): no schedule collides. s UNKNOWN (exit 0): --timeout reached first."))
+          "s NO (exit 20): no schedule collides (with --certificate C, a certificate 'gridlock certify'\n"
+          "checks). s UNKNOWN (exit 0): --timeout reached first."))
     return 0;
   const std::string model_name = vm["model"].as<std::string>();
   const TimeModel model = time_model_arg(model_name);
@@ -96,6 +124,7 @@ int run_collide(const std::vector<std::string>& args) {
 
   const std::string path = vm["instance"].as<std::string>();
   if (vm.count("svg")) cli::refuse_overwriting_input(vm["svg"].as<std::string>(), {path});
+  if (vm.count("certificate")) cli::refuse_overwriting_input(vm["certificate"].as<std::string>(), {path});
   const double seconds = cli::seconds_arg_opt(vm, "timeout").value_or(0);
   Instance inst = cli::load_instance(path);
   cli::Activity act(path, "finding a colliding schedule");  // out of memory names the file
@@ -129,7 +158,11 @@ int run_collide(const std::vector<std::string>& args) {
                 ", rectangles swept: " + std::to_string(res.stats.rectangles));
   ans.data()["model"] = model_name;
   ans.data()["algorithm"] = res.algorithm;
-  if (!res.collides) return ans.finish(Verdict::No);
+  if (!res.collides) {
+    if (vm.count("certificate"))
+      write_no_certificate(ans, inst, model, vm["certificate"].as<std::string>(), seconds > 0 ? &deadline : nullptr);
+    return ans.finish(Verdict::No);
+  }
   return report_collision(ans, inst, res, model, vm);
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,6 +48,19 @@ std::optional<std::string> read_certificate(const Instance& inst, std::string_vi
 std::optional<std::string> read_coupling(const Instance& inst, std::string_view w, CouplingId& out);
 std::optional<std::string> read_cell(const Instance& inst, std::string_view w, NodeId& out);
 std::optional<std::string> read_region(const Instance& inst, const Regions& regions, std::string_view w, uint32_t& out);
+
+// The blank-separated words of one line, and a whole word as an integer.
+std::vector<std::string_view> certificate_words(std::string_view line);
+bool certificate_int(std::string_view s, int64_t& v);
+
+// Calls f(line number, words) for every line that is not empty and not a
+// comment ('c'), in order; stops at and returns the first reason f gives.
+using CertificateLineFn = std::function<std::optional<std::string>(size_t, const std::vector<std::string_view>&)>;
+std::optional<std::string> for_each_certificate_line(std::string_view text, const CertificateLineFn& f);
+
+// The words of a "couplings COUNT DIGEST" line against inst: the reason if
+// they are malformed or name another instance.
+std::optional<std::string> check_couplings_line(const Instance& inst, const std::vector<std::string_view>& w);
 
 // FNV-1a (64 bits) of the coupling names in instance order, each followed
 // by '\n' (the "couplings" line).

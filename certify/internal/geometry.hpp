@@ -6,6 +6,7 @@
 // contraction) when the operation's coupling is done.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -64,6 +65,31 @@ class CertifyGeometry {
   // grown region's far face). O(tree path lengths).
   std::vector<CouplingForm> region_forms(uint32_t ra, uint32_t rb) const;
 
+  // A coupling whose operations alone do not sum to zero around some cycle:
+  // the reason naming it and the edge that closes the cycle, or nullopt when
+  // every coupling closes every cycle. Checks the fundamental cycle of each
+  // edge outside the spanning tree (they generate the cycle space) against
+  // the tree path between its ends, per coupling and axis.
+  // O(sum of those tree paths).
+  std::optional<std::string> cycle_breaker() const;
+
+  // Per node, the range over [0,1]^k of its displacement from the root:
+  // x low, x high, y low, y high, the sum over its tree path of
+  // [min(0, v), max(0, v)] per axis (v each operation's child vector;
+  // cancellations ignored, so the range may be larger than the reachable
+  // set, never smaller). O(n).
+  using Range = std::array<int64_t, 4>;
+  std::vector<Range> displacement_ranges() const;
+
+  // For every region, bounds on its four faces (xlo, xhi, ylo, yhi) that
+  // hold at every progress vector: lo[f] <= face f <= hi[f]. O(regions).
+  struct RegionBox {
+    int64_t lo[4] = {0, 0, 0, 0}, hi[4] = {0, 0, 0, 0};
+  };
+  std::vector<RegionBox> region_boxes(const std::vector<Range>& ranges) const;
+
+  const SpanningTree& tree() const { return tree_; }
+  const std::vector<uint32_t>& depths() const { return depth_; }
   const Regions& regions() const { return regions_; }
 
   // Every gap inequality of a horizontal-only instance: for each pair of
@@ -80,6 +106,27 @@ class CertifyGeometry {
   SpanningTree tree_;
   Regions regions_;
   std::vector<uint32_t> depth_;
+};
+
+// Upper bounds over the cube on the eight forms of a pair of regions from
+// the displacement ranges along the tree path between the nodes two faces
+// follow: D_u - D_v lies in the ranges from their lowest common ancestor
+// (binary lifting), cancellations between the two branches ignored.
+// O(n log n) to build, O(log n) per bound.
+class PathBounds {
+ public:
+  explicit PathBounds(const CertifyGeometry& geo);
+  // True iff some form of regions a, b (CertifyGeometry::region_forms) is
+  // <= 0 on the whole cube by these bounds.
+  bool apart(uint32_t a, uint32_t b) const;
+
+ private:
+  NodeId lca(NodeId u, NodeId v) const;
+  // Bound on face fa of region a minus face fb of region b (same axis).
+  int64_t face_difference_max(uint32_t a, int fa, uint32_t b, int fb) const;
+  const CertifyGeometry& geo_;
+  std::vector<CertifyGeometry::Range> range_;
+  std::vector<std::vector<NodeId>> up_;  // up_[k][w]: the 2^k-th ancestor of w (the root above the root)
 };
 
 }  // namespace gridlock

@@ -141,10 +141,18 @@ enum class ZonotopeTest {
 // in the discrete model PerPair selects discrete_pair_collides_per_vector
 // (the twin), anything else discrete_pair_collides. on_source (optional)
 // is called before each source node's traversal with (sources done, n).
+// on_apart (optional) is called with every pair of regions the exact test
+// finds apart and the path's nets between their references (O(nets) more
+// per such pair): the certificate writer's hook
+// (collide/collide_certificate.hpp). Pairs the quick filter drops need no
+// call: one of their eight forms alone is <= 0 on the whole cube (the
+// filter's bounds are sums of per-term maxima of one form).
+using ApartFn = std::function<void(uint32_t, uint32_t, const PathNets&)>;
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats = nullptr,
                                                 const Deadline* deadline = nullptr,
                                                 ZonotopeTest ztest = ZonotopeTest::Incremental,
-                                                const std::function<void(uint64_t, uint64_t)>& on_source = {});
+                                                const std::function<void(uint64_t, uint64_t)>& on_source = {},
+                                                const ApartFn& on_apart = {});
 
 }  // namespace gridlock

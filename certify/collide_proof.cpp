@@ -1,0 +1,168 @@
+// A NO certificate of gridlock collide (certify/internal/collide_proof.hpp).
+#include "certify/internal/collide_proof.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "certify/internal/certificate_text.hpp"
+#include "certify/internal/geometry.hpp"
+
+namespace gridlock {
+namespace {
+
+using i128 = __int128;
+constexpr const char* kHeader = "gridlock-collide-no-certificate";
+
+std::string at(size_t line, const std::string& what) { return "line " + std::to_string(line) + ": " + what; }
+
+// One r line: the pair as written and its multipliers.
+struct PairLine {
+  size_t line = 0;
+  uint32_t a = kNone, b = kNone;
+  std::array<int64_t, 8> lambda{};
+};
+
+struct CollideText {
+  bool header = false, couplings = false;
+  std::map<std::pair<uint32_t, uint32_t>, PairLine> pairs;  // by (smaller, larger) region
+};
+
+// The maximum over [0,1]^k of sum_i lambda_i f_i: its base plus its positive
+// coefficients. nullopt on overflow.
+std::optional<i128> max_over_cube(const std::vector<CouplingForm>& forms, const std::array<int64_t, 8>& lambda) {
+  i128 base = 0;
+  std::map<CouplingId, i128> coef;
+  for (size_t i = 0; i < forms.size(); ++i) {
+    if (lambda[i] == 0) continue;
+    i128 t = 0;
+    if (__builtin_mul_overflow(static_cast<i128>(lambda[i]), static_cast<i128>(forms[i].base), &t) ||
+        __builtin_add_overflow(base, t, &base))
+      return std::nullopt;
+    for (auto [q, c] : forms[i].terms)
+      if (__builtin_mul_overflow(static_cast<i128>(lambda[i]), static_cast<i128>(c), &t) ||
+          __builtin_add_overflow(coef[q], t, &coef[q]))
+        return std::nullopt;
+  }
+  for (const auto& [q, c] : coef)
+    if (c > 0 && __builtin_add_overflow(base, c, &base)) return std::nullopt;
+  return base;
+}
+
+// r A B L1 .. L8
+std::optional<std::string> pair_line(const Instance& inst, const Regions& regions,
+                                     const std::vector<std::string_view>& w, size_t line, CollideText& out) {
+  if (w.size() != 11) return at(line, "expected 'r REGION REGION' and eight multipliers");
+  PairLine p;
+  p.line = line;
+  if (auto e = read_region(inst, regions, w[1], p.a)) return at(line, *e);
+  if (auto e = read_region(inst, regions, w[2], p.b)) return at(line, *e);
+  if (p.a == p.b) return at(line, "a region paired with itself");
+  bool any = false;
+  for (size_t i = 0; i < 8; ++i) {
+    if (!certificate_int(w[3 + i], p.lambda[i]) || p.lambda[i] < 0)
+      return at(line, "multiplier '" + std::string(w[3 + i]) + "' is not an integer >= 0");
+    any = any || p.lambda[i] != 0;
+  }
+  if (!any) return at(line, "every multiplier is zero");
+  const auto key = std::minmax(p.a, p.b);
+  if (!out.pairs.emplace(std::pair{key.first, key.second}, p).second)
+    return at(line, "a second line for " + std::string(w[1]) + " and " + std::string(w[2]));
+  return std::nullopt;
+}
+
+std::optional<std::string> read_collide_text(const Instance& inst, const Regions& regions, std::string_view text,
+                                             CollideText& out) {
+  auto one = [&](size_t line, const std::vector<std::string_view>& w) -> std::optional<std::string> {
+    if (w[0] == "p") {
+      if (out.header) return at(line, "a second p line");
+      if (w.size() != 4 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous")
+        return at(line, std::string("expected 'p ") + kHeader + " 1 continuous'");
+      out.header = true;
+      return std::nullopt;
+    }
+    if (!out.header) return at(line, std::string("expected 'p ") + kHeader + " 1 continuous' first");
+    if (w[0] == "couplings") {
+      if (out.couplings) return at(line, "a second couplings line");
+      if (auto e = check_couplings_line(inst, w)) return at(line, *e);
+      out.couplings = true;
+      return std::nullopt;
+    }
+    if (w[0] != "r") return at(line, "unknown line kind '" + std::string(w[0]) + "'");
+    if (!out.couplings) return at(line, "an r line before the couplings line");
+    return pair_line(inst, regions, w, line, out);
+  };
+  if (auto e = for_each_certificate_line(text, one)) return e;
+  if (!out.header) return std::string("no 'p ") + kHeader + " 1 continuous' line";
+  if (!out.couplings) return std::string("no 'couplings COUNT DIGEST' line");
+  return std::nullopt;
+}
+
+// Some single form of the pair is <= 0 over the whole cube.
+bool one_form_rules_out(const std::vector<CouplingForm>& forms) {
+  for (const CouplingForm& f : forms) {
+    i128 m = f.base;
+    for (auto [q, c] : f.terms)
+      if (c > 0) m += c;
+    if (m <= 0) return true;
+  }
+  return false;
+}
+
+// Every line's multipliers, then every pair without a line.
+void check_pairs(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
+  for (const auto& [key, p] : c.pairs) {
+    const std::optional<i128> m = max_over_cube(geo.region_forms(p.a, p.b), p.lambda);
+    if (!m) return void(r.reason = at(p.line, "overflow in the combination of the forms"));
+    if (*m > 0)
+      return void(r.reason = at(p.line,
+                                "the combination of the forms is positive somewhere in the cube: it rules "
+                                "nothing out"));
+    ++r.inequalities;
+  }
+  // Pairs whose face bounds overlap in x, by a sweep in order of the
+  // lowest left face: a later b whose left face is never left of a's
+  // right face keeps them apart on its own (A.xhi - B.xlo <= 0 everywhere).
+  const Regions& regions = geo.regions();
+  const std::vector<CertifyGeometry::RegionBox> box = geo.region_boxes(geo.displacement_ranges());
+  const PathBounds bounds(geo);
+  std::vector<uint32_t> order(regions.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::ranges::sort(order, [&](uint32_t p, uint32_t q) { return box[p].lo[0] < box[q].lo[0]; });
+  for (size_t i = 0; i < order.size(); ++i)
+    for (size_t j = i + 1; j < order.size() && box[order[j]].lo[0] < box[order[i]].hi[1]; ++j) {
+      const uint32_t a = std::min(order[i], order[j]), b = std::max(order[i], order[j]);
+      if (c.pairs.count({a, b}) || box[a].hi[3] <= box[b].lo[2] || box[b].hi[3] <= box[a].lo[2]) continue;
+      if (!bounds.apart(a, b) && !one_form_rules_out(geo.region_forms(a, b)))
+        return void(r.reason = region_label(inst, regions, a) + " and " + region_label(inst, regions, b) +
+                               " have no r line, and no single form rules them out");
+    }
+  r.lemmas = regions.size() * (regions.size() - 1) / 2 - c.pairs.size();
+  r.proved = true;
+}
+
+}  // namespace
+
+bool is_collide_certificate(std::string_view text) {
+  bool collide = false;
+  for_each_certificate_line(text, [&](size_t, const std::vector<std::string_view>& w) -> std::optional<std::string> {
+    collide = w.size() >= 2 && w[0] == "p" && w[1] == kHeader;
+    return "";  // the first line decides
+  });
+  return collide;
+}
+
+void check_collide_proof(const Instance& inst, std::string_view text, CertifyResult& r) {
+  r.kind = "collide";
+  const CertifyGeometry geo(inst);
+  CollideText c;
+  if (auto e = read_collide_text(inst, geo.regions(), text, c)) return void(r.reason = *e);
+  if (auto e = geo.cycle_breaker()) return void(r.reason = *e);
+  check_pairs(inst, geo, c, r);
+}
+
+}  // namespace gridlock

@@ -1,0 +1,40 @@
+// The check of a NO certificate of gridlock collide (docs/certificates.md,
+// "Collide certificates"): no schedule of the instance collides.
+//   1. every coupling sums to zero around every cycle (checked here from
+//      the fundamental cycles of the spanning tree), so the positions are
+//      the tree displacements and each pair of regions overlaps at progress
+//      p in [0,1]^k iff its eight forms (CertifyGeometry::region_forms) are
+//      all > 0;
+//   2. for every pair of distinct regions, either one form alone is <= 0
+//      over the whole cube (the checker tries the eight itself, after a
+//      sweep over bounds of each region's faces that settles far pairs
+//      in O(1), CertifyGeometry::region_boxes, and bounds along the tree
+//      path in O(log n), PathBounds), or an
+//      'r A B L1 ... L8' line gives multipliers L >= 0, not all zero, whose
+//      combination of the eight forms is <= 0 over the whole cube (its base
+//      plus its positive coefficients: the maximum over the cube).
+// Continuous time reaches every p in the cube and the discrete model's
+// states are among them, so the certificate proves NO in both models.
+#pragma once
+
+#include <string_view>
+
+#include "certify/certify.hpp"
+
+namespace gridlock {
+
+// True iff the first line that is not empty and not a comment is the p line
+// of a collide certificate.
+bool is_collide_certificate(std::string_view text);
+
+// Checks text as a collide certificate of inst; sets r.kind ("collide"),
+// r.proved or r.reason ("line N: ..." where a line is to blame),
+// r.inequalities (r lines checked) and r.lemmas (pairs the checker ruled
+// out without a line). Exact integers, overflow a reason. Time: O(R log R)
+// for the face bounds of every region and a sweep over them, O(log n) for
+// the path bounds of each pair the sweep meets (O(R^2) of them at worst),
+// O(L) for the forms of each r line and of each pair those bounds leave
+// (tree paths of length L); O(e L) for the cycles.
+void check_collide_proof(const Instance& inst, std::string_view text, CertifyResult& r);
+
+}  // namespace gridlock

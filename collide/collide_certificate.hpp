@@ -1,0 +1,44 @@
+// The certificate of a NO of Colliding Schedule (docs/certificates.md,
+// "Collide certificates"; checked by certify/, 'gridlock certify').
+//
+// When no coupling breaks a cycle, regions A and B overlap at progress p iff
+// eight strict inequalities f_i(p) > 0, affine in p, hold; in continuous
+// time every p in [0,1]^k occurs. By Motzkin's transposition theorem (the
+// cube alone is feasible) the pair never overlaps iff some lambda >= 0,
+// lambda != 0 makes sum_i lambda_i f_i <= 0 on the whole cube. The writer
+// runs the pairwise traversal (collide/internal/collide_pairs.hpp) and, for
+// every pair that no single f_i rules out, derives lambda from a
+// Fourier-Motzkin elimination of the pair's projected system that carries
+// each constraint's multipliers along (exact 128-bit integers).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "common/limits.hpp"
+#include "lattice/instance.hpp"
+
+namespace gridlock {
+
+struct CollideCertificate {
+  std::string text;      // the certificate; empty when there is none
+  std::string why_none;  // when text is empty: why
+  uint64_t pairs = 0;    // region pairs covered
+  uint64_t lines = 0;    // of which with an r line (the others: one form rules them out)
+  // Some pair can overlap in continuous time: the first one found (regions).
+  uint32_t meet_a = kNone, meet_b = kNone;
+};
+
+// The certificate that no schedule of inst collides in continuous time
+// (hence none in discrete time either). None (why_none) when a coupling
+// breaks a cycle or some pair of regions can overlap in continuous time
+// (possible when only the discrete model says NO). Time: the pairwise
+// traversal, O(n^2) steps and O(R^2) pair tests, plus O(nets) per pair;
+// deadline as in find_collision (LimitReached).
+// partial (for tests): when a pair can overlap, text still holds the lines
+// of the pairs found apart before it (a certificate the checker refuses,
+// whose lines it checks one by one).
+CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* deadline = nullptr,
+                                          bool partial = false);
+
+}  // namespace gridlock

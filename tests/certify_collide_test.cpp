@@ -1,0 +1,303 @@
+// Certificates of gridlock collide's NO (collide/collide_certificate.hpp,
+// checked by certify/internal/collide_proof.hpp) on seeded random instances:
+// every NO of the continuous model gets a certificate the checker accepts
+// (in both models), discrete-only NOs say why they have none, mutated
+// certificates are refused, and no YES instance gets one accepted.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "certify/certify.hpp"
+#include "certify/internal/geometry.hpp"
+#include "collide/collide.hpp"
+#include "collide/collide_certificate.hpp"
+#include "common/random.hpp"
+#include "lattice/motion.hpp"
+#include "lattice/random_instance.hpp"
+#include "support/instance_io.hpp"
+#include "support/reference_collide.hpp"
+#include "support/test_scale.hpp"
+
+namespace gridlock {
+namespace {
+
+RandomInstanceParams cert_params(Rng& rng) {
+  RandomInstanceParams p;
+  if (rng.below(2) == 0) {  // collide's random twin test's larger couplings: continuous-only collisions
+    p.nodes = 2 + static_cast<uint32_t>(rng.below(13));
+    p.ops = 1 + static_cast<uint32_t>(rng.below(10));
+    p.max_coupling = 4;
+    p.extra_edge_percent = rng.below(3) == 0 ? 40 : 0;
+    p.spread = static_cast<uint32_t>(rng.below(3));
+    return p;
+  }
+  p.nodes = 4 + static_cast<uint32_t>(rng.below(16));
+  p.ops = 2 + static_cast<uint32_t>(rng.below(12));
+  p.max_coupling = 2 + static_cast<uint32_t>(rng.below(5));
+  if (rng.below(2) == 0) p.couplings = 1 + static_cast<uint32_t>(rng.below(3)), p.max_coupling = 8;
+  p.extra_edge_percent = rng.below(3) == 0 ? 40 : 0;
+  p.horizontal_only = rng.below(6) == 0;
+  p.path_shape = rng.below(5) == 0;
+  p.spread = static_cast<uint32_t>(rng.below(3));
+  return p;
+}
+
+// A path that leaves (0,0) to the left, climbs, crosses over and comes down
+// to (bx, by) on its right, with expansions or contractions on every other
+// edge of its first two legs, in one or two couplings: the far end moves diagonally past (0,0),
+// where often no single form rules a pair out and an r line is needed.
+std::string curl_instance(Rng& rng) {
+  const int64_t left = 2 + static_cast<int64_t>(rng.below(4)), height = 2 + static_cast<int64_t>(rng.below(5));
+  const int64_t bx = 1 + static_cast<int64_t>(rng.below(3)), by = rng.below(4) == 0 ? 1 : 0;
+  std::vector<std::pair<int64_t, int64_t>> cells{{0, 0}};
+  auto walk = [&](int64_t dx, int64_t dy, int64_t steps) {
+    for (int64_t i = 0; i < steps; ++i) cells.push_back({cells.back().first + dx, cells.back().second + dy});
+  };
+  walk(-1, 0, left), walk(0, 1, height), walk(1, 0, left + bx), walk(0, -1, height - by);
+  std::string text, ops, q[2] = {"q Q", "q R"};
+  size_t n_ops = 0;
+  const bool two = rng.below(2) == 0;
+  auto xy = [](std::pair<int64_t, int64_t> c) { return std::to_string(c.first) + " " + std::to_string(c.second); };
+  for (size_t i = 0; i + 1 < cells.size(); ++i) {
+    const auto [x, y] = cells[i];
+    const auto [x2, y2] = cells[i + 1];
+    text += "e " + xy(cells[i]) + " " + xy(cells[i + 1]) + "\n";
+    if (i % 2 == 1 || i >= static_cast<size_t>(left + height) || rng.below(4) == 0) continue;
+    const std::string dir = x2 > x ? "+x" : x2 < x ? "-x" : y2 > y ? "+y" : "-y";
+    const std::string name = "o" + std::to_string(n_ops++);
+    ops += "o " + name + (rng.below(8) == 0 ? " contract " : " expand ");
+    ops += xy(cells[i]) + " " + dir + "\n";
+    q[two ? rng.below(2) : 0] += " " + name;
+  }
+  if (n_ops == 0) return "";
+  std::string nodes;
+  for (const auto& c : cells) nodes += "n " + xy(c) + "\n";
+  const bool second = q[1].size() > 3, first = q[0].size() > 3;
+  return "p grid " + std::to_string(cells.size()) + " " + std::to_string(cells.size() - 1) + " " +
+         std::to_string(n_ops) + " " + std::to_string(int{first} + int{second}) + "\n" + nodes + text + ops +
+         (first ? q[0] + "\n" : "") + (second ? q[1] + "\n" : "");
+}
+
+// Instance i of a run: a curl (curl_instance) unless i is a multiple of
+// plain_every, else a random instance (cert_params).
+Instance test_instance(int i, int plain_every, uint64_t seed, Rng& rng) {
+  const std::string curl = i % plain_every ? curl_instance(rng) : "";
+  return curl.empty() ? random_instance(cert_params(rng), seed) : test::parse_instance(curl);
+}
+
+std::string where(uint64_t seed) {
+  return "seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    const size_t end = text.find('\n', pos);
+    out.push_back(text.substr(pos, end - pos));
+    pos = end + 1;
+  }
+  return out;
+}
+
+std::string join(const std::vector<std::string>& lines) {
+  std::string s;
+  for (const std::string& l : lines) s += l + "\n";
+  return s;
+}
+
+std::vector<std::string> words_of(const std::string& line) {
+  std::vector<std::string> words;
+  for (size_t p = 0; p < line.size();) {
+    const size_t e = std::min(line.find(' ', p), line.size());
+    words.push_back(line.substr(p, e - p));
+    p = e + 1;
+  }
+  return words;
+}
+
+bool blames_line(const CertifyResult& r, size_t line) {
+  return r.reason.rfind("line " + std::to_string(line) + ":", 0) == 0;
+}
+
+// Every r line with its multipliers replaced by one unit vector is refused
+// at that line (the writer writes a line only when no single form rules
+// the pair out); in a whole certificate, dropping the line is refused too.
+void expect_mutations_refused(const Instance& inst, const std::string& text, bool whole, Rng& rng,
+                              const std::string& at) {
+  const std::vector<std::string> lines = lines_of(text);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].rfind("r ", 0) != 0) continue;
+    const std::vector<std::string> words = words_of(lines[i]);
+    ASSERT_EQ(words.size(), 11u) << at;
+    std::vector<std::string> changed = lines;
+    std::string unit = "r " + words[1] + " " + words[2];
+    const size_t one = rng.below(8);
+    for (size_t k = 0; k < 8; ++k) unit += k == one ? " 1" : " 0";
+    changed[i] = unit;
+    const CertifyResult r = certify(inst, join(changed), "continuous");
+    EXPECT_TRUE(!r.proved && blames_line(r, i + 1)) << at << ": " << unit << ": " << r.reason;
+    if (!whole) continue;
+    changed[i] = "c dropped";
+    EXPECT_FALSE(certify(inst, join(changed), "continuous").proved) << at << ": without " << lines[i];
+  }
+}
+
+// A region as certificates name it.
+std::string region_word(const Instance& inst, uint32_t r) {
+  const Regions regions = Regions::build(inst);
+  const RegionShape& s = regions.shapes[r];
+  if (s.kind != RegionKind::Node) return "+" + inst.ops()[s.id].name;
+  return std::to_string(inst.cells()[s.id].x) + "," + std::to_string(inst.cells()[s.id].y);
+}
+
+struct Counts {
+  int instances = 0, no = 0, discrete_only_no = 0, lines = 0, with_lines = 0, foreign_refused = 0, brute = 0;
+};
+
+// A YES instance (continuous): another instance's certificate and a bare
+// header are refused.
+void expect_foreign_refused(const Instance& inst, const std::string& other, Counts& n, const std::string& at) {
+  if (other.empty()) return;
+  EXPECT_FALSE(certify(inst, other, "continuous").proved) << at;
+  const std::string bare = "p gridlock-collide-no-certificate 1 continuous\n" + lines_of(other).at(1) + "\n";
+  EXPECT_FALSE(certify(inst, bare, "discrete").proved) << at;
+  ++n.foreign_refused;
+}
+
+TEST(CertifyCollide, EveryNoCertifiedAndMutationsRefused) {
+  Counts n;
+  std::string last_no;  // a certificate of an earlier NO instance, tried on the YES ones
+  for (int i = 0; i < test::scaled(6000); ++i) {
+    const uint64_t seed = test::base_seed(31000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 6151 + 5);
+    const Instance inst = test_instance(i, 4, seed, rng);
+    const std::string at = where(seed);
+    ++n.instances;
+    const bool cont = find_collision(inst, TimeModel::Continuous).collides;
+    const bool disc = find_collision(inst, TimeModel::Discrete).collides;
+    const CollideCertificate cert = collide_no_certificate(inst);
+    if (cont) {
+      ASSERT_TRUE(cert.text.empty()) << at;
+      if (!disc) {
+        ++n.discrete_only_no;
+        EXPECT_NE(cert.why_none.find("continuous"), std::string::npos) << at;
+      }
+      expect_foreign_refused(inst, last_no, n, at);
+      continue;
+    }
+    ASSERT_FALSE(disc) << at << ": continuous NO but discrete YES";
+    if (inst.couplings().size() <= 4) {
+      ASSERT_FALSE(test::brute_continuous(inst).collides) << at << ": the brute-force twin finds a collision";
+      ++n.brute;
+    }
+    ++n.no;
+    ASSERT_FALSE(cert.text.empty()) << at << ": " << cert.why_none;
+    for (const char* model : {"continuous", "discrete"}) {
+      const CertifyResult r = certify(inst, cert.text, model);
+      ASSERT_TRUE(r.proved) << at << ": " << r.reason << "\n" << cert.text;
+      EXPECT_EQ(r.inequalities, cert.lines) << at;
+    }
+    n.lines += static_cast<int>(cert.lines);
+    n.with_lines += cert.lines > 0;
+    expect_mutations_refused(inst, cert.text, true, rng, at);
+    last_no = cert.text;
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::cout << "[certify-collide] " << n.instances << " instances: " << n.no << " NO certified (" << n.brute
+            << " confirmed by the brute-force twin, " << n.with_lines << " with r lines, " << n.lines << " lines), "
+            << n.discrete_only_no << " discrete-only NO without a certificate, " << n.foreign_refused
+            << " YES refused foreign certificates\n";
+  EXPECT_GT(n.no, 1000);
+  EXPECT_GT(n.with_lines, 50);
+}
+
+// YES instances: the lines written for the pairs found apart before the
+// meeting pair are each accepted, their unit mutations refused at their
+// line, and random multipliers for the meeting pair (which overlaps at some
+// progress, so every combination is positive there) always refused at theirs.
+TEST(CertifyCollide, LinesOfYesInstancesCheckedOneByOne) {
+  int instances = 0, lines = 0, tries = 0;
+  for (int i = 0; i < test::scaled(3000); ++i) {
+    const uint64_t seed = test::base_seed(61000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 4099 + 3);
+    const Instance inst = test_instance(i, 2, seed, rng);
+    const std::string at = where(seed);
+    const CollideCertificate part = collide_no_certificate(inst, nullptr, true);
+    if (part.meet_a == kNone) continue;  // NO, or a coupling breaks a cycle
+    ASSERT_FALSE(part.text.empty()) << at;
+    ++instances;
+    lines += static_cast<int>(part.lines);
+    const CertifyResult whole = certify(inst, part.text, "continuous");
+    ASSERT_FALSE(whole.proved) << at;
+    ASSERT_EQ(whole.reason.rfind("line ", 0), std::string::npos) << at << ": a line refused: " << whole.reason;
+    EXPECT_EQ(whole.inequalities, part.lines) << at;
+    expect_mutations_refused(inst, part.text, false, rng, at);
+    const std::string pair = "r " + region_word(inst, part.meet_a) + " " + region_word(inst, part.meet_b);
+    const size_t at_line = lines_of(part.text).size() + 1;
+    for (int t = 0; t < 20; ++t, ++tries) {
+      std::string line = pair;
+      for (int k = 0; k < 8; ++k)
+        line += " " + std::to_string(k == t % 8 ? 1 + rng.below(9) : rng.below(t < 10 ? 2 : 50));
+      const CertifyResult r = certify(inst, part.text + line + "\n", "continuous");
+      ASSERT_TRUE(!r.proved && blames_line(r, at_line)) << at << ": " << line << ": " << r.reason;
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::cout << "[certify-collide] " << instances << " YES instances: " << lines << " lines checked one by one, "
+            << tries << " multipliers for a meeting pair refused\n";
+  EXPECT_GT(tries, 10000);
+}
+
+// The face bounds the checker's sweep relies on hold at every progress
+// vector: each overlap form of a pair at p (random vertices and points of
+// the cube, as multiples of 1/8) is at most the bound from the two boxes;
+// and the path bounds set a pair apart only when one form really is <= 0
+// on the whole cube (its base plus its positive coefficients).
+TEST(CertifyCollide, FaceAndPathBoundsHoldEverywhere) {
+  int checked = 0, apart = 0;
+  for (int i = 0; i < test::scaled(400); ++i) {
+    const uint64_t seed = test::base_seed(91000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 7 + 1);
+    const Instance inst = test_instance(i, 2, seed, rng);
+    const CertifyGeometry geo(inst);
+    const std::vector<CertifyGeometry::RegionBox> box = geo.region_boxes(geo.displacement_ranges());
+    const PathBounds bounds(geo);
+    const uint32_t nr = static_cast<uint32_t>(geo.regions().size());
+    for (int t = 0; t < 40; ++t) {
+      const uint32_t a = static_cast<uint32_t>(rng.below(nr)), b = static_cast<uint32_t>(rng.below(nr));
+      if (a == b) continue;
+      const std::vector<CouplingForm> forms = geo.region_forms(a, b);
+      // PathBounds::apart only when one form is <= 0 on the whole cube.
+      if (bounds.apart(a, b)) {
+        bool one = false;
+        for (const CouplingForm& f : forms) {
+          int64_t m = f.base;
+          for (auto [q, c] : f.terms) m += std::max<int64_t>(0, c);
+          one = one || m <= 0;
+        }
+        ASSERT_TRUE(one) << where(seed) << ": regions " << a << ", " << b << " set apart by the path bounds alone";
+        ++apart;
+      }
+      // Forms 0..3: A.xhi - B.xlo, B.xhi - A.xlo, A.yhi - B.ylo, B.yhi - A.ylo.
+      const int64_t bound[4] = {box[a].hi[1] - box[b].lo[0], box[b].hi[1] - box[a].lo[0], box[a].hi[3] - box[b].lo[2],
+                                box[b].hi[3] - box[a].lo[2]};
+      std::vector<int64_t> p8(inst.couplings().size());  // progress times 8
+      for (int64_t& v : p8)
+        v = rng.below(2) == 0 ? 8 * static_cast<int64_t>(rng.below(2)) : static_cast<int64_t>(rng.below(9));
+      for (int f = 0; f < 4; ++f) {
+        int64_t at8 = 8 * forms[f].base;
+        for (auto [q, c] : forms[f].terms) at8 += c * p8[q];
+        ASSERT_LE(at8, 8 * bound[f]) << where(seed) << ": regions " << a << ", " << b << ", form " << f;
+        ++checked;
+      }
+    }
+  }
+  std::cout << "[certify-collide] " << checked << " overlap forms within the face bounds; " << apart
+            << " pairs set apart by the path bounds, each with a form <= 0 on the cube\n";
+  EXPECT_GT(apart, 1000);
+}
+
+}  // namespace
+}  // namespace gridlock
