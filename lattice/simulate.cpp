@@ -363,6 +363,7 @@ struct Simulator::Scratch {
   void row_broad_phase(int64_t span);
   void sweep_row(size_t b, size_t e, int64_t span);
   void moving_against_moving(int64_t span, int64_t S);
+  void few_moving_pairs(int64_t span);
   void pairs_in_dense_cell(size_t d, uint32_t i);
   bool rigid_apart(uint32_t a, uint32_t b) const;
   void add_moving_pair(uint32_t i, uint32_t j);
@@ -672,6 +673,79 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
   hit_head[d] = static_cast<uint32_t>(hit_index.size() - 1);
 }
 
+// The pairs of few moving regions (at most kAllMovingPairs: one coupling
+// running, as in every order) that moving_against_moving's path without
+// reuse tests: those whose swept boxes overlap and that rigid_apart keeps.
+// Each region gets a rigid-velocity class: one per distinct velocity of the
+// regions that translate (va[0] == va[1], va[2] == va[3]), kNone for the
+// others (and for all when skip_rigid is off); rigid_apart(a, b) then holds
+// exactly when a and b share a class (not kNone) and their rectangles do
+// not overlap now. For such a pair, boxes_overlap of the swept boxes follows
+// from boxes_overlap of the rectangles (a swept box contains its rectangle),
+// so the old path tests a pair of one class iff its rectangles overlap.
+// Two regions of one class whose rectangles both have positive width and
+// height never do (so they are skipped without a check), by this invariant
+// (I) of a run: at the start of every interval the run reaches, no two
+// regions of positive width and height overlap. At the first event every
+// region is at its base: the nodes' distinct unit cells, and regions of
+// width 0. If a and b (positive extents) overlapped at the start `now` of a
+// later interval, the eight strict conditions of first_overlap, continuous
+// in time, would hold just before `now`, in the last interval that moved
+// anything (nothing moves in between): either at its start too (then (I)
+// fails there: induction), or from some moment inside it, which that
+// interval's exact test finds (every broad phase passes each pair that
+// collides in its interval: the static pairs keep their relative position,
+// and its rigid skips are exact by this argument at its own start), so the
+// run would have returned that collision. Pairs of different classes (or
+// kNone) are tested iff their swept boxes overlap, as before; a pair of one
+// class with a region of width or height 0 iff its rectangles overlap. So
+// the pairs tested are the old path's (same results and stats), and
+// test_pair does not depend on their order (nor on a pair's: first_overlap
+// is symmetric in A and B). The largest class's regions of positive extents
+// (an order's moved component) meet only the others, not each other.
+void Simulator::Scratch::few_moving_pairs(int64_t span) {
+  const auto m = static_cast<uint32_t>(moving.size());
+  std::array<uint32_t, kAllMovingPairs> cls, size;  // class per index, regions per class
+  std::array<bool, kAllMovingPairs> solid;          // positive width and height now
+  std::array<std::array<int64_t, 2>, kAllMovingPairs> class_vel;
+  uint32_t classes = 0, largest = kNone;
+  for (uint32_t i = 0; i < m; ++i) {
+    const std::array<int64_t, 4>& v = rvel[moving[i]];
+    const std::array<int64_t, 4>& p = rect[moving[i]];
+    solid[i] = p[1] > p[0] && p[3] > p[2];
+    cls[i] = kNone;
+    if (!skip_rigid || v[0] != v[1] || v[2] != v[3]) continue;
+    uint32_t c = 0;
+    while (c < classes && (class_vel[c][0] != v[0] || class_vel[c][1] != v[2])) ++c;
+    if (c == classes) class_vel[classes] = {v[0], v[2]}, size[classes++] = 0;
+    cls[i] = c;
+    if (solid[i] && (++size[c], largest == kNone || size[c] > size[largest])) largest = c;
+  }
+  std::array<uint32_t, kAllMovingPairs> inside, outside;  // the largest class's solid regions, the rest
+  uint32_t ni = 0, no = 0;
+  for (uint32_t i = 0; i < m; ++i)
+    (largest != kNone && cls[i] == largest && solid[i] ? inside[ni++] : outside[no++]) = i;
+  const auto tested = [&](uint32_t i, uint32_t j) {
+    if (cls[i] != cls[j] || cls[i] == kNone) return boxes_overlap(swept[i], swept[j]);
+    return !(solid[i] && solid[j]) && boxes_overlap(rect[moving[i]], rect[moving[j]]);
+  };
+  // The inside regions' boxes, side by side: a region outside meets them by
+  // their rectangles if it is of their class (then not solid), otherwise by
+  // their swept boxes (what `tested` gives for these pairs).
+  std::array<std::array<int64_t, 4>, kAllMovingPairs> in_rect, in_swept;
+  for (uint32_t y = 0; y < ni; ++y) in_rect[y] = rect[moving[inside[y]]], in_swept[y] = swept[inside[y]];
+  for (uint32_t x = 0; x < no; ++x) {
+    const uint32_t i = outside[x];
+    for (uint32_t y = x + 1; y < no; ++y)
+      if (tested(i, outside[y])) test_pair(moving[i], moving[outside[y]], true, span);
+    const bool same = cls[i] == largest;
+    const std::array<int64_t, 4>& box = same ? rect[moving[i]] : swept[i];
+    const auto& boxes = same ? in_rect : in_swept;
+    for (uint32_t y = 0; y < ni; ++y)
+      if (boxes_overlap(box, boxes[y])) test_pair(moving[i], moving[inside[y]], true, span);
+  }
+}
+
 // Moving against moving. Up to kAllMovingPairs moving regions (one coupling
 // running, as in every order): every pair whose swept boxes overlap. More:
 // split the interval into S = max speed sub-steps
@@ -682,6 +756,10 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
 // pile many regions into each cell: quadratic.
 void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
   moving_pairs.clear();
+  if (moving.size() <= kAllMovingPairs && reuse) {  // few, by rigid-velocity class (reuse)
+    few_moving_pairs(span);
+    return;
+  }
   if (moving.size() <= kAllMovingPairs) {  // few: every pair whose swept boxes overlap
     // By the left end of the swept box: each box meets only the boxes that
     // start before its right end (the pairs and the tests are the same as

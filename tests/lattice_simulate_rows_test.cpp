@@ -10,15 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "cnf/sat_solver.hpp"
 #include "common/random.hpp"
-#include "gadgets/mutation.hpp"
 #include "lattice/prepared.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/row_order.hpp"
 #include "lattice/simulate.hpp"
-#include "reductions/compile.hpp"
-#include "support/cnf_testing.hpp"
+#include "support/compiled_runs.hpp"
 #include "support/same_collision.hpp"
 #include "support/test_scale.hpp"
 
@@ -150,29 +147,13 @@ TEST(PreparedRowOrder, CompiledFormulasAgreeWithThePreviousPath) {
   const int cases = test::scaled(2000);
   const uint64_t seed0 = test::base_seed(95);
   Twins twins;
-  const std::vector<Mutation> mutations = all_mutations();
   for (int i = 0; i < cases; ++i) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
     Rng rng(seed);
-    const Formula f = test::random_cnf(rng, static_cast<int>(rng.between(1, 6)), static_cast<int>(rng.between(1, 20)),
-                                       1, 3, false);
-    const Mutation m = rng.below(3) == 0 ? mutations[rng.below(mutations.size())] : Mutation::None;
-    const CompiledFormula c = compile_formula(f, m);
-    const size_t k = c.instance.couplings().size();
-    std::vector<Schedule> runs;
-    const SatResult sat = solve_sat(f);
-    if (sat.status == Verdict::Yes) runs.push_back(schedule_from_order(schedule_from_assignment(c, sat.model)));
-    std::vector<CouplingId> order(k);
-    for (CouplingId q = 0; q < k; ++q) order[q] = q;
-    rng.shuffle(order);
-    runs.push_back(schedule_from_order(order));
-    Schedule at_once;
-    at_once.start.assign(k, Rational(0));
-    runs.push_back(at_once);
-    runs.push_back(runs.front());
-    const PreparedInstance prep(c.instance);
-    twins.run(prep, runs);
+    const test::CompiledRuns c = test::compiled_runs(rng, 20);
+    const PreparedInstance prep(c.compiled.instance);
+    twins.run(prep, c.runs);
   }
   EXPECT_GT(twins.collisions, cases / 2);
   EXPECT_GT(twins.clean, cases);
