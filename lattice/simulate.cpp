@@ -81,17 +81,19 @@ namespace {
 // the initial shape (given when it is at most a few times larger than the
 // number of regions, as for compiled formulas) are an array indexed by
 // position, so the 3 x 3 neighbourhood queries touch few cache lines; other
-// cells go to an open-addressing hash table. Copy-assigning a table of the
-// same capacity allocates nothing, so each run starts from the simulator's
-// initial table at the cost of a copy.
+// cells go to an open-addressing hash table. reset() empties the table
+// keeping its memory, so a simulator rebuilds it for each instance without
+// allocating (once the instances stop growing).
 class CellLists {
  public:
-  CellLists() = default;
-  // Box: cells x0 .. x0 + w - 1, y0 .. y0 + h - 1 (w = 0: none).
-  CellLists(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h) : x0_(x0), y0_(y0), w_(w), h_(h) {
+  // Empty, for num_regions regions; box: cells x0 .. x0 + w - 1,
+  // y0 .. y0 + h - 1 (w = 0: none).
+  void reset(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h) {
+    x0_ = x0, y0_ = y0, w_ = w, h_ = h;
     size_t cap = 16;
     while (cap < (w > 0 ? 64 : 4 * num_regions + 16)) cap <<= 1;
     slots_.assign(cap, Slot{});
+    used_ = 0;
     dense_.assign(static_cast<size_t>(w * h), kNone);
     next_.assign(num_regions, kNone);
     prev_.assign(num_regions, kNone);
@@ -174,11 +176,11 @@ class CellLists {
   size_t used_ = 0;
 };
 
-// The initial table of the regions' cells: a dense box of margin 2 around
+// Empties `grid` for the regions' cells: a dense box of margin 2 around
 // them when its area is at most 16 cells per region (plus a constant).
-CellLists make_cell_lists(const Regions& regions) {
+void reset_cell_lists(CellLists& grid, const Regions& regions) {
   const size_t nr = regions.size();
-  if (nr == 0) return CellLists(0, 0, 0, 0, 0);
+  if (nr == 0) return grid.reset(0, 0, 0, 0, 0);
   int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
   for (const RegionShape& sh : regions.shapes) {
     xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
@@ -187,8 +189,8 @@ CellLists make_cell_lists(const Regions& regions) {
   constexpr int64_t margin = 2, both_margins = 4;
   const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + both_margins,
                  h = static_cast<__int128>(yhi) - ylo + 1 + both_margins;
-  if (w * h > static_cast<__int128>(nr) * 16 + 4096) return CellLists(nr, 0, 0, 0, 0);
-  return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
+  if (w * h > static_cast<__int128>(nr) * 16 + 4096) return grid.reset(nr, 0, 0, 0, 0);
+  grid.reset(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
 }
 
 }  // namespace
@@ -208,14 +210,14 @@ struct Simulator::Scratch {
   bool skip_rigid = true;              // Simulator::set_skip_rigid_pairs
   bool row_sweep = true;               // Simulator::set_row_sweep
   bool reuse = true;                   // Simulator::set_reuse_intervals: tight cells, solo tables
-  CellLists initial_grid;              // every region at its base cell (independent of D)
-  std::vector<uint64_t> initial_key;
   // The state of the sweep. Between runs every region is back at its base
   // cell in grid and region_key except those in `touched` (moved by the last
   // run), and rect holds base * rect_D for the untouched ones (rect_D = 0:
-  // not yet filled).
+  // not yet filled). base_cells: grid's hashed cells with every region at
+  // its base (a grid that grew well beyond is built again by reset_positions).
   CellLists grid;
   std::vector<uint64_t> region_key;
+  size_t base_cells = 0;
   int64_t rect_D = 0;
   std::vector<uint32_t> touched;
   std::vector<char> is_touched;
@@ -291,24 +293,21 @@ struct Simulator::Scratch {
 
   // Points the scratch at p's tables (a new instance, or the first one),
   // keeping the arrays' memory. O(n + r) for r regions.
+  // The marks (node_stamp, region_stamp) are only resized: entries kept
+  // from the previous instance hold stamps up to `stamp`, which is not reset
+  // (next_stamp only increases it, clearing all marks when it wraps), so
+  // they stay below every later interval's stamp, as zeros would.
   void bind(const PreparedInstance& p) {
     prep = &p;
-    initial_grid = make_cell_lists(p.regions);
     const size_t nr = p.regions.size();
-    initial_key.resize(nr);
-    for (uint32_t r = 0; r < nr; ++r) {
-      const RegionShape& sh = p.regions.shapes[r];
-      initial_grid.insert(r, initial_key[r] = cell_key(Vec2{sh.base[0], sh.base[2]}));
-    }
-    grid = initial_grid;
-    region_key = initial_key;
+    build_grid();
     rect_D = 0;
+    for (uint32_t r : touched) is_touched[r] = 0;
     touched.clear();
-    is_touched.assign(nr, 0);
-    hit_head.assign(initial_grid.dense_size(), kNone);
-    node_stamp.assign(p.inst.num_nodes(), 0);
-    region_stamp.assign(nr, 0);
-    stamp = 0;
+    is_touched.resize(nr, 0);
+    hit_head.assign(grid.dense_size(), kNone);
+    node_stamp.resize(p.inst.num_nodes(), 0);
+    region_stamp.resize(nr, 0);
     node_vel.resize(p.inst.num_nodes());
     rect.resize(nr);
     rvel.resize(nr);
@@ -319,6 +318,7 @@ struct Simulator::Scratch {
     bind_rows();
   }
   void bind_rows();
+  void build_grid();
 
   SimResult run(const Schedule& s);
 
@@ -326,6 +326,11 @@ struct Simulator::Scratch {
   const Instance& inst() const { return prep->inst; }
   const SpanningTree& tree() const { return prep->tree; }
   const Regions& regions() const { return prep->regions; }
+  // The cell of region r's lower-left corner at its base.
+  uint64_t base_key(uint32_t r) const {
+    const RegionShape& sh = regions().shapes[r];
+    return cell_key(Vec2{sh.base[0], sh.base[2]});
+  }
   void scale_times(const Schedule& s);
   void find_cycle_collision();
   void reset_positions();
@@ -411,19 +416,29 @@ void Simulator::Scratch::find_cycle_collision() {
   }
 }
 
+// The cell table with every region at its base cell (independent of D),
+// built in place (the same table whenever it is built for one instance).
+void Simulator::Scratch::build_grid() {
+  const Regions& R = regions();
+  const auto nr = static_cast<uint32_t>(R.size());
+  reset_cell_lists(grid, R);
+  region_key.resize(nr);
+  for (uint32_t r = 0; r < nr; ++r) grid.insert(r, region_key[r] = base_key(r));
+  base_cells = grid.hashed_cells();
+}
+
 // Every region back at its base, scaled by D: only the regions the last run
-// moved, unless D changed (or the cell table grew much: then a fresh copy).
+// moved, unless D changed (or the cell table grew much: then built again).
 void Simulator::Scratch::reset_positions() {
   const size_t nr = regions().size();
-  if (grid.hashed_cells() > initial_grid.hashed_cells() + nr + 64) {
-    grid = initial_grid;
-    region_key = initial_key;
+  if (grid.hashed_cells() > base_cells + nr + 64) {
+    build_grid();
   } else {
     for (uint32_t r : touched)
-      if (region_key[r] != initial_key[r]) {
+      if (const uint64_t k = base_key(r); region_key[r] != k) {
         grid.remove(r, region_key[r]);
-        grid.insert(r, initial_key[r]);
-        region_key[r] = initial_key[r];
+        grid.insert(r, k);
+        region_key[r] = k;
       }
   }
   auto set_rect = [&](uint32_t r) {
