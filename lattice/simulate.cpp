@@ -212,9 +212,9 @@ struct Simulator::Scratch {
   bool reuse = true;                   // Simulator::set_reuse_intervals: tight cells, solo tables
   // The state of the sweep. Between runs every region is back at its base
   // cell in grid and region_key except those in `touched` (moved by the last
-  // run), and rect holds base * rect_D for the untouched ones (rect_D = 0:
-  // not yet filled). base_cells: grid's hashed cells with every region at
-  // its base (a grid that grew well beyond is built again by reset_positions).
+  // run), and rect holds base * rect_D for the untouched ones. base_cells:
+  // grid's hashed cells with every region at its base (a grid that grew
+  // well beyond is built again by reset_positions).
   CellLists grid;
   std::vector<uint64_t> region_key;
   size_t base_cells = 0;
@@ -300,8 +300,8 @@ struct Simulator::Scratch {
   void bind(const PreparedInstance& p) {
     prep = &p;
     const size_t nr = p.regions.size();
+    rect.resize(nr);
     build_grid();
-    rect_D = 0;
     for (uint32_t r : touched) is_touched[r] = 0;
     touched.clear();
     is_touched.resize(nr, 0);
@@ -309,7 +309,6 @@ struct Simulator::Scratch {
     node_stamp.resize(p.inst.num_nodes(), 0);
     region_stamp.resize(nr, 0);
     node_vel.resize(p.inst.num_nodes());
-    rect.resize(nr);
     rvel.resize(nr);
     moving_index.resize(nr);
     solo.assign(p.inst.couplings().size(), Solo{});
@@ -417,14 +416,22 @@ void Simulator::Scratch::find_cycle_collision() {
 }
 
 // The cell table with every region at its base cell (independent of D),
-// built in place (the same table whenever it is built for one instance).
+// built in place (the same table whenever it is built for one instance),
+// and in the same pass every rectangle at its base for D = 1 (rect_D = 1:
+// the first run after a bind, usually an order (D = 1), then resets only
+// the regions it moves; a run with another D rescales them all).
 void Simulator::Scratch::build_grid() {
   const Regions& R = regions();
   const auto nr = static_cast<uint32_t>(R.size());
   reset_cell_lists(grid, R);
   region_key.resize(nr);
-  for (uint32_t r = 0; r < nr; ++r) grid.insert(r, region_key[r] = base_key(r));
+  for (uint32_t r = 0; r < nr; ++r) {
+    const int64_t* b = R.shapes[r].base;
+    grid.insert(r, region_key[r] = cell_key(Vec2{b[0], b[2]}));
+    rect[r] = {b[0], b[1], b[2], b[3]};
+  }
   base_cells = grid.hashed_cells();
+  rect_D = 1;
 }
 
 // Every region back at its base, scaled by D: only the regions the last run
