@@ -64,6 +64,36 @@ std::vector<RowRun> row_runs(const Instance& inst, const std::vector<NodeId>& or
   return runs;
 }
 
+namespace {
+
+// `ids` (in increasing id order) sorted by (row, x, id) of their bases'
+// lower-left corners by two stable counting sorts (by x, then by row) when
+// the corners span at most 4 m + 64 cells each way for m ids; false (ids
+// unchanged) otherwise. O(m + span).
+bool counting_by_row(const std::vector<RegionShape>& shapes, std::vector<uint32_t>& ids) {
+  if (ids.empty()) return true;
+  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
+  for (uint32_t r : ids) {
+    const int64_t* b = shapes[r].base;
+    xlo = std::min(xlo, b[0]), xhi = std::max(xhi, b[0]);
+    ylo = std::min(ylo, b[2]), yhi = std::max(yhi, b[2]);
+  }
+  const int64_t limit = 4 * static_cast<int64_t>(ids.size()) + 64;
+  if (xhi - xlo >= limit || yhi - ylo >= limit) return false;
+  std::vector<uint32_t> by_x(ids.size()), count;
+  const auto counting = [&](int face, int64_t lo, int64_t hi, const auto& from, std::vector<uint32_t>& to) {
+    count.assign(static_cast<size_t>(hi - lo + 2), 0);
+    for (uint32_t r : from) ++count[static_cast<size_t>(shapes[r].base[face] - lo + 1)];
+    for (size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
+    for (uint32_t r : from) to[count[static_cast<size_t>(shapes[r].base[face] - lo)]++] = r;
+  };
+  counting(0, xlo, xhi, ids, by_x);
+  counting(2, ylo, yhi, by_x, ids);
+  return true;
+}
+
+}  // namespace
+
 std::vector<uint32_t> regions_by_row(const Regions& regions, const std::vector<NodeId>& rows) {
   const auto& shapes = regions.shapes;
   const auto n = static_cast<uint32_t>(rows.size());
@@ -74,9 +104,12 @@ std::vector<uint32_t> regions_by_row(const Regions& regions, const std::vector<N
     const int64_t* y = shapes[b].base;
     return x[2] != y[2] ? x[2] < y[2] : x[0] != y[0] ? x[0] < y[0] : a < b;
   };
+  // The extras by (row, x, id): counting sorts when their corners are
+  // compact (fuzz formulas), a comparison sort otherwise; (row, x, id) is a
+  // total order, so both give the same.
   std::vector<uint32_t> extra(nr - n);
   std::iota(extra.begin(), extra.end(), n);
-  std::sort(extra.begin(), extra.end(), less);
+  if (!counting_by_row(shapes, extra)) std::sort(extra.begin(), extra.end(), less);
   std::vector<uint32_t> out(nr);
   std::merge(rows.begin(), rows.end(), extra.begin(), extra.end(), out.begin(), less);
   return out;
@@ -87,25 +120,8 @@ std::vector<uint32_t> regions_by_row(const Regions& regions) {
   const size_t nr = shapes.size();
   std::vector<uint32_t> out(nr);
   std::iota(out.begin(), out.end(), 0u);
-  if (nr == 0) return out;
-  int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
-  for (const RegionShape& sh : shapes) {
-    xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
-    ylo = std::min(ylo, sh.base[2]), yhi = std::max(yhi, sh.base[2]);
-  }
-  const auto row = [&](uint32_t r) { return shapes[r].base[2]; };
-  const int64_t limit = 4 * static_cast<int64_t>(nr) + 64;
-  if (xhi - xlo < limit && yhi - ylo < limit) {
-    std::vector<uint32_t> by_x(nr), count;
-    const auto counting = [&](auto coord, int64_t lo, int64_t hi, const auto& from, std::vector<uint32_t>& to) {
-      count.assign(static_cast<size_t>(hi - lo + 2), 0);
-      for (uint32_t r : from) ++count[static_cast<size_t>(coord(r) - lo + 1)];
-      for (size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
-      for (uint32_t r : from) to[count[static_cast<size_t>(coord(r) - lo)]++] = r;
-    };
-    counting([&](uint32_t r) { return shapes[r].base[0]; }, xlo, xhi, out, by_x);
-    counting(row, ylo, yhi, by_x, out);
-  } else {
+  if (!counting_by_row(shapes, out)) {
+    const auto row = [&](uint32_t r) { return shapes[r].base[2]; };
     std::sort(out.begin(), out.end(), [&](uint32_t a, uint32_t b) {
       return std::pair(row(a), shapes[a].base[0]) < std::pair(row(b), shapes[b].base[0]);
     });

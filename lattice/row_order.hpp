@@ -36,7 +36,9 @@ std::vector<RowRun> row_runs(const Instance& inst, const std::vector<NodeId>& or
 // and growth) ordered by (row, x, id) of its base's lower-left corner: the
 // simulator's row sweep's starting order. From `rows` (nodes_by_row of the
 // regions' instance, a node's region has its cell as base) merged with the
-// other regions, sorted: O(n + m log m) for m expansions and growths.
+// other regions, sorted: for m expansions and growths, O(n + m) by two
+// counting sorts when their corners span at most 4 m + 64 cells each way
+// (compiled formulas), otherwise O(n + m log m).
 std::vector<uint32_t> regions_by_row(const Regions& regions, const std::vector<NodeId>& rows);
 // The same order without the node order: two stable counting sorts (by x,
 // then by row) when the base corners span at most 4 r + 64 cells each way

@@ -81,17 +81,19 @@ namespace {
 // the initial shape (given when it is at most a few times larger than the
 // number of regions, as for compiled formulas) are an array indexed by
 // position, so the 3 x 3 neighbourhood queries touch few cache lines; other
-// cells go to an open-addressing hash table. Copy-assigning a table of the
-// same capacity allocates nothing, so each run starts from the simulator's
-// initial table at the cost of a copy.
+// cells go to an open-addressing hash table. reset() empties the table
+// keeping its memory, so a simulator rebuilds it for each instance without
+// allocating (once the instances stop growing).
 class CellLists {
  public:
-  CellLists() = default;
-  // Box: cells x0 .. x0 + w - 1, y0 .. y0 + h - 1 (w = 0: none).
-  CellLists(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h) : x0_(x0), y0_(y0), w_(w), h_(h) {
+  // Empty, for num_regions regions; box: cells x0 .. x0 + w - 1,
+  // y0 .. y0 + h - 1 (w = 0: none).
+  void reset(size_t num_regions, int64_t x0, int64_t y0, int64_t w, int64_t h) {
+    x0_ = x0, y0_ = y0, w_ = w, h_ = h;
     size_t cap = 16;
     while (cap < (w > 0 ? 64 : 4 * num_regions + 16)) cap <<= 1;
     slots_.assign(cap, Slot{});
+    used_ = 0;
     dense_.assign(static_cast<size_t>(w * h), kNone);
     next_.assign(num_regions, kNone);
     prev_.assign(num_regions, kNone);
@@ -174,11 +176,11 @@ class CellLists {
   size_t used_ = 0;
 };
 
-// The initial table of the regions' cells: a dense box of margin 2 around
+// Empties `grid` for the regions' cells: a dense box of margin 2 around
 // them when its area is at most 16 cells per region (plus a constant).
-CellLists make_cell_lists(const Regions& regions) {
+void reset_cell_lists(CellLists& grid, const Regions& regions) {
   const size_t nr = regions.size();
-  if (nr == 0) return CellLists(0, 0, 0, 0, 0);
+  if (nr == 0) return grid.reset(0, 0, 0, 0, 0);
   int64_t xlo = INT64_MAX, xhi = INT64_MIN, ylo = INT64_MAX, yhi = INT64_MIN;
   for (const RegionShape& sh : regions.shapes) {
     xlo = std::min(xlo, sh.base[0]), xhi = std::max(xhi, sh.base[0]);
@@ -187,8 +189,8 @@ CellLists make_cell_lists(const Regions& regions) {
   constexpr int64_t margin = 2, both_margins = 4;
   const __int128 w = static_cast<__int128>(xhi) - xlo + 1 + both_margins,
                  h = static_cast<__int128>(yhi) - ylo + 1 + both_margins;
-  if (w * h > static_cast<__int128>(nr) * 16 + 4096) return CellLists(nr, 0, 0, 0, 0);
-  return CellLists(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
+  if (w * h > static_cast<__int128>(nr) * 16 + 4096) return grid.reset(nr, 0, 0, 0, 0);
+  grid.reset(nr, xlo - margin, ylo - margin, static_cast<int64_t>(w), static_cast<int64_t>(h));
 }
 
 }  // namespace
@@ -208,14 +210,14 @@ struct Simulator::Scratch {
   bool skip_rigid = true;              // Simulator::set_skip_rigid_pairs
   bool row_sweep = true;               // Simulator::set_row_sweep
   bool reuse = true;                   // Simulator::set_reuse_intervals: tight cells, solo tables
-  CellLists initial_grid;              // every region at its base cell (independent of D)
-  std::vector<uint64_t> initial_key;
   // The state of the sweep. Between runs every region is back at its base
   // cell in grid and region_key except those in `touched` (moved by the last
-  // run), and rect holds base * rect_D for the untouched ones (rect_D = 0:
-  // not yet filled).
+  // run), and rect holds base * rect_D for the untouched ones. base_cells:
+  // grid's hashed cells with every region at its base (a grid that grew
+  // well beyond is built again by reset_positions).
   CellLists grid;
   std::vector<uint64_t> region_key;
+  size_t base_cells = 0;
   int64_t rect_D = 0;
   std::vector<uint32_t> touched;
   std::vector<char> is_touched;
@@ -291,26 +293,22 @@ struct Simulator::Scratch {
 
   // Points the scratch at p's tables (a new instance, or the first one),
   // keeping the arrays' memory. O(n + r) for r regions.
+  // The marks (node_stamp, region_stamp) are only resized: entries kept
+  // from the previous instance hold stamps up to `stamp`, which is not reset
+  // (next_stamp only increases it, clearing all marks when it wraps), so
+  // they stay below every later interval's stamp, as zeros would.
   void bind(const PreparedInstance& p) {
     prep = &p;
-    initial_grid = make_cell_lists(p.regions);
     const size_t nr = p.regions.size();
-    initial_key.resize(nr);
-    for (uint32_t r = 0; r < nr; ++r) {
-      const RegionShape& sh = p.regions.shapes[r];
-      initial_grid.insert(r, initial_key[r] = cell_key(Vec2{sh.base[0], sh.base[2]}));
-    }
-    grid = initial_grid;
-    region_key = initial_key;
-    rect_D = 0;
-    touched.clear();
-    is_touched.assign(nr, 0);
-    hit_head.assign(initial_grid.dense_size(), kNone);
-    node_stamp.assign(p.inst.num_nodes(), 0);
-    region_stamp.assign(nr, 0);
-    stamp = 0;
-    node_vel.resize(p.inst.num_nodes());
     rect.resize(nr);
+    build_grid();
+    for (uint32_t r : touched) is_touched[r] = 0;
+    touched.clear();
+    is_touched.resize(nr, 0);
+    hit_head.assign(grid.dense_size(), kNone);
+    node_stamp.resize(p.inst.num_nodes(), 0);
+    region_stamp.resize(nr, 0);
+    node_vel.resize(p.inst.num_nodes());
     rvel.resize(nr);
     moving_index.resize(nr);
     solo.assign(p.inst.couplings().size(), Solo{});
@@ -319,6 +317,7 @@ struct Simulator::Scratch {
     bind_rows();
   }
   void bind_rows();
+  void build_grid();
 
   SimResult run(const Schedule& s);
 
@@ -326,6 +325,11 @@ struct Simulator::Scratch {
   const Instance& inst() const { return prep->inst; }
   const SpanningTree& tree() const { return prep->tree; }
   const Regions& regions() const { return prep->regions; }
+  // The cell of region r's lower-left corner at its base.
+  uint64_t base_key(uint32_t r) const {
+    const RegionShape& sh = regions().shapes[r];
+    return cell_key(Vec2{sh.base[0], sh.base[2]});
+  }
   void scale_times(const Schedule& s);
   void find_cycle_collision();
   void reset_positions();
@@ -363,6 +367,7 @@ struct Simulator::Scratch {
   void row_broad_phase(int64_t span);
   void sweep_row(size_t b, size_t e, int64_t span);
   void moving_against_moving(int64_t span, int64_t S);
+  void few_moving_pairs(int64_t span);
   void pairs_in_dense_cell(size_t d, uint32_t i);
   bool rigid_apart(uint32_t a, uint32_t b) const;
   void add_moving_pair(uint32_t i, uint32_t j);
@@ -410,19 +415,37 @@ void Simulator::Scratch::find_cycle_collision() {
   }
 }
 
+// The cell table with every region at its base cell (independent of D),
+// built in place (the same table whenever it is built for one instance),
+// and in the same pass every rectangle at its base for D = 1 (rect_D = 1:
+// the first run after a bind, usually an order (D = 1), then resets only
+// the regions it moves; a run with another D rescales them all).
+void Simulator::Scratch::build_grid() {
+  const Regions& R = regions();
+  const auto nr = static_cast<uint32_t>(R.size());
+  reset_cell_lists(grid, R);
+  region_key.resize(nr);
+  for (uint32_t r = 0; r < nr; ++r) {
+    const int64_t* b = R.shapes[r].base;
+    grid.insert(r, region_key[r] = cell_key(Vec2{b[0], b[2]}));
+    rect[r] = {b[0], b[1], b[2], b[3]};
+  }
+  base_cells = grid.hashed_cells();
+  rect_D = 1;
+}
+
 // Every region back at its base, scaled by D: only the regions the last run
-// moved, unless D changed (or the cell table grew much: then a fresh copy).
+// moved, unless D changed (or the cell table grew much: then built again).
 void Simulator::Scratch::reset_positions() {
   const size_t nr = regions().size();
-  if (grid.hashed_cells() > initial_grid.hashed_cells() + nr + 64) {
-    grid = initial_grid;
-    region_key = initial_key;
+  if (grid.hashed_cells() > base_cells + nr + 64) {
+    build_grid();
   } else {
     for (uint32_t r : touched)
-      if (region_key[r] != initial_key[r]) {
+      if (const uint64_t k = base_key(r); region_key[r] != k) {
         grid.remove(r, region_key[r]);
-        grid.insert(r, initial_key[r]);
-        region_key[r] = initial_key[r];
+        grid.insert(r, k);
+        region_key[r] = k;
       }
   }
   auto set_rect = [&](uint32_t r) {
@@ -672,6 +695,79 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
   hit_head[d] = static_cast<uint32_t>(hit_index.size() - 1);
 }
 
+// The pairs of few moving regions (at most kAllMovingPairs: one coupling
+// running, as in every order) that moving_against_moving's path without
+// reuse tests: those whose swept boxes overlap and that rigid_apart keeps.
+// Each region gets a rigid-velocity class: one per distinct velocity of the
+// regions that translate (va[0] == va[1], va[2] == va[3]), kNone for the
+// others (and for all when skip_rigid is off); rigid_apart(a, b) then holds
+// exactly when a and b share a class (not kNone) and their rectangles do
+// not overlap now. For such a pair, boxes_overlap of the swept boxes follows
+// from boxes_overlap of the rectangles (a swept box contains its rectangle),
+// so the old path tests a pair of one class iff its rectangles overlap.
+// Two regions of one class whose rectangles both have positive width and
+// height never do (so they are skipped without a check), by this invariant
+// (I) of a run: at the start of every interval the run reaches, no two
+// regions of positive width and height overlap. At the first event every
+// region is at its base: the nodes' distinct unit cells, and regions of
+// width 0. If a and b (positive extents) overlapped at the start `now` of a
+// later interval, the eight strict conditions of first_overlap, continuous
+// in time, would hold just before `now`, in the last interval that moved
+// anything (nothing moves in between): either at its start too (then (I)
+// fails there: induction), or from some moment inside it, which that
+// interval's exact test finds (every broad phase passes each pair that
+// collides in its interval: the static pairs keep their relative position,
+// and its rigid skips are exact by this argument at its own start), so the
+// run would have returned that collision. Pairs of different classes (or
+// kNone) are tested iff their swept boxes overlap, as before; a pair of one
+// class with a region of width or height 0 iff its rectangles overlap. So
+// the pairs tested are the old path's (same results and stats), and
+// test_pair does not depend on their order (nor on a pair's: first_overlap
+// is symmetric in A and B). The largest class's regions of positive extents
+// (an order's moved component) meet only the others, not each other.
+void Simulator::Scratch::few_moving_pairs(int64_t span) {
+  const auto m = static_cast<uint32_t>(moving.size());
+  std::array<uint32_t, kAllMovingPairs> cls, size;  // class per index, regions per class
+  std::array<bool, kAllMovingPairs> solid;          // positive width and height now
+  std::array<std::array<int64_t, 2>, kAllMovingPairs> class_vel;
+  uint32_t classes = 0, largest = kNone;
+  for (uint32_t i = 0; i < m; ++i) {
+    const std::array<int64_t, 4>& v = rvel[moving[i]];
+    const std::array<int64_t, 4>& p = rect[moving[i]];
+    solid[i] = p[1] > p[0] && p[3] > p[2];
+    cls[i] = kNone;
+    if (!skip_rigid || v[0] != v[1] || v[2] != v[3]) continue;
+    uint32_t c = 0;
+    while (c < classes && (class_vel[c][0] != v[0] || class_vel[c][1] != v[2])) ++c;
+    if (c == classes) class_vel[classes] = {v[0], v[2]}, size[classes++] = 0;
+    cls[i] = c;
+    if (solid[i] && (++size[c], largest == kNone || size[c] > size[largest])) largest = c;
+  }
+  std::array<uint32_t, kAllMovingPairs> inside, outside;  // the largest class's solid regions, the rest
+  uint32_t ni = 0, no = 0;
+  for (uint32_t i = 0; i < m; ++i)
+    (largest != kNone && cls[i] == largest && solid[i] ? inside[ni++] : outside[no++]) = i;
+  const auto tested = [&](uint32_t i, uint32_t j) {
+    if (cls[i] != cls[j] || cls[i] == kNone) return boxes_overlap(swept[i], swept[j]);
+    return !(solid[i] && solid[j]) && boxes_overlap(rect[moving[i]], rect[moving[j]]);
+  };
+  // The inside regions' boxes, side by side: a region outside meets them by
+  // their rectangles if it is of their class (then not solid), otherwise by
+  // their swept boxes (what `tested` gives for these pairs).
+  std::array<std::array<int64_t, 4>, kAllMovingPairs> in_rect, in_swept;
+  for (uint32_t y = 0; y < ni; ++y) in_rect[y] = rect[moving[inside[y]]], in_swept[y] = swept[inside[y]];
+  for (uint32_t x = 0; x < no; ++x) {
+    const uint32_t i = outside[x];
+    for (uint32_t y = x + 1; y < no; ++y)
+      if (tested(i, outside[y])) test_pair(moving[i], moving[outside[y]], true, span);
+    const bool same = cls[i] == largest;
+    const std::array<int64_t, 4>& box = same ? rect[moving[i]] : swept[i];
+    const auto& boxes = same ? in_rect : in_swept;
+    for (uint32_t y = 0; y < ni; ++y)
+      if (boxes_overlap(box, boxes[y])) test_pair(moving[i], moving[inside[y]], true, span);
+  }
+}
+
 // Moving against moving. Up to kAllMovingPairs moving regions (one coupling
 // running, as in every order): every pair whose swept boxes overlap. More:
 // split the interval into S = max speed sub-steps
@@ -682,6 +778,10 @@ void Simulator::Scratch::pairs_in_dense_cell(size_t d, uint32_t i) {
 // pile many regions into each cell: quadratic.
 void Simulator::Scratch::moving_against_moving(int64_t span, int64_t S) {
   moving_pairs.clear();
+  if (moving.size() <= kAllMovingPairs && reuse) {  // few, by rigid-velocity class (reuse)
+    few_moving_pairs(span);
+    return;
+  }
   if (moving.size() <= kAllMovingPairs) {  // few: every pair whose swept boxes overlap
     // By the left end of the swept box: each box meets only the boxes that
     // start before its right end (the pairs and the tests are the same as

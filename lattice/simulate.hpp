@@ -111,7 +111,9 @@ class Simulator {
   // tree again; the row sweep starts from the prepared node order merged
   // with the other regions (regions_by_row, lattice/row_order.hpp) instead
   // of sorting all regions again; and the last interval of a run does not
-  // advance the regions (nothing reads them after it). The same pairs are
+  // advance the regions (nothing reads them after it); few moving regions
+  // (an order's intervals) are paired by rigid-velocity class, the moved
+  // component's regions not with each other. The same pairs are
   // tested: identical results and stats, but for the reused_intervals
   // counter. On by default; off only for the twin tests (the old
   // computation).

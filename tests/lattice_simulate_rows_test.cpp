@@ -10,15 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "cnf/sat_solver.hpp"
 #include "common/random.hpp"
-#include "gadgets/mutation.hpp"
+#include "lattice/instance.hpp"
 #include "lattice/prepared.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/row_order.hpp"
 #include "lattice/simulate.hpp"
-#include "reductions/compile.hpp"
-#include "support/cnf_testing.hpp"
+#include "support/compiled_runs.hpp"
 #include "support/same_collision.hpp"
 #include "support/test_scale.hpp"
 
@@ -39,6 +37,29 @@ Instance rows_instance(uint64_t seed, Rng& rng) {
   return random_instance(p, seed);
 }
 
+// One to three long rows (joined at x = 0) with one to four expansions at
+// random cells: extras whose corners lie further apart than 4 m + 64 cells
+// (regions_by_row's comparison sort) most of the time.
+Instance spread_extras_instance(Rng& rng) {
+  InstanceBuilder b;
+  const auto width = static_cast<int64_t>(150 + rng.below(250)), rows = static_cast<int64_t>(1 + rng.below(3));
+  for (int64_t y = 0; y < rows; ++y) {
+    for (int64_t x = 0; x < width; ++x) EXPECT_FALSE(b.add_node({x, y}));
+    for (int64_t x = 0; x + 1 < width; ++x) EXPECT_FALSE(b.add_edge({x, y}, {x + 1, y}));
+    if (y > 0) {
+      EXPECT_FALSE(b.add_edge({0, y - 1}, {0, y}));
+    }
+  }
+  for (uint64_t k = 0, ops = 1 + rng.below(4); k < ops; ++k) {  // cells 3 apart: one operation per node
+    const Vec2 u{3 * static_cast<int64_t>(rng.below(static_cast<uint64_t>((width - 1) / 3))),
+                 static_cast<int64_t>(rng.below(static_cast<uint64_t>(rows)))};
+    (void)b.add_op("e" + std::to_string(k), OpKind::Expand, u, Dir::PosX);  // a cell drawn twice: refused
+  }
+  Instance inst;
+  if (auto e = b.finish(inst)) ADD_FAILURE() << e->message;
+  return inst;
+}
+
 // Two simulators, set_reuse_intervals on and off, kept across instances
 // (rebound to each, as verify's Verifier does): every run gives the same
 // results and statistics.
@@ -57,18 +78,20 @@ struct Twins {
   }
 };
 
-// The merged order equals the counting sorts' wherever those give
-// (row, x, id) (a box of corners at most 4 r + 64 wide and high), and is
-// otherwise ordered by (row, x, id) with the comparison sort's (row, x).
+// The merged order (its extras counting-sorted or, when spread out,
+// sorted by comparison) is a permutation strictly ordered by (row, x, id),
+// with the previous path's (row, x); it equals the previous path's order
+// wherever that counting-sorts (a box of corners at most 4 r + 64 wide and
+// high).
 TEST(PreparedRowOrder, RegionsByRowTwin) {
   const int cases = test::scaled(4000);
   const uint64_t seed0 = test::base_seed(91);
-  int counted = 0, with_extras = 0;
+  int counted = 0, with_extras = 0, extras_counted = 0, extras_sorted = 0;
   for (int i = 0; i < cases; ++i) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
     Rng rng(seed);
-    const Instance inst = rows_instance(seed, rng);
+    const Instance inst = i % 8 == 7 ? spread_extras_instance(rng) : rows_instance(seed, rng);
     const PreparedInstance prep(inst);
     const std::vector<uint32_t> merged = regions_by_row(prep.regions, prep.rows);
     const std::vector<uint32_t> old = regions_by_row(prep.regions);
@@ -84,8 +107,16 @@ TEST(PreparedRowOrder, RegionsByRowTwin) {
     if (xhi - xlo < limit && yhi - ylo < limit) {
       ++counted;
       ASSERT_EQ(merged, old);
-      continue;
     }
+    // Which way regions_by_row sorted the extras (both must occur).
+    int64_t ex_lo = INT64_MAX, ex_hi = INT64_MIN, ey_lo = INT64_MAX, ey_hi = INT64_MIN;
+    for (size_t r = inst.num_nodes(); r < sh.size(); ++r) {
+      ex_lo = std::min(ex_lo, sh[r].base[0]), ex_hi = std::max(ex_hi, sh[r].base[0]);
+      ey_lo = std::min(ey_lo, sh[r].base[2]), ey_hi = std::max(ey_hi, sh[r].base[2]);
+    }
+    const auto extras = static_cast<int64_t>(sh.size() - inst.num_nodes());
+    if (extras > 0)
+      (ex_hi - ex_lo < 4 * extras + 64 && ey_hi - ey_lo < 4 * extras + 64 ? extras_counted : extras_sorted)++;
     std::vector<char> seen(merged.size(), 0);
     for (size_t j = 0; j < merged.size(); ++j) {
       ASSERT_LT(merged[j], merged.size());
@@ -102,6 +133,10 @@ TEST(PreparedRowOrder, RegionsByRowTwin) {
   }
   EXPECT_GT(counted, cases / 2);
   EXPECT_GT(with_extras, cases / 2);
+  EXPECT_GT(extras_counted, cases / 4);
+  EXPECT_GT(extras_sorted, cases / 100);
+  std::cout << "extras counting-sorted in " << extras_counted << " instances, sorted by comparison in " << extras_sorted
+            << "\n";
 }
 
 // Runs with set_reuse_intervals on (the merged row order, no advance after
@@ -150,29 +185,13 @@ TEST(PreparedRowOrder, CompiledFormulasAgreeWithThePreviousPath) {
   const int cases = test::scaled(2000);
   const uint64_t seed0 = test::base_seed(95);
   Twins twins;
-  const std::vector<Mutation> mutations = all_mutations();
   for (int i = 0; i < cases; ++i) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (replay: GRIDLOCK_TEST_SEED=" + std::to_string(seed) + ")");
     Rng rng(seed);
-    const Formula f = test::random_cnf(rng, static_cast<int>(rng.between(1, 6)), static_cast<int>(rng.between(1, 20)),
-                                       1, 3, false);
-    const Mutation m = rng.below(3) == 0 ? mutations[rng.below(mutations.size())] : Mutation::None;
-    const CompiledFormula c = compile_formula(f, m);
-    const size_t k = c.instance.couplings().size();
-    std::vector<Schedule> runs;
-    const SatResult sat = solve_sat(f);
-    if (sat.status == Verdict::Yes) runs.push_back(schedule_from_order(schedule_from_assignment(c, sat.model)));
-    std::vector<CouplingId> order(k);
-    for (CouplingId q = 0; q < k; ++q) order[q] = q;
-    rng.shuffle(order);
-    runs.push_back(schedule_from_order(order));
-    Schedule at_once;
-    at_once.start.assign(k, Rational(0));
-    runs.push_back(at_once);
-    runs.push_back(runs.front());
-    const PreparedInstance prep(c.instance);
-    twins.run(prep, runs);
+    const test::CompiledRuns c = test::compiled_runs(rng, 20);
+    const PreparedInstance prep(c.compiled.instance);
+    twins.run(prep, c.runs);
   }
   EXPECT_GT(twins.collisions, cases / 2);
   EXPECT_GT(twins.clean, cases);
