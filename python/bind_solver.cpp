@@ -6,6 +6,7 @@
 
 #include "certify/certify.hpp"
 #include "collide/collide.hpp"
+#include "collide/collide_certificate.hpp"
 #include "common/limits.hpp"
 #include "python/bindings.hpp"
 #include "solver/continuous.hpp"
@@ -132,7 +133,9 @@ CollideMethod method_arg(const std::string& method) {
   raise("method must be auto, tree, tree-pairwise or pairwise, not '" + method + "'");
 }
 
-py::dict collide(const Instance& inst, const std::string& model, const std::string& method) {
+// With certificate, a NO carries collide_no_certificate's text (it proves
+// the NO in both models) or, when there is none, the reason.
+py::dict collide(const Instance& inst, const std::string& model, const std::string& method, bool certificate) {
   if (model != "discrete" && model != "continuous") raise("model must be discrete or continuous, not '" + model + "'");
   const TimeModel tm = model == "discrete" ? TimeModel::Discrete : TimeModel::Continuous;
   const CollideMethod cm = method_arg(method);
@@ -146,7 +149,15 @@ py::dict collide(const Instance& inst, const std::string& model, const std::stri
   d["order"] = py::none();
   d["times"] = py::none();
   d["collision"] = py::none();
-  if (!r.collides) return d;
+  d["certificate"] = py::none();
+  d["certificate_note"] = py::none();
+  if (!r.collides) {
+    if (!certificate) return d;
+    const CollideCertificate cert = run_interruptible([&] { return collide_no_certificate(inst, &no_limit); });
+    if (!cert.text.empty()) d["certificate"] = cert.text;
+    else d["certificate_note"] = cert.why_none;
+    return d;
+  }
   d["collision"] = collision_dict(inst, Regions::build(inst), *r.simulated);
   if (tm == TimeModel::Discrete) d["order"] = order_names(inst, r.witness.order);
   else d["times"] = times_dict(inst, r.witness);
@@ -193,7 +204,8 @@ void bind_solver(py::module_& m) {
   m.def("solve", &solve, py::arg("instance"), py::arg("model") = "discrete", py::arg("engine") = "auto",
         py::arg("timeout") = py::none(), py::arg("max_states") = 0, py::arg("certificate") = false);
   m.def("certify", &certify_text, py::arg("instance"), py::arg("certificate"), py::arg("model") = "discrete");
-  m.def("collide", &collide, py::arg("instance"), py::arg("model") = "discrete", py::arg("method") = "auto");
+  m.def("collide", &collide, py::arg("instance"), py::arg("model") = "discrete", py::arg("method") = "auto",
+        py::arg("certificate") = false);
   m.def("gaps", &gaps, py::arg("instance"));
 }
 

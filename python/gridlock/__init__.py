@@ -98,6 +98,8 @@ class CollideResult:
     collision: Optional[Collision] = None
     order: Optional[List[str]] = None
     times: Optional[Times] = None
+    certificate: Optional[str] = None       # NO with certificate=True: the text certify() checks
+    certificate_note: Optional[str] = None  # NO with certificate=True but none written: why
 
     def __bool__(self) -> bool:
         return self.status == "YES"
@@ -169,9 +171,15 @@ def certify(instance: Instance, certificate: str, model: str = "discrete") -> Ce
     return CertifyResult(**_core.certify(instance, certificate, model=model))
 
 
-def collide(instance: Instance, model: str = "discrete", method: str = "auto") -> CollideResult:
-    """Colliding Schedule (docs/collide.md): is there a schedule that collides?"""
-    d = _core.collide(instance, model=model, method=method)
+def collide(instance: Instance, model: str = "discrete", method: str = "auto",
+            certificate: bool = False) -> CollideResult:
+    """Colliding Schedule (docs/collide.md): is there a schedule that collides?
+
+    certificate=True: a NO carries the text of its certificate (no schedule
+    collides; docs/certificates.md, "Collide certificates") for certify(), or
+    certificate_note says why there is none (a discrete NO whose continuous
+    model says YES)."""
+    d = _core.collide(instance, model=model, method=method, certificate=certificate)
     d["collision"] = _collision(d["collision"])
     return CollideResult(**d)
 

@@ -221,3 +221,39 @@ def test_continuous_engines_agree():
         assert len(set(got.values())) == 1, f"{path.name}: {got}"
     with pytest.raises(gridlock.Error, match="engine"):
         gridlock.solve(gridlock.Instance.read(str(INSTANCES[0])), model="continuous", engine="states")
+
+
+@pytest.mark.parametrize("model", ["discrete", "continuous"])
+def test_collide_no_certificates_equal_cli_and_are_checked(tmp_path, model):
+    """Every NO of collide(certificate=True) on seeded random instances
+    carries the same certificate `gridlock collide --certificate` writes,
+    and certify() accepts it in both models; another instance's certificate
+    and a YES never get one."""
+    path, cert = tmp_path / "c.grid", tmp_path / "c.cert"
+    nos = 0
+    for i in range(scaled(40)):
+        seed = SEED * 5000 + i
+        inst = gridlock.random_instance(nodes=12, ops=6, max_coupling=3, allow_grow=True, seed=seed)
+        r = gridlock.collide(inst, model=model, certificate=True)
+        if r.status == "YES":
+            assert r.certificate is None and r.certificate_note is None, f"seed {seed}"
+            continue
+        if model == "continuous":
+            assert r.certificate, f"seed {seed}: {r.certificate_note}"
+        if not r.certificate:
+            assert r.certificate_note, f"seed {seed}"
+            continue
+        nos += 1
+        for m in ("discrete", "continuous"):
+            assert gridlock.certify(inst, r.certificate, model=m), f"seed {seed} {m}"
+        inst.write(str(path))
+        cert.unlink(missing_ok=True)
+        code, _, _ = cli("collide", path, "--model", model, "--certificate", cert)
+        assert code == 20 and cert.read_text() == r.certificate, f"seed {seed}"
+        code, out, _ = cli("certify", path, cert)
+        assert code == 20 and "c certificate checked" in out, f"seed {seed}"
+        other = gridlock.random_instance(nodes=12, ops=6, max_coupling=3, seed=seed + 1)
+        if gridlock.collide(other, model="continuous").status == "YES":
+            bad = gridlock.certify(other, r.certificate, model=model)
+            assert not bad and bad.reason, f"seed {seed}"
+    assert nos > 0
