@@ -209,8 +209,8 @@ TEST(CertifyCollide, EveryNoCertifiedAndMutationsRefused) {
             << " confirmed by the brute-force twin, " << n.with_lines << " with r lines, " << n.lines << " lines), "
             << n.discrete_only_no << " discrete-only NO without a certificate, " << n.foreign_refused
             << " YES refused foreign certificates\n";
-  EXPECT_GT(n.no, 1000);
-  EXPECT_GT(n.with_lines, 50);
+  EXPECT_GT(n.no, test::scaled(1000));
+  EXPECT_GT(n.with_lines, test::scaled(50));
 }
 
 // YES instances: the lines written for the pairs found apart before the
@@ -247,7 +247,7 @@ TEST(CertifyCollide, LinesOfYesInstancesCheckedOneByOne) {
   }
   std::cout << "[certify-collide] " << instances << " YES instances: " << lines << " lines checked one by one, "
             << tries << " multipliers for a meeting pair refused\n";
-  EXPECT_GT(tries, 10000);
+  EXPECT_GT(tries, test::scaled(10000));
 }
 
 // The face bounds the checker's sweep relies on hold at every progress
@@ -296,7 +296,7 @@ TEST(CertifyCollide, FaceAndPathBoundsHoldEverywhere) {
   }
   std::cout << "[certify-collide] " << checked << " overlap forms within the face bounds; " << apart
             << " pairs set apart by the path bounds, each with a form <= 0 on the cube\n";
-  EXPECT_GT(apart, 1000);
+  EXPECT_GT(apart, test::scaled(1000));
 }
 
 }  // namespace
