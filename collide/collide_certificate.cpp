@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -147,16 +146,9 @@ std::string region_word(const Instance& inst, const Regions& regions, uint32_t r
   return std::to_string(c.x) + "," + std::to_string(c.y);
 }
 
-// The p and couplings lines: the digest is FNV-1a of the coupling names,
-// each followed by a newline (docs/certificates.md, "Format").
+// The p and couplings lines (docs/certificates.md, "Format").
 std::string header(const Instance& inst) {
-  uint64_t h = 14695981039346656037ull;
-  for (const Coupling& c : inst.couplings())
-    for (char ch : c.name + "\n") h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
-  char digest[17];
-  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(h));
-  return "p gridlock-collide-no-certificate 1 continuous\ncouplings " + std::to_string(inst.couplings().size()) + " " +
-         digest + "\n";
+  return "p gridlock-collide-no-certificate 1 continuous\n" + couplings_line(inst);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <initializer_list>
 #include <string_view>
 #include <utility>
@@ -256,6 +257,22 @@ std::optional<InstanceBuilder::FinishError> InstanceBuilder::finish(Instance& ou
   inst_ = Instance{};
   edge_keys_.clear();
   return std::nullopt;
+}
+
+uint64_t coupling_digest(const Instance& inst) {
+  uint64_t h = 14695981039346656037ull;
+  auto add = [&](char ch) { h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull; };
+  for (const Coupling& c : inst.couplings()) {
+    for (char ch : c.name) add(ch);
+    add('\n');
+  }
+  return h;
+}
+
+std::string couplings_line(const Instance& inst) {
+  char digest[17];
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(coupling_digest(inst)));
+  return "couplings " + std::to_string(inst.couplings().size()) + " " + digest + "\n";
 }
 
 }  // namespace gridlock

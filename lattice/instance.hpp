@@ -149,6 +149,17 @@ inline uint64_t cell_key(Vec2 c) {
 // characters from [A-Za-z0-9_.:~+'-], not starting with '-' or '+'.
 bool valid_name(const std::string& s);
 
+// FNV-1a (64 bits) of the coupling names in instance order, each followed
+// by '\n': ties a certificate to its instance's couplings. O(total name
+// length).
+uint64_t coupling_digest(const Instance& inst);
+
+// The certificate line "couplings K DIGEST\n": K the number of couplings,
+// DIGEST coupling_digest as 16 lower-case hex digits (docs/certificates.md,
+// "Format"). Shared by every certificate writer; certify/ keeps its own
+// copy on purpose, so that the checker stays independent.
+std::string couplings_line(const Instance& inst);
+
 // Builds an Instance step by step; each add_* checks what it can at once and
 // returns the problem (message only; the caller adds file and line). finish()
 // checks the rules that need everything (couplings, connectivity).

@@ -1,7 +1,6 @@
 #include "solver/no_certificate.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,10 +17,8 @@ namespace gridlock {
 namespace {
 
 std::string header(const Instance& inst, const char* model) {
-  char digest[17];
-  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(coupling_digest(inst)));
-  return std::string("c gridlock NO certificate (docs/certificates.md)\np gridlock-no-certificate 1 ") + model +
-         "\ncouplings " + std::to_string(inst.couplings().size()) + " " + digest + "\n";
+  return std::string("c gridlock NO certificate (docs/certificates.md)\np gridlock-no-certificate 1 ") + model + "\n" +
+         couplings_line(inst);
 }
 
 std::string cell_text(const Instance& inst, NodeId w) {
@@ -222,16 +219,6 @@ SolveResult logged_precedence(const PreparedInstance& prep, SolveOptions opt, st
 }
 
 }  // namespace
-
-uint64_t coupling_digest(const Instance& inst) {
-  uint64_t h = 14695981039346656037ull;
-  auto add = [&](char ch) { h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull; };
-  for (const Coupling& c : inst.couplings()) {
-    for (char ch : c.name) add(ch);
-    add('\n');
-  }
-  return h;
-}
 
 CertifiedSolve solve_discrete_certified(const PreparedInstance& prep, const SolveOptions& opt, Simulator* replay) {
   using Engine = SolveOptions::Engine;

@@ -21,10 +21,6 @@
 
 namespace gridlock {
 
-// FNV-1a (64 bits) of the coupling names in instance order, each followed
-// by '\n': ties a certificate to its instance's couplings.
-uint64_t coupling_digest(const Instance& inst);
-
 struct CertifiedSolve {
   SolveResult result;
   std::string certificate;  // result NO: the certificate, or empty (then why_none says why)

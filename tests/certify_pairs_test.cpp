@@ -161,10 +161,7 @@ void check_one(uint64_t seed, const Instance& other, Counts& n) {
   if (yes) {
     ++n.yes;
     EXPECT_TRUE(cs.certificate.empty());
-    char digest[17];
-    std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(coupling_digest(inst)));
-    const std::string forged = "p gridlock-no-certificate 1 discrete\ncouplings " +
-                               std::to_string(inst.couplings().size()) + " " + digest + "\npairs\nl\n";
+    const std::string forged = "p gridlock-no-certificate 1 discrete\n" + couplings_line(inst) + "pairs\nl\n";
     EXPECT_FALSE(certify(inst, forged, "discrete").proved) << "seed " << seed;
     return;
   }
