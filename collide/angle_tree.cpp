@@ -53,9 +53,8 @@ void AngleTree::update(Vec2 v, int sign) {
 }
 
 uint32_t AngleTree::fresh(Vec2 dir, Vec2 g) {
-  seed_ ^= seed_ << 13, seed_ ^= seed_ >> 7, seed_ ^= seed_ << 17;  // xorshift: treap priorities
   Node n;
-  n.dir = dir, n.sum = g, n.subtree = g, n.count = 1, n.priority = static_cast<uint32_t>(seed_ >> 32);
+  n.dir = dir, n.sum = g, n.subtree = g, n.count = 1, n.height = 1;
   if (!free_.empty()) {
     uint32_t x = free_.back();
     free_.pop_back();
@@ -71,6 +70,7 @@ void AngleTree::pull(uint32_t x) {
   const Node& l = nodes_[n.left];
   const Node& r = nodes_[n.right];
   n.size = 1 + (n.left ? l.size : 0) + (n.right ? r.size : 0);
+  n.height = 1 + std::max(n.left ? l.height : 0, n.right ? r.height : 0);
   n.subtree = n.sum + (n.left ? l.subtree : Vec2{}) + (n.right ? r.subtree : Vec2{});
 }
 
@@ -90,19 +90,41 @@ uint32_t AngleTree::rotate_left(uint32_t x) {
   return r;
 }
 
-uint32_t AngleTree::merge(uint32_t a, uint32_t b) {
-  if (a == 0) return b;
-  if (b == 0) return a;
-  if (nodes_[a].priority > nodes_[b].priority) {
-    uint32_t m = merge(nodes_[a].right, b);
-    nodes_[a].right = m;
-    pull(a);
-    return a;
+int64_t AngleTree::height_of(uint32_t x) const { return x == 0 ? 0 : nodes_[x].height; }
+
+uint32_t AngleTree::balance(uint32_t x) {
+  const uint32_t l = nodes_[x].left, r = nodes_[x].right;
+  const int64_t tilt = height_of(l) - height_of(r);
+  if (tilt > 1) {
+    if (height_of(nodes_[l].left) < height_of(nodes_[l].right)) nodes_[x].left = rotate_left(l);
+    return rotate_right(x);
   }
-  uint32_t m = merge(a, nodes_[b].left);
-  nodes_[b].left = m;
-  pull(b);
-  return b;
+  if (tilt < -1) {
+    if (height_of(nodes_[r].right) < height_of(nodes_[r].left)) nodes_[x].right = rotate_right(r);
+    return rotate_left(x);
+  }
+  pull(x);
+  return x;
+}
+
+uint32_t AngleTree::detach_first(uint32_t x, uint32_t& first) {
+  if (nodes_[x].left == 0) {
+    first = x;
+    return nodes_[x].right;
+  }
+  nodes_[x].left = detach_first(nodes_[x].left, first);
+  return balance(x);
+}
+
+uint32_t AngleTree::unlink(uint32_t x) {
+  const uint32_t l = nodes_[x].left, r = nodes_[x].right;
+  free_.push_back(x);
+  if (l == 0) return r;
+  if (r == 0) return l;
+  uint32_t next = 0;
+  const uint32_t rest = detach_first(r, next);
+  nodes_[next].left = l, nodes_[next].right = rest;
+  return balance(next);
 }
 
 uint32_t AngleTree::update_at(uint32_t x, Vec2 dir, Vec2 g, int sign) {
@@ -113,24 +135,18 @@ uint32_t AngleTree::update_at(uint32_t x, Vec2 dir, Vec2 g, int sign) {
   if (nodes_[x].dir == dir) {
     nodes_[x].sum += sign * g;
     nodes_[x].count = static_cast<uint32_t>(static_cast<int64_t>(nodes_[x].count) + sign);
-    if (nodes_[x].count == 0) {
-      free_.push_back(x);
-      return merge(nodes_[x].left, nodes_[x].right);
-    }
+    if (nodes_[x].count == 0) return unlink(x);
     pull(x);
     return x;
   }
   if (cross(wide(dir), wide(nodes_[x].dir)) > 0) {  // dir comes first
     uint32_t l = update_at(nodes_[x].left, dir, g, sign);
     nodes_[x].left = l;
-    if (l && nodes_[l].priority > nodes_[x].priority) return rotate_right(x);
   } else {
     uint32_t r = update_at(nodes_[x].right, dir, g, sign);
     nodes_[x].right = r;
-    if (r && nodes_[r].priority > nodes_[x].priority) return rotate_left(x);
   }
-  pull(x);
-  return x;
+  return balance(x);
 }
 
 Vec2 AngleTree::prefix(uint32_t k) const {

@@ -124,7 +124,7 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
   const bool angles = model == TimeModel::Continuous && largest > 3;
   if (angles) {
     res.algorithm = "pairwise-angle-tree";
-    res.complexity = "O(n^2 log^2 n) expected (treap sorted by angle, one fan search per pair)";
+    res.complexity = "O(n^2 log^2 n) (AVL tree sorted by angle, one fan search per pair)";
   } else if (model == TimeModel::Continuous) {
     res.algorithm = "pairwise-zonotope";
     res.complexity = "O(n^2) (couplings of <= 3 operations: <= 6 directions in the support table)";

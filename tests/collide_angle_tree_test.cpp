@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -24,20 +25,11 @@ using i128 = __int128;
 
 i128 cross(WidePoint o, WidePoint a, WidePoint b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
-// Brute force: the hull of every subset sum of the vectors (scaled) plus
-// every point; the origin is interior iff it is strictly left of every hull
-// edge (gift wrapping over all candidate points, O(P^2)).
-bool brute_contains_origin(const std::vector<Vec2>& vecs, int64_t scale, const std::vector<WidePoint>& pts) {
-  std::vector<WidePoint> all;
-  for (uint32_t mask = 0; mask < (1u << vecs.size()); ++mask) {
-    i128 x = 0, y = 0;
-    for (size_t i = 0; i < vecs.size(); ++i)
-      if (mask >> i & 1) x += vecs[i].x, y += vecs[i].y;
-    for (const WidePoint& p : pts) all.push_back({scale * x + p.x, scale * y + p.y});
-  }
-  // The origin is interior iff no line through it has every point on one
-  // closed side: for each candidate direction (through the origin and a
-  // point), all points weakly on one side means outside or on the boundary.
+// The origin strictly inside the hull of `all`: no line through it has
+// every point on one closed side (for each candidate direction, through the
+// origin and a point, all points weakly on one side means outside or on the
+// boundary). O(P^2).
+bool origin_interior(const std::vector<WidePoint>& all) {
   const WidePoint o{0, 0};
   bool any_nonzero = false;
   for (const WidePoint& a : all) {
@@ -52,6 +44,18 @@ bool brute_contains_origin(const std::vector<Vec2>& vecs, int64_t scale, const s
     if (left || right) return false;
   }
   return any_nonzero;
+}
+
+// Brute force: every subset sum of the vectors (scaled) plus every point.
+bool brute_contains_origin(const std::vector<Vec2>& vecs, int64_t scale, const std::vector<WidePoint>& pts) {
+  std::vector<WidePoint> all;
+  for (uint32_t mask = 0; mask < (1u << vecs.size()); ++mask) {
+    i128 x = 0, y = 0;
+    for (size_t i = 0; i < vecs.size(); ++i)
+      if (mask >> i & 1) x += vecs[i].x, y += vecs[i].y;
+    for (const WidePoint& p : pts) all.push_back({scale * x + p.x, scale * y + p.y});
+  }
+  return origin_interior(all);
 }
 
 TEST(AngleTree, ContainsOriginAgainstBruteForce) {
@@ -102,6 +106,85 @@ TEST(AngleTree, RemovingAbsentVectorThrows) {
   EXPECT_THROW(tree.remove({2, 1}), std::logic_error);
   std::vector<WidePoint> flat{{0, 0}, {1, 1}, {2, 2}};
   EXPECT_THROW(tree.contains_origin(1, flat), std::logic_error);
+}
+
+// The zonotope's vertices the naive way (every generator flipped into the
+// upper half-plane, sorted by angle with std::sort, the walk N + prefix
+// sums and back), each plus every point of pts: the origin is interior to
+// the hull of these iff it is interior to scale * Z + Q. O(m log m + m r).
+std::vector<WidePoint> sum_vertices(const std::vector<Vec2>& vecs, int64_t scale, const std::vector<WidePoint>& pts) {
+  std::vector<Vec2> up;
+  Vec2 base;
+  for (Vec2 v : vecs) {
+    if (v.is_zero()) continue;
+    const bool upper = v.y > 0 || (v.y == 0 && v.x > 0);
+    if (!upper) base += v;
+    up.push_back(upper ? v : Vec2{-v.x, -v.y});
+  }
+  std::sort(up.begin(), up.end(), [](Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x > 0; });
+  std::vector<Vec2> walk{base};
+  for (Vec2 g : up) walk.push_back(walk.back() + g);
+  for (Vec2 g : up) walk.push_back(walk.back() - g);
+  std::vector<WidePoint> all;
+  for (Vec2 w : walk)
+    for (const WidePoint& p : pts)
+      all.push_back({static_cast<i128>(scale) * w.x + p.x, static_cast<i128>(scale) * w.y + p.y});
+  return all;
+}
+
+// Many directions with heavy churn (adds and removes in angle order, the
+// order that unbalances a plain search tree, and at random): the height
+// stays within the AVL bound 1.44 log2(m + 2), and every query agrees with
+// the naive zonotope walk. Catches a rotation or a removal that loses a
+// subtree's size or sum.
+TEST(AngleTree, BalancedUnderChurnAndAgreesWithNaiveWalk) {
+  const uint64_t seed0 = test::base_seed(71500);
+  int queries = 0, inside = 0;
+  uint32_t tallest = 0;
+  for (int i = 0; i < test::scaled(300); ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
+    Rng rng(seed * 6151 + 11);
+    AngleTree tree;
+    std::vector<Vec2> kept;
+    const int64_t span = 3 + static_cast<int64_t>(rng.below(40));
+    // Ascending angle: (span, 0), (span, 1), ..., then leftwards.
+    for (int64_t k = 0; k <= span; ++k) tree.add({span, k}), kept.push_back({span, k});
+    for (int step = 0; step < 400; ++step) {
+      if (!kept.empty() && rng.below(2) == 0) {
+        size_t k = rng.below(2) == 0 ? 0 : rng.below(kept.size());  // often the first added
+        tree.remove(kept[k]);
+        kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+      } else {
+        Vec2 v{static_cast<int64_t>(rng.below(2 * span + 1)) - span,
+               static_cast<int64_t>(rng.below(2 * span + 1)) - span};
+        tree.add(v);
+        kept.push_back(v);
+      }
+      const double m = static_cast<double>(tree.directions());
+      ASSERT_LE(static_cast<double>(tree.height()), 1.4405 * std::log2(m + 2) + 1e-9) << "m " << m;
+      tallest = std::max(tallest, tree.height());
+      if (step % 20 != 19) continue;
+      std::vector<WidePoint> pts;
+      pts.reserve(4);
+      for (int k = 0; k < 4; ++k)
+        pts.push_back({static_cast<i128>(rng.below(2001)) - 1000, static_cast<i128>(rng.below(2001)) - 1000});
+      if (cross(pts[0], pts[1], pts[2]) == 0) continue;
+      // Shift the polygon so the origin lands near the sum's boundary as
+      // often as inside or outside it.
+      const std::vector<WidePoint> near = sum_vertices(kept, 1, pts);
+      const WidePoint pick = near[rng.below(near.size())];
+      for (WidePoint& p : pts) p.x -= pick.x + static_cast<i128>(rng.below(3)) - 1, p.y -= pick.y;
+      std::vector<WidePoint> copy = pts;
+      const bool fast = tree.contains_origin(1, copy);
+      ASSERT_EQ(fast, origin_interior(sum_vertices(kept, 1, pts)));
+      inside += fast, ++queries;
+    }
+  }
+  std::cout << "[collide] angle tree under churn: " << queries << " queries (" << inside << " inside), tallest tree "
+            << tallest << "\n";
+  EXPECT_GT(inside, queries / 20);
+  EXPECT_LT(inside, queries - queries / 20);
 }
 
 // AngleBoth decides every filtered pair with the angle tree and the

@@ -5,7 +5,7 @@
 // (zero vectors ignored). Every v is written as +g or -g with g in the
 // half-open upper half-plane (g.y > 0, or g.y == 0 and g.x > 0); then
 // Z = N + sum_g [0,1] g with N the sum of the flipped vectors. The g are
-// grouped by primitive direction and kept in a treap ordered by angle
+// grouped by primitive direction and kept in an AVL tree ordered by angle
 // (compared by cross products, never atan2), each node with the sum of its
 // direction's vectors and the subtree sums: the boundary of Z, walked
 // counter-clockwise from its bottom-left vertex N, has the edges
@@ -29,12 +29,15 @@ struct WidePoint {
 class AngleTree {
  public:
   // Adds / removes one vector (remove needs an equal vector added before).
-  // O(log m) expected, m = distinct directions. |coordinates| and their
+  // O(log m) worst case, m = distinct directions (an AVL tree: height at
+  // most 1.44 log2(m + 2)). |coordinates| and their
   // sums must stay below 2^62.
   void add(Vec2 v) { update(v, +1); }
   void remove(Vec2 v) { update(v, -1); }
   // Distinct directions present (m).
   size_t directions() const { return root_ == 0 ? 0 : nodes_[root_].size; }
+  // Height of the tree (0 when empty), for the balance test.
+  uint32_t height() const { return root_ == 0 ? 0 : nodes_[root_].height; }
 
   // Is the origin in the interior of scale * Z + Q, Q the convex hull of
   // `points` (scaled integer coordinates; Q must have a non-empty interior,
@@ -53,11 +56,18 @@ class AngleTree {
     uint32_t count = 0;  // vectors in this direction
     uint32_t size = 1;   // nodes in the subtree
     uint32_t left = 0, right = 0;
-    uint32_t priority = 0;
+    uint32_t height = 0;  // 1 for a leaf; the sentinel nodes_[0] stays 0
   };
   void update(Vec2 v, int sign);
   uint32_t update_at(uint32_t x, Vec2 dir, Vec2 g, int sign);
-  uint32_t merge(uint32_t a, uint32_t b);
+  // AVL: balance restores |height(left) - height(right)| <= 1 at x (its
+  // children balanced) with at most two rotations, and updates x's fields.
+  int64_t height_of(uint32_t x) const;
+  uint32_t balance(uint32_t x);
+  // Takes the subtree's first node out (into `first`), rebalancing.
+  uint32_t detach_first(uint32_t x, uint32_t& first);
+  // Removes node x from its subtree (its count reached 0); the new root.
+  uint32_t unlink(uint32_t x);
   uint32_t rotate_left(uint32_t x);
   uint32_t rotate_right(uint32_t x);
   void pull(uint32_t x);
@@ -70,8 +80,7 @@ class AngleTree {
   std::vector<Node> nodes_{Node{}};  // nodes_[0]: the empty subtree
   std::vector<uint32_t> free_;
   uint32_t root_ = 0;
-  Vec2 flipped_;  // N
-  uint64_t seed_ = 0x9e3779b97f4a7c15ULL;
+  Vec2 flipped_;                         // N
   mutable std::vector<WidePoint> hull_;  // scratch of contains_origin (no allocation per query)
   mutable std::vector<uint64_t> place_;
 };
