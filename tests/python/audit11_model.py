@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""audit11: a second, independent brute-force model of /work/shared/MODEL.md.
+"""audit11: a second, independent brute-force model of the semantics (docs/model.md).
 
 Written from MODEL.md, docs/model.md and docs/grid-format.md only (not from
 lattice/, solver/, collide/ nor tests/python/conformance_model.py).
