@@ -1,11 +1,12 @@
 // When discrete and continuous Colliding Schedule must agree
-// (docs/collide.md, "Two unit nodes: the models agree"): if two regions of
-// constant unit size (nodes that are not the v of a contraction) overlap at
-// some progress vector, some discrete schedule collides. The proof is a
+// (docs/collide.md, "Unit nodes: the models agree"): if a region of
+// constant unit size (a node that is not the v of a contraction) overlaps
+// another unit node or an expansion's inserted node at some progress
+// vector, some discrete schedule collides. The proof is a
 // winding-number argument along the tree path between them; this test
 // holds the claim against both deciders on seeded random instances, where
 // a counterexample would show up as a continuous YES on two unit nodes
-// with a discrete NO.
+// or an inserted node with a discrete NO.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -41,19 +42,23 @@ void check_instance(const Instance& inst, uint64_t seed, ModelCounts& n) {
   ++n.continuous_yes;
   if (c.region_a == kNone) return;  // a cycle: both models run that coupling alone
   const Simulator sim(inst);
-  const bool unit = unit_node(sim.regions(), c.region_a) && unit_node(sim.regions(), c.region_b);
+  const Regions& rs = sim.regions();
+  auto inserted = [&](uint32_t r) { return r < rs.shapes.size() && rs.shapes[r].kind == RegionKind::Inserted; };
+  const bool unit = (unit_node(rs, c.region_a) && (unit_node(rs, c.region_b) || inserted(c.region_b))) ||
+                    (unit_node(rs, c.region_b) && inserted(c.region_a));
   const bool discrete = find_collision(inst, TimeModel::Discrete).collides;
   if (unit) {
     ++n.unit_pairs;
-    EXPECT_TRUE(discrete) << "seed " << seed << ": unit nodes " << c.region_a << " and " << c.region_b
-                          << " overlap in continuous time, yet no discrete schedule collides";
+    EXPECT_TRUE(discrete) << "seed " << seed << ": regions " << c.region_a << " and " << c.region_b
+                          << " (a unit node and a unit or inserted node) overlap in continuous time, yet no "
+                             "discrete schedule collides";
   } else {
     ++n.other_pairs;
     n.discrete_only_no += !discrete;
   }
 }
 
-TEST(CollideModels, UnitNodesOverlappingMeansADiscreteCollision) {
+TEST(CollideModels, UnitNodeOverlapMeansADiscreteCollision) {
   ModelCounts n;
   int instances = 0;
   for (int i = 0; i < test::scaled(3000); ++i) {
@@ -74,8 +79,8 @@ TEST(CollideModels, UnitNodesOverlappingMeansADiscreteCollision) {
     if (::testing::Test::HasFailure()) return;
   }
   std::cout << "[collide] models: " << instances << " instances, " << n.continuous_yes << " continuous YES, "
-            << n.unit_pairs << " on two unit nodes (all discrete YES), " << n.other_pairs << " on other regions ("
-            << n.discrete_only_no << " of them discrete NO)\n";
+            << n.unit_pairs << " on a unit node and a unit or inserted node (all discrete YES), " << n.other_pairs
+            << " on other regions (" << n.discrete_only_no << " of them discrete NO)\n";
   EXPECT_GT(n.unit_pairs, test::scaled(300));
 }
 
