@@ -60,7 +60,8 @@ void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, co
   if (cert.text.empty()) {
     if (model == TimeModel::Continuous)
       throw std::logic_error("collide: a continuous NO without a certificate: " + cert.why_none);
-    ans.comment("no certificate: " + cert.why_none + " (discrete NOs of such instances carry no certificate yet)");
+    ans.comment("no certificate: " + cert.why_none +
+                " (the models agree on whole instances, docs/collide.md: a bug, please report it)");
     return;
   }
   cli::write_text_file(cert_path, cert.text);

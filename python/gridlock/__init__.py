@@ -177,8 +177,9 @@ def collide(instance: Instance, model: str = "discrete", method: str = "auto",
 
     certificate=True: a NO carries the text of its certificate (no schedule
     collides; docs/certificates.md, "Collide certificates") for certify(), or
-    certificate_note says why there is none (a discrete NO whose continuous
-    model says YES)."""
+    certificate_note says why there is none (a limit reached; or a discrete
+    NO whose continuous pair test found an overlap, which docs/collide.md,
+    "Colliding Schedule: the models agree", proves to be a bug)."""
     d = _core.collide(instance, model=model, method=method, certificate=certificate)
     d["collision"] = _collision(d["collision"])
     return CollideResult(**d)
