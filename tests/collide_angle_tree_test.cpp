@@ -58,6 +58,23 @@ bool brute_contains_origin(const std::vector<Vec2>& vecs, int64_t scale, const s
   return origin_interior(all);
 }
 
+// A tree and the multiset of vectors it holds, changed together.
+struct KeptTree {
+  AngleTree tree;
+  std::vector<Vec2> kept;
+  void add(Vec2 v) { tree.add(v), kept.push_back(v); }
+  void remove_at(size_t k) {
+    tree.remove(kept[k]);
+    kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+  }
+};
+
+// A vector with both coordinates uniform in [-span, span].
+Vec2 random_vector(Rng& rng, int64_t span) {
+  return Vec2{static_cast<int64_t>(rng.below(2 * static_cast<uint64_t>(span) + 1)) - span,
+              static_cast<int64_t>(rng.below(2 * static_cast<uint64_t>(span) + 1)) - span};
+}
+
 TEST(AngleTree, ContainsOriginAgainstBruteForce) {
   const uint64_t seed0 = test::base_seed(71000);
   int inside = 0, cases = 0;
@@ -65,20 +82,14 @@ TEST(AngleTree, ContainsOriginAgainstBruteForce) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
     SCOPED_TRACE("seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
     Rng rng(seed * 7919 + 3);
-    AngleTree tree;
-    std::vector<Vec2> kept;
+    KeptTree t;
     const int steps = 1 + static_cast<int>(rng.below(12));
     for (int s = 0; s < steps; ++s) {
-      if (!kept.empty() && rng.below(3) == 0) {
-        size_t k = rng.below(kept.size());
-        tree.remove(kept[k]);
-        kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
-      } else if (kept.size() < 7) {
+      if (!t.kept.empty() && rng.below(3) == 0) {
+        t.remove_at(rng.below(t.kept.size()));
+      } else if (t.kept.size() < 7) {
         const int64_t span = rng.below(2) == 0 ? 2 : 5;
-        Vec2 v{static_cast<int64_t>(rng.below(2 * span + 1)) - span,
-               static_cast<int64_t>(rng.below(2 * span + 1)) - span};
-        tree.add(v);
-        kept.push_back(v);
+        t.add(random_vector(rng, span));
       }
     }
     const int64_t scale = 1 + static_cast<int64_t>(rng.below(3));
@@ -91,8 +102,8 @@ TEST(AngleTree, ContainsOriginAgainstBruteForce) {
     for (size_t a = 1; a < pts.size() && !full; ++a)
       for (size_t b = a + 1; b < pts.size() && !full; ++b) full = cross(pts[0], pts[a], pts[b]) != 0;
     if (!full) continue;
-    const bool fast = tree.contains_origin(scale, pts);
-    ASSERT_EQ(fast, brute_contains_origin(kept, scale, pts));
+    const bool fast = t.tree.contains_origin(scale, pts);
+    ASSERT_EQ(fast, brute_contains_origin(t.kept, scale, pts));
     inside += fast, ++cases;
   }
   std::cout << "[collide] angle tree vs brute force: " << cases << " cases, " << inside << " inside\n";
@@ -145,25 +156,17 @@ TEST(AngleTree, BalancedUnderChurnAndAgreesWithNaiveWalk) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
     SCOPED_TRACE("seed " + std::to_string(seed) + "; replay with GRIDLOCK_TEST_SEED");
     Rng rng(seed * 6151 + 11);
-    AngleTree tree;
-    std::vector<Vec2> kept;
+    KeptTree t;
     const int64_t span = 3 + static_cast<int64_t>(rng.below(40));
     // Ascending angle: (span, 0), (span, 1), ..., then leftwards.
-    for (int64_t k = 0; k <= span; ++k) tree.add({span, k}), kept.push_back({span, k});
+    for (int64_t k = 0; k <= span; ++k) t.add({span, k});
     for (int step = 0; step < 400; ++step) {
-      if (!kept.empty() && rng.below(2) == 0) {
-        size_t k = rng.below(2) == 0 ? 0 : rng.below(kept.size());  // often the first added
-        tree.remove(kept[k]);
-        kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
-      } else {
-        Vec2 v{static_cast<int64_t>(rng.below(2 * span + 1)) - span,
-               static_cast<int64_t>(rng.below(2 * span + 1)) - span};
-        tree.add(v);
-        kept.push_back(v);
-      }
-      const double m = static_cast<double>(tree.directions());
-      ASSERT_LE(static_cast<double>(tree.height()), 1.4405 * std::log2(m + 2) + 1e-9) << "m " << m;
-      tallest = std::max(tallest, tree.height());
+      if (!t.kept.empty() && rng.below(2) == 0)
+        t.remove_at(rng.below(2) == 0 ? 0 : rng.below(t.kept.size()));  // often the first added
+      else t.add(random_vector(rng, span));
+      const double m = static_cast<double>(t.tree.directions());
+      ASSERT_LE(static_cast<double>(t.tree.height()), 1.4405 * std::log2(m + 2) + 1e-9) << "m " << m;
+      tallest = std::max(tallest, t.tree.height());
       if (step % 20 != 19) continue;
       std::vector<WidePoint> pts;
       pts.reserve(4);
@@ -172,12 +175,12 @@ TEST(AngleTree, BalancedUnderChurnAndAgreesWithNaiveWalk) {
       if (cross(pts[0], pts[1], pts[2]) == 0) continue;
       // Shift the polygon so the origin lands near the sum's boundary as
       // often as inside or outside it.
-      const std::vector<WidePoint> near = sum_vertices(kept, 1, pts);
+      const std::vector<WidePoint> near = sum_vertices(t.kept, 1, pts);
       const WidePoint pick = near[rng.below(near.size())];
       for (WidePoint& p : pts) p.x -= pick.x + static_cast<i128>(rng.below(3)) - 1, p.y -= pick.y;
       std::vector<WidePoint> copy = pts;
-      const bool fast = tree.contains_origin(1, copy);
-      ASSERT_EQ(fast, origin_interior(sum_vertices(kept, 1, pts)));
+      const bool fast = t.tree.contains_origin(1, copy);
+      ASSERT_EQ(fast, origin_interior(sum_vertices(t.kept, 1, pts)));
       inside += fast, ++queries;
     }
   }
