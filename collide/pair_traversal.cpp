@@ -212,7 +212,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
                                                 TimeModel model, PairwiseStats* stats, const Deadline* deadline,
                                                 ZonotopeTest ztest,
                                                 const std::function<void(uint64_t, uint64_t)>& on_source,
-                                                const ApartFn& on_apart) {
+                                                const ApartFn& on_apart, const std::vector<uint32_t>* around) {
   const size_t n = inst.num_nodes(), nq = inst.couplings().size();
   std::vector<RegionForm> forms = region_forms(inst, regions);
   std::vector<std::vector<uint32_t>> regs_of(n);
@@ -235,10 +235,28 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
     CouplingId q;
     Vec2 vec;
   };
+  // The source nodes: all (each pair once, from its smaller node), or the
+  // nodes that the faces of the `around` regions follow (each against
+  // every other node).
+  std::vector<NodeId> sources;
+  if (around) {
+    auto add = [&](NodeId v) {
+      if (v < n && std::find(sources.begin(), sources.end(), v) == sources.end()) sources.push_back(v);
+    };
+    for (uint32_t r : *around) {
+      if (r >= forms.size()) continue;
+      add(forms[r].ref);
+      for (NodeId v : regions.shapes[r].ref) add(v);
+    }
+  } else {
+    sources.resize(n);
+    for (NodeId s = 0; s < n; ++s) sources[s] = s;
+  }
   uint64_t steps = 0;
-  for (NodeId s = 0; s < n && !found; ++s) {
+  for (size_t si = 0; si < sources.size() && !found; ++si) {
+    const NodeId s = sources[si];
     if (deadline) deadline->check();
-    if (on_source) on_source(s, n);
+    if (on_source) on_source(si, sources.size());
     if (regs_of[s].empty()) continue;
     const auto& mine = regs_of[s];
     for (size_t i = 0; i < mine.size() && !found; ++i)
@@ -254,7 +272,7 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
         if (a.q != kNone) path.apply(a.q, a.vec);
         stack.push_back({a.to, f.w, 0, a.q, a.vec});
         NodeId w = a.to;
-        if (w > s)
+        if (w > s || around)
           for (uint32_t ra : mine) {
             for (uint32_t rb : regs_of[w])
               if (test(ra, rb)) break;

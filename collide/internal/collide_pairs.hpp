@@ -147,12 +147,20 @@ enum class ZonotopeTest {
 // (collide/collide_certificate.hpp). Pairs the quick filter drops need no
 // call: one of their eight forms alone is <= 0 on the whole cube (the
 // filter's bounds are sums of per-term maxima of one form).
+// around (optional): traverse only from the nodes that the faces of these
+// regions follow (at most 4 per region: a unit node itself; an inserted,
+// grown or contracting region also the node it is attached to) and test
+// their regions against every region of the instance (not only those of
+// later nodes): O(|around| n) pairs instead of O(n^2). The discrete
+// witness search after a continuous YES (collide.cpp; docs/collide.md,
+// "the models agree", says why it finds one).
 using ApartFn = std::function<void(uint32_t, uint32_t, const PathNets&)>;
 std::optional<PairCollision> pairwise_collision(const Instance& inst, const SpanningTree& tree, const Regions& regions,
                                                 TimeModel model, PairwiseStats* stats = nullptr,
                                                 const Deadline* deadline = nullptr,
                                                 ZonotopeTest ztest = ZonotopeTest::Incremental,
                                                 const std::function<void(uint64_t, uint64_t)>& on_source = {},
-                                                const ApartFn& on_apart = {});
+                                                const ApartFn& on_apart = {},
+                                                const std::vector<uint32_t>* around = nullptr);
 
 }  // namespace gridlock
