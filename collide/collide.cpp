@@ -111,43 +111,110 @@ Schedule schedule_reaching(size_t nq, const std::vector<std::pair<CouplingId, Ra
   return s;
 }
 
-// Steps 4/5, couplings: all pairs, exact per-pair tests in the model's sense.
+// How the continuous model decides all pairs: couplings of at most 3
+// operations give at most 6 non-axis directions, so the support table is
+// O(1) per step and pair (proven O(n^2), and faster by a constant); larger
+// couplings take the paper's angle tree, O(n^2 log^2 n) (docs/collide.md,
+// "The angle tree").
+struct ContinuousPairs {
+  ZonotopeTest ztest;
+  const char* algorithm;
+  const char* complexity;
+};
+ContinuousPairs continuous_pairs(const Instance& inst) {
+  size_t largest = 0;
+  for (const Coupling& c : inst.couplings()) largest = std::max(largest, c.ops.size());
+  if (largest > 3)
+    return {ZonotopeTest::AngleTree, "pairwise-angle-tree",
+            "O(n^2 log^2 n) (AVL tree sorted by angle, one fan search per pair)"};
+  return {ZonotopeTest::Incremental, "pairwise-zonotope",
+          "O(n^2) (couplings of <= 3 operations: <= 6 directions in the support table)"};
+}
+
+const char* const kSubsetSumComplexity =
+    "O(n^2 (c^2 A + c L^2)) <= O(n^(16/3)) for c distinct vectors, grid area A, L operations per path";
+
+void add_pair_stats(CollideResult& res, const PairwiseStats& ps) {
+  res.stats.pairs += ps.pairs;
+  res.stats.full_tests += ps.full_tests;
+}
+
+// A discrete collision found by the pair tests, as an order: the done
+// set, then the running coupling, then the rest.
+CollideResult finish_discrete(CollideResult& res, Simulator& sim, const Instance& inst, const PairCollision& pc) {
+  res.region_a = pc.a, res.region_b = pc.b;
+  std::vector<CouplingId> first = pc.witness.done;
+  if (pc.witness.running != kNone) first.push_back(pc.witness.running);
+  return finish_with(res, sim, schedule_from_order(order_starting_with(inst, first)));
+}
+
+// Steps 4/5, couplings: all pairs, exact per-pair tests in the model's
+// sense (the continuous tests, or the discrete subset sums).
 CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res,
                             const Deadline* deadline, Reporter& progress) {
   PairwiseStats ps;
-  // Continuous: couplings of at most 3 operations give at most 6 non-axis
-  // directions, so the support table is O(1) per step and pair (proven
-  // O(n^2), and faster by a constant); larger couplings take the paper's
-  // angle tree, O(n^2 log^2 n) (docs/collide.md, "The angle tree").
-  size_t largest = 0;
-  for (const Coupling& c : inst.couplings()) largest = std::max(largest, c.ops.size());
-  const bool angles = model == TimeModel::Continuous && largest > 3;
-  if (angles) {
-    res.algorithm = "pairwise-angle-tree";
-    res.complexity = "O(n^2 log^2 n) (AVL tree sorted by angle, one fan search per pair)";
-  } else if (model == TimeModel::Continuous) {
-    res.algorithm = "pairwise-zonotope";
-    res.complexity = "O(n^2) (couplings of <= 3 operations: <= 6 directions in the support table)";
+  const ContinuousPairs cp = continuous_pairs(inst);
+  if (model == TimeModel::Continuous) {
+    res.algorithm = cp.algorithm;
+    res.complexity = cp.complexity;
   } else {
     res.algorithm = "pairwise-subset-sum";
-    res.complexity = "O(n^2 (c^2 A + c L^2)) <= O(n^(16/3)) for c distinct vectors, grid area A, L operations per path";
+    res.complexity = kSubsetSumComplexity;
   }
   auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), model, &ps, deadline,
-                               angles ? ZonotopeTest::AngleTree : ZonotopeTest::Incremental,
+                               model == TimeModel::Continuous ? cp.ztest : ZonotopeTest::Incremental,
                                progress.step(res.algorithm));
-  res.stats.pairs = ps.pairs;
-  res.stats.full_tests = ps.full_tests;
+  add_pair_stats(res, ps);
   if (!pc) {
     progress.report(res.algorithm, inst.num_nodes(), inst.num_nodes());
     return res;
   }
+  if (model == TimeModel::Discrete) return finish_discrete(res, sim, inst, *pc);
   res.region_a = pc->a, res.region_b = pc->b;
-  if (model == TimeModel::Discrete) {
-    std::vector<CouplingId> first = pc->witness.done;
-    if (pc->witness.running != kNone) first.push_back(pc->witness.running);
-    return finish_with(res, sim, schedule_from_order(order_starting_with(inst, first)));
-  }
   return finish_with(res, sim, schedule_reaching(inst.couplings().size(), pc->witness.progress));
+}
+
+// Step 5 under Auto: the discrete answer is the continuous one (proven:
+// docs/collide.md, "Colliding Schedule: the models agree"), so the
+// continuous pair tests decide it, and a NO costs what it costs there.
+// After a YES on regions (a, b) the discrete witness is searched from the
+// reference nodes of a and b only (the proof's colliding pair has one of
+// them: O(n) pairs by subset sums); all pairs only if that finds nothing
+// (counted in witness_fallbacks; never seen). If even all pairs find
+// nothing, the exact discrete answer NO is returned: the theorem would be
+// wrong on this instance, and collide_no_certificate says so.
+CollideResult discrete_by_continuous_step(const Instance& inst, Simulator& sim, CollideResult& res,
+                                          const Deadline* deadline, Reporter& progress) {
+  const ContinuousPairs cp = continuous_pairs(inst);
+  res.algorithm = cp.algorithm;
+  res.complexity = std::string(cp.complexity) + "; the discrete answer is the continuous one (the models agree)";
+  PairwiseStats ps;
+  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, &ps, deadline, cp.ztest,
+                               progress.step(res.algorithm));
+  add_pair_stats(res, ps);
+  if (!pc) {
+    progress.report(res.algorithm, inst.num_nodes(), inst.num_nodes());
+    return res;
+  }
+  res.algorithm += "+subset-sum";
+  res.complexity = std::string(cp.complexity) +
+                   ", then the discrete witness by subset sums from the pair's nodes: O(n (c^2 A + c L^2))";
+  const std::vector<uint32_t> around{pc->a, pc->b};
+  PairwiseStats ws;
+  auto dc = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Discrete, &ws, deadline,
+                               ZonotopeTest::Incremental, progress.step("subset-sum-witness"), {}, &around);
+  add_pair_stats(res, ws);
+  if (!dc) {
+    ++res.stats.witness_fallbacks;
+    res.algorithm = "pairwise-subset-sum";
+    res.complexity = kSubsetSumComplexity;
+    PairwiseStats all;
+    dc = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Discrete, &all, deadline,
+                            ZonotopeTest::Incremental, progress.step(res.algorithm));
+    add_pair_stats(res, all);
+    if (!dc) return res;
+  }
+  return finish_discrete(res, sim, inst, *dc);
 }
 
 }  // namespace
@@ -212,7 +279,10 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
       (method == CollideMethod::Auto && tree_ok))
     return tree_step(inst, sim, method, res, deadline);
 
-  // 4./5. Couplings: all pairs, exact per-pair tests.
+  // 4./5. Couplings: all pairs, exact per-pair tests (Auto, discrete: the
+  // continuous tests decide, the subset sums give the witness).
+  if (model == TimeModel::Discrete && method == CollideMethod::Auto)
+    return discrete_by_continuous_step(inst, sim, res, deadline, progress);
   return pairwise_step(inst, sim, model, res, deadline, progress);
 }
 

@@ -9,7 +9,11 @@
 //      rectangle sweep over full-width squares (both models)        O(n log^2 n)
 //   4. couplings, continuous: every pair of regions against the zonotope of
 //      the coupling vectors on its path, own widths by Fourier-Motzkin
-//   5. couplings, discrete: every pair by subset sums over the path's vectors
+//   5. couplings, discrete: the answer is the continuous one (proven:
+//      docs/collide.md, "the models agree"), so step 4 decides it; after a
+//      YES, subset sums over the path's vectors find the discrete witness
+//      from the continuous pair's two nodes. (Pairwise: every pair by
+//      subset sums, the discrete decider on its own.)
 // Every YES comes with a schedule that the exact Simulator has run and seen
 // collide; if the simulator disagrees, find_collision throws
 // std::logic_error (a bug, never a silent wrong answer).
@@ -33,7 +37,7 @@ enum class CollideMethod {
   Auto,          // the fastest that applies
   Tree,          // no couplings only: centroid decomposition (3)
   TreePairwise,  // no couplings only: the same model, all pairs (O(n^2))
-  Pairwise,      // any instance: the per-pair exact tests (4, 5)
+  Pairwise,      // any instance: the per-pair exact tests of the model (4, 5; discrete: subset sums on every pair)
 };
 
 struct CollideStats {
@@ -43,6 +47,10 @@ struct CollideStats {
   uint64_t rectangles = 0;  // rectangles swept (tree method)
   uint64_t cell_items = 0;  // single coupling: (cell, time interval) items of the sweep (M)
   uint64_t pair_tests = 0;  // single coupling: exact pair tests of the sweep (T)
+  // Discrete, Auto, with couplings: times the witness search from the
+  // continuous pair's two nodes found nothing and every pair was searched
+  // (the models-agree theorem says it cannot happen; never seen).
+  uint64_t witness_fallbacks = 0;
 };
 
 struct CollideResult {
@@ -59,7 +67,9 @@ struct CollideResult {
   // any collision answers the question).
   std::optional<Collision> simulated;
   std::string algorithm;   // "cycle", "single-coupling", "no-operations", "tree-centroid",
-                           // "tree-pairwise", "pairwise-zonotope", "pairwise-subset-sum"
+                           // "tree-pairwise", "pairwise-zonotope", "pairwise-angle-tree",
+                           // "pairwise-subset-sum"; discrete under Auto, a continuous name,
+                           // with "+subset-sum" when it found the discrete witness
   std::string complexity;  // e.g. "O(n log^2 n)"
   CollideStats stats;
 };

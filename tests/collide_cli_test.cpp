@@ -70,6 +70,39 @@ TEST(CollideCommand, MethodsAgreeOnExamples) {
       << bad.err;
 }
 
+// With couplings, the discrete answer comes from the continuous pair tests
+// (docs/collide.md, "the models agree") and a YES's order from subset sums
+// near the continuous pair; `--method pairwise` is the subset-sum decider
+// on every pair. Both answers agree, the YES order is read back by `check`,
+// and the NO certificate is accepted by `certify`.
+TEST(CollideCommand, DiscreteAnswerFromTheContinuousTests) {
+  const std::string dir = test::temp_dir();
+  const std::string yes = kExamples + "tiny-sat.grid";
+  auto r = run_gridlock({"collide", yes, "--model", "discrete"});
+  ASSERT_EQ(r.exit_code, 10) << r.err;
+  EXPECT_NE(r.out.find("c algorithm: pairwise-zonotope+subset-sum"), std::string::npos) << r.out;
+  test::write_file(dir + "/w", r.out);
+  auto c = run_gridlock({"check", yes, "--order-file", dir + "/w"});
+  EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+  auto p = run_gridlock({"collide", yes, "--model", "discrete", "--method", "pairwise"});
+  EXPECT_EQ(p.exit_code, 10) << p.err;
+  EXPECT_NE(p.out.find("c algorithm: pairwise-subset-sum"), std::string::npos) << p.out;
+
+  // A row pushed apart by expansions (two couplings, one of two): NO.
+  test::write_file(dir + "/row.grid",
+                   "p grid 6 5 3 2\nn 0 0\nn 1 0\nn 2 0\nn 3 0\nn 4 0\nn 5 0\n"
+                   "e 0 0 1 0\ne 1 0 2 0\ne 2 0 3 0\ne 3 0 4 0\ne 4 0 5 0\n"
+                   "o a expand 0 0 +x\no b expand 2 0 +x\no c expand 4 0 +x\nq P a b\nq Q c\n");
+  auto n = run_gridlock({"collide", dir + "/row.grid", "--model", "discrete", "--certificate", dir + "/no.cert"});
+  ASSERT_EQ(n.exit_code, 20) << n.out << n.err;
+  EXPECT_NE(n.out.find("c algorithm: pairwise-zonotope ("), std::string::npos) << n.out;
+  EXPECT_NE(n.out.find("the discrete answer is the continuous one"), std::string::npos) << n.out;
+  auto np = run_gridlock({"collide", dir + "/row.grid", "--model", "discrete", "--method", "pairwise"});
+  EXPECT_EQ(np.exit_code, 20) << np.out << np.err;
+  auto cert = run_gridlock({"certify", dir + "/row.grid", dir + "/no.cert"});
+  EXPECT_EQ(cert.exit_code, 20) << cert.out << cert.err;
+}
+
 TEST(CollideCommand, BadInput) {
   std::string dir = test::temp_dir();
   auto m = run_gridlock({"collide", kExamples + "model-case1-two-growths.grid", "--model", "quantum"});

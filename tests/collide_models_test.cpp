@@ -32,13 +32,21 @@ bool unit_node(const Regions& regions, uint32_t r) {
 }
 
 struct ModelCounts {
-  int continuous_yes = 0, unit_pairs = 0, other_pairs = 0, discrete_only_no = 0;
+  int continuous_yes = 0, unit_pairs = 0, other_pairs = 0, discrete_only_no = 0, witnesses_near = 0;
 };
 
+// The continuous decider, the discrete one on its own (Pairwise: subset
+// sums on every pair) and Auto's discrete answer (the continuous decision,
+// then the witness search from the continuous pair's two nodes) agree;
+// that search never falls back to all pairs.
 void check_instance(const Instance& inst, uint64_t seed, ModelCounts& n) {
   const CollideResult c = find_collision(inst, TimeModel::Continuous);
-  const bool discrete = find_collision(inst, TimeModel::Discrete).collides;
+  const bool discrete = find_collision(inst, TimeModel::Discrete, CollideMethod::Pairwise).collides;
   EXPECT_EQ(discrete, c.collides) << "seed " << seed << ": continuous " << c.collides << ", discrete " << discrete;
+  const CollideResult a = find_collision(inst, TimeModel::Discrete);  // a YES's order is simulated inside
+  EXPECT_EQ(a.collides, discrete) << "seed " << seed << ": discrete Auto (" << a.algorithm << ") " << a.collides;
+  EXPECT_EQ(a.stats.witness_fallbacks, 0u) << "seed " << seed;
+  n.witnesses_near += a.algorithm.ends_with("+subset-sum");
   if (!c.collides) return;
   ++n.continuous_yes;
   if (c.region_a == kNone) return;  // a cycle: both models run that coupling alone
@@ -73,9 +81,11 @@ TEST(CollideModels, ModelsAgreeOnWholeInstances) {
   }
   std::cout << "[collide] models: " << instances << " instances, " << n.continuous_yes << " continuous YES, "
             << n.unit_pairs << " on a unit node and a unit or inserted node, " << n.other_pairs
-            << " on other regions; every one discrete YES (" << n.discrete_only_no << " discrete NO)\n";
+            << " on other regions; every one discrete YES (" << n.discrete_only_no << " discrete NO); "
+            << n.witnesses_near << " discrete witnesses found from the continuous pair's two nodes\n";
   EXPECT_GT(n.unit_pairs, test::scaled(300));
   EXPECT_GT(n.other_pairs, test::scaled(100));
+  EXPECT_GT(n.witnesses_near, test::scaled(1000));
 }
 
 }  // namespace

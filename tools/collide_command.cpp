@@ -154,6 +154,10 @@ int run_collide(const std::vector<std::string>& args) {
   if (res.stats.cell_items)
     ans.comment("cell-time items: " + std::to_string(res.stats.cell_items) +
                 ", pair tests: " + std::to_string(res.stats.pair_tests));
+  if (res.stats.witness_fallbacks)
+    ans.comment(
+        "the discrete witness search from the continuous pair's two nodes found nothing; every pair was "
+        "searched (docs/collide.md, \"the models agree\": please report this instance)");
   if (res.stats.levels)
     ans.comment("centroid levels: " + std::to_string(res.stats.levels) +
                 ", rectangles swept: " + std::to_string(res.stats.rectangles));
