@@ -25,6 +25,7 @@
 #include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/collide_tree.hpp"
 #include "collide/single_coupling.hpp"
+#include "lattice/prepared.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/simulate.hpp"
 
@@ -162,6 +163,32 @@ void BM_DiagonalSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, diagonal_sweep_of_size(state.range(0)));
 }
 
+// The discrete answer as `collide --model discrete` gives it, on the mixed
+// serpentine (docs/performance.md, "The discrete answer by the continuous
+// decider"). range(1): coupling size as in serpentine_bench (3, 0: sqrt
+// of the operations, -3: cube root); range(2): 0 Auto (the continuous pair
+// tests decide; a YES's witness by subset sums from the continuous pair's
+// two nodes), 1 Pairwise (subset sums on every pair: the discrete decider
+// on its own); range(3): contract_percent (0: NO, every pair examined;
+// > 0: most instances collide, the witness search runs).
+void BM_DiscreteAnswerSerpentine(benchmark::State& state) {
+  const int64_t n = state.range(0);
+  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(n))) : state.range(1);
+  SerpentineParams p = square_serpentine(n, static_cast<uint32_t>(c), SerpentineCouplings::Mixed);
+  p.contract_percent = static_cast<uint32_t>(state.range(3));
+  const Instance inst = serpentine_instance(p, 1);
+  const PreparedInstance prep(inst);
+  CollideResult r;
+  for (auto _ : state)
+    r = find_collision(prep, TimeModel::Discrete, state.range(2) == 0 ? CollideMethod::Auto : CollideMethod::Pairwise);
+  state.SetLabel(r.algorithm);
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = r.collides;
+  state.counters["pairs"] = static_cast<double>(r.stats.pairs);
+  state.counters["full_tests"] = static_cast<double>(r.stats.full_tests);
+  state.counters["fallbacks"] = static_cast<double>(r.stats.witness_fallbacks);
+}
+
 void BM_TreeCentroidPath(benchmark::State& s) { tree_bench(s, "path", false); }
 void BM_TreeCentroidComb(benchmark::State& s) { tree_bench(s, "comb", false); }
 void BM_TreeCentroidRandom(benchmark::State& s) { tree_bench(s, "random", false); }
@@ -237,11 +264,15 @@ BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiscreteAnswerSerpentine)
+    ->ArgsProduct({{64, 144, 256}, {3, 0}, {0, 1}, {0, 30}})
+    ->Unit(benchmark::kMillisecond);
 
 // GRIDLOCK_BENCH_LARGE=1 adds the large sizes of docs/performance.md
 // (centroid up to 10^6 nodes, all-pairs and coupling methods until ~60 s).
 void register_large_serpentines();
 void register_large_fans();
+void register_large_discrete_answers();
 
 void register_large() {
   for (int64_t n : {300000, 1000000}) {
@@ -276,6 +307,7 @@ void register_large() {
         ->Unit(benchmark::kMillisecond);
   }
   register_large_serpentines();
+  register_large_discrete_answers();
   register_large_fans();
 }
 
@@ -287,6 +319,24 @@ void register_large_fans() {
           ->Args({n, 0})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
+}
+
+// The discrete answer's large sizes (docs/performance.md, "The discrete
+// answer by the continuous decider").
+void register_large_discrete_answers() {
+  // The discrete answer: Auto (continuous decision) 400 .. 4 096, Pairwise
+  // (subset sums on every pair) at 400, its 60 s size.
+  for (int64_t n : {400, 576, 1024, 2304, 4096})
+    for (int64_t c : {3, 0})
+      benchmark::RegisterBenchmark("BM_DiscreteAnswerSerpentine", BM_DiscreteAnswerSerpentine)
+          ->Args({n, c, 0, 0})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t c : {3, 0})
+    benchmark::RegisterBenchmark("BM_DiscreteAnswerSerpentine", BM_DiscreteAnswerSerpentine)
+        ->Args({400, c, 1, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
 }
 
 // The serpentines' large sizes (docs/performance.md, issue 25).
