@@ -32,7 +32,8 @@ struct CollideCertificate {
 // The certificate that no schedule of inst collides in continuous time
 // (hence none in discrete time either). None (why_none) when a coupling
 // breaks a cycle or some pair of regions can overlap in continuous time
-// (possible when only the discrete model says NO). Time: the pairwise
+// (then some discrete schedule collides too: docs/collide.md, "the models
+// agree"; a discrete NO without a certificate would be a bug). Time: the pairwise
 // traversal, O(n^2) steps and O(R^2) pair tests, plus O(nets) per pair;
 // deadline as in find_collision (LimitReached).
 // partial (for tests): when a pair can overlap, text still holds the lines
