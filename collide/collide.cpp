@@ -252,16 +252,25 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
 
   // 2. One coupling: one schedule in both models, decided by the
   // space-time cell sweep (single_coupling.hpp); a YES is then simulated.
+  // Operations along one axis only: one sort per row, O(n log n).
   if (method == CollideMethod::Auto && nq == 1) {
-    res.algorithm = "single-coupling";
-    res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
+    std::optional<SingleCouplingAnswer> one_axis = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
+                                                                            &res.stats.pair_tests);
     SingleCouplingStats st;
-    const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline,
-                                                           kSingleCouplingBandItems, progress.step(res.algorithm));
-    res.stats.cell_items = st.items;
-    res.stats.pair_tests = st.tests;
+    if (one_axis) {
+      res.algorithm = "single-coupling-one-axis";
+      res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
+    } else {
+      res.algorithm = "single-coupling";
+      res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
+      one_axis = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline, kSingleCouplingBandItems,
+                                       progress.step(res.algorithm));
+      res.stats.cell_items = st.items;
+      res.stats.pair_tests = st.tests;
+    }
+    const SingleCouplingAnswer& ans = *one_axis;
     if (!ans.collides) {
-      progress.report(res.algorithm, st.bands, st.bands);
+      if (st.bands) progress.report(res.algorithm, st.bands, st.bands);
       return res;
     }
     if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;

@@ -305,6 +305,63 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
   return found;
 }
 
+std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
+                                                             const Regions& regions, uint64_t* tests) {
+  bool along_x = true, along_y = true;
+  for (const Operation& o : inst.ops()) (is_horizontal(o.dir) ? along_y : along_x) = false;
+  if (!along_x && !along_y) return std::nullopt;
+  const std::vector<Faces> faces = region_faces(inst, t, regions);
+  const size_t m = along_x ? 0 : 2, c = 2 - m;  // faces m, m + 1 move; c, c + 1 stay one unit apart
+  for (const Faces& f : faces) {
+    if (f[c].b != 0 || f[c + 1].b != 0 || f[c + 1].a - f[c].a != 1) return std::nullopt;  // never, on one axis
+    // The proof needs every width positive on (0, 1): affine, so >= 0 at
+    // both ends and not 0 at both. Not so only when the coupling breaks a
+    // cycle (a contracting v's faces then follow inconsistent paths).
+    const int64_t w0 = f[m + 1].a - f[m].a, w1 = w0 + f[m + 1].b - f[m].b;
+    if (w0 < 0 || w1 < 0 || w0 + w1 == 0) return std::nullopt;
+  }
+  // By row, then by position at t = 0: a region of width 0 at p comes
+  // after one ending at p and before one starting at p.
+  std::vector<uint32_t> order(faces.size());
+  for (uint32_t r = 0; r < order.size(); ++r) order[r] = r;
+  auto key = [&](uint32_t r) { return std::array<int64_t, 4>{faces[r][c].a, faces[r][m].a, faces[r][m + 1].a, r}; };
+  std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return key(x) < key(y); });
+  SingleCouplingAnswer ans;
+  uint64_t made = 0;
+  // The regions between two consecutive ones of positive width at t = 0,
+  // both included: every pair of them is tested.
+  std::vector<uint32_t> group;
+  auto test_group = [&] {
+    for (size_t i = 0; i < group.size(); ++i)
+      for (size_t j = i + 1; j < group.size(); ++j) {
+        ++made;
+        if (overlap(faces[group[i]], faces[group[j]])) {
+          ans.collides = true;
+          ans.pair = RegionPair{std::min(group[i], group[j]), std::max(group[i], group[j])};
+          return true;
+        }
+      }
+    return false;
+  };
+  for (size_t k = 0; k < order.size() && !ans.collides;) {
+    size_t e = k;
+    while (e < order.size() && faces[order[e]][c].a == faces[order[k]][c].a) ++e;
+    group.clear();
+    for (size_t i = k; i < e && !ans.collides; ++i) {
+      const uint32_t r = order[i];
+      group.push_back(r);
+      if (faces[r][m + 1].a > faces[r][m].a) {  // positive width at t = 0: closes the group, opens the next
+        if (group.size() > 1 && test_group()) break;
+        group.assign(1, r);
+      }
+    }
+    if (!ans.collides && group.size() > 1) test_group();
+    k = e;
+  }
+  if (tests) *tests = made;
+  return ans;
+}
+
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,
                                                    const Regions& regions) {
   const std::vector<Faces> faces = region_faces(inst, t, regions);

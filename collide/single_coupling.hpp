@@ -72,6 +72,21 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
                                            uint64_t band_items = kSingleCouplingBandItems,
                                            const std::function<void(uint64_t, uint64_t)>& on_band = {});
 
+// One axis: every operation moves along x, or every one along y. No
+// region then leaves its row (column), and the first overlap in time is
+// between two regions next to each other in their row's order at t = 0,
+// counting the regions of width 0 at t = 0 between two of positive width
+// as next to both (docs/collide.md, "One coupling, one axis": the proof).
+// So one sort per row and the exact test on those neighbours decide what
+// single_coupling_sweep decides (whether some pair overlaps; the pair may
+// differ), in O(n log n) whatever the motion. nullopt when the operations
+// use both axes, or when some region's width is not positive all along
+// (0, 1), which happens only when the coupling breaks a cycle (the face
+// test's case, which find_collision settles first). tests (optional): the
+// exact pair tests made.
+std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
+                                                             const Regions& regions, uint64_t* tests = nullptr);
+
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t, const Regions& regions);

@@ -21,21 +21,31 @@
 namespace gridlock {
 namespace {
 
-// The same shape and operations with every operation in one coupling "Q".
-Instance one_coupling(const Instance& inst) {
+// The same shape and operations with every operation in one coupling "Q";
+// with `transpose`, x and y swapped (cells and directions): a horizontal-only
+// instance becomes a vertical-only one.
+Instance one_coupling(const Instance& inst, bool transpose = false) {
+  auto cell = [&](NodeId w) {
+    const Vec2 c = inst.cells()[w];
+    return transpose ? Vec2{c.y, c.x} : c;
+  };
+  auto dir = [&](Dir d) {
+    if (!transpose) return d;
+    return d == Dir::PosX ? Dir::PosY : d == Dir::PosY ? Dir::PosX : d == Dir::NegX ? Dir::NegY : Dir::NegX;
+  };
   InstanceBuilder b;
-  for (Vec2 c : inst.cells()) EXPECT_FALSE(b.add_node(c));
-  for (const Edge& e : inst.edges()) EXPECT_FALSE(b.add_edge(inst.cells()[e.a], inst.cells()[e.b]));
+  for (NodeId w = 0; w < inst.num_nodes(); ++w) EXPECT_FALSE(b.add_node(cell(w)));
+  for (const Edge& e : inst.edges()) EXPECT_FALSE(b.add_edge(cell(e.a), cell(e.b)));
   std::vector<std::string> names;
   for (const Operation& op : inst.ops()) {
-    EXPECT_FALSE(b.add_op(op.name, op.kind, inst.cells()[op.u], op.dir));
+    EXPECT_FALSE(b.add_op(op.name, op.kind, cell(op.u), dir(op.dir)));
     names.push_back(op.name);
   }
   if (!names.empty()) {
     EXPECT_FALSE(b.add_coupling("Q", names));
   }
   if (inst.has_explicit_anchor()) {
-    EXPECT_FALSE(b.set_anchor(inst.cells()[inst.anchor()]));
+    EXPECT_FALSE(b.set_anchor(cell(inst.anchor())));
   }
   Instance out;
   EXPECT_FALSE(b.finish(out));
@@ -163,6 +173,71 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnLargerInstances) {
   EXPECT_GT(tally.yes, cases / 10);
 }
 
+// One axis (every operation along x, or every one along y): the row
+// neighbours' test (single_coupling_one_axis) against the all-pairs exact
+// test, the sweep and the simulator on the one schedule, on dense rows
+// (spread 0, paths and shapes with extra edges) of every operation kind;
+// and it declines instances that use both axes. (It may also decline when
+// the coupling breaks a cycle: widths are then inconsistent; seed 103102
+// at GRIDLOCK_TEST_SCALE=25, GRIDLOCK_TEST_SEED=91000, was such a case.)
+TEST(SingleCouplingOneAxis, AgreesWithTwinsOnRandomInstances) {
+  const uint64_t seed0 = test::base_seed(27000);
+  const int cases = test::scaled(4000);
+  int yes = 0, no = 0, vertical = 0, mixed = 0, declined = 0;
+  uint64_t tests = 0, most_tests = 0;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    Rng rng(seed * 7727 + 11);
+    RandomInstanceParams p = single_params(rng);
+    p.nodes = 2 + static_cast<uint32_t>(rng.below(rng.below(3) == 0 ? 120 : 20));
+    p.ops = 1 + static_cast<uint32_t>(rng.below(p.nodes));
+    p.horizontal_only = rng.below(6) != 0;
+    p.spread = static_cast<uint32_t>(rng.below(2));
+    const bool transpose = rng.below(2) == 0;
+    const Instance inst = one_coupling(random_instance(p, seed), transpose);
+    const std::string where = "seed " + std::to_string(seed) + " (nodes " + std::to_string(p.nodes) + ", ops " +
+                              std::to_string(p.ops) + (transpose ? ", transposed" : "") +
+                              "); replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+    Simulator sim(inst);
+    uint64_t made = 0;
+    const auto one = single_coupling_one_axis(inst, sim.tree(), sim.regions(), &made);
+    bool x = false, y = false;
+    for (const Operation& op : inst.ops()) (is_horizontal(op.dir) ? x : y) = true;
+    if (x && y) {
+      ASSERT_FALSE(one) << where;
+      ++mixed;
+      continue;
+    }
+    if (!one) {  // only when the coupling breaks a cycle (find_collision's first step)
+      ASSERT_FALSE(sim.faces().faces.empty()) << where;
+      ++declined;
+      continue;
+    }
+    const auto pairs = single_coupling_pairwise(inst, sim.tree(), sim.regions());
+    ASSERT_EQ(one->collides, pairs.has_value()) << where;
+    ASSERT_EQ(one->collides, single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
+    if (one->collides) {
+      ASSERT_TRUE(one->pair) << where;
+      ASSERT_LT(one->pair->a, one->pair->b) << where;
+    }
+    if (sim.faces().faces.empty() && inst.couplings().size() == 1) {
+      ASSERT_EQ(one->collides, sim.run_order({0}).collision.has_value()) << where;
+    }
+    // Linear in the regions: at most a few tests per region.
+    ASSERT_LE(made, 4 * sim.regions().size()) << where;
+    (one->collides ? yes : no)++;
+    vertical += y;
+    tests += made, most_tests = std::max(most_tests, made);
+  }
+  std::cout << "[ info ] one axis: " << yes + no << " instances (" << yes << " collide, " << no << " do not, "
+            << vertical << " vertical), " << mixed << " on both axes and " << declined << " breaking a cycle declined; "
+            << tests << " exact tests, at most " << most_tests << " in one instance\n";
+  EXPECT_GT(yes, cases / 10);
+  EXPECT_GT(no, cases / 10);
+  EXPECT_GT(vertical, cases / 5);
+  EXPECT_GT(mixed, cases / 20);
+}
+
 // The adversarial diagonal sweep: NO by construction (collide/adversarial.hpp),
 // for every method; the simulator meets many more candidate pairs than the
 // sweep has items once K grows.
@@ -223,7 +298,8 @@ TEST(SingleCouplingSweep, ReportsBandsAsProgress) {
   }
 }
 
-// The U below: the sweep names (0,0) and (0,1), and so does find_collision.
+// The U below: the sweep and the row neighbours' test name (0,0) and
+// (0,1), and so does find_collision (one axis: the neighbours' test).
 void check_u(const Instance& inst) {
   Simulator sim(inst);
   const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions());
@@ -231,9 +307,13 @@ void check_u(const Instance& inst) {
   ASSERT_TRUE(ans.pair);
   EXPECT_EQ(ans.pair->a, 0u);
   EXPECT_EQ(ans.pair->b, 3u);
+  const auto one = single_coupling_one_axis(inst, sim.tree(), sim.regions());
+  ASSERT_TRUE(one && one->collides && one->pair);
+  EXPECT_EQ(one->pair->a, 0u);
+  EXPECT_EQ(one->pair->b, 3u);
   const CollideResult r = find_collision(inst, TimeModel::Continuous);
   EXPECT_TRUE(r.collides);
-  EXPECT_EQ(r.algorithm, "single-coupling");
+  EXPECT_EQ(r.algorithm, "single-coupling-one-axis");
   EXPECT_EQ(r.region_a, 0u);
   EXPECT_EQ(r.region_b, 3u);
 }

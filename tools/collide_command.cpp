@@ -154,6 +154,7 @@ int run_collide(const std::vector<std::string>& args) {
   if (res.stats.cell_items)
     ans.comment("cell-time items: " + std::to_string(res.stats.cell_items) +
                 ", pair tests: " + std::to_string(res.stats.pair_tests));
+  else if (res.stats.pair_tests) ans.comment("pair tests: " + std::to_string(res.stats.pair_tests));
   if (res.stats.witness_fallbacks)
     ans.comment(
         "the discrete witness search from the continuous pair's two nodes found nothing; every pair was "
