@@ -56,7 +56,7 @@ TEST(CollideCases, ModelCase2OrderGadget) {
 TEST(CollideCases, ModelCase3Block) {
   Instance coupled = load("model-case3-block.grid");  // a and b coupled: no collision
   expect_both_models(coupled, false);
-  EXPECT_EQ(find_collision(coupled, TimeModel::Continuous).algorithm, "single-coupling");
+  EXPECT_EQ(find_collision(coupled, TimeModel::Continuous).algorithm, "single-coupling-one-axis");
   Instance single = parse(
       "p grid 4 4 1 0\nn 0 0\nn 1 0\nn 0 1\nn 1 1\ne 0 0 1 0\ne 0 1 1 1\ne 0 0 0 1\ne 1 0 1 1\no a expand 0 0 +x\n");
   CollideResult r = find_collision(single, TimeModel::Discrete);

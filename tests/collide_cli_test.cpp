@@ -49,7 +49,7 @@ TEST(CollideCommand, NoAndJson) {
   ASSERT_EQ(r.exit_code, 20) << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["status"], "NO");
-  EXPECT_EQ(j["algorithm"], "single-coupling");
+  EXPECT_EQ(j["algorithm"], "single-coupling-one-axis");
   auto y = run_gridlock({"collide", kExamples + "model-case1-two-growths.grid", "--json", "--model", "discrete"});
   auto jy = nlohmann::json::parse(y.out);
   EXPECT_EQ(jy["status"], "YES");
