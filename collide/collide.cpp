@@ -178,8 +178,8 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
 // docs/collide.md, "Colliding Schedule: the models agree"), so the
 // continuous pair tests decide it, and a NO costs what it costs there.
 // After a YES on regions (a, b) the discrete witness is searched from the
-// reference nodes of a and b only (the proof's colliding pair has one of
-// them: O(n) pairs by subset sums); all pairs only if that finds nothing
+// nodes that the faces of a and b follow only (the proof's colliding pair
+// has one of them: O(n) pairs by subset sums); all pairs only if that finds nothing
 // (counted in witness_fallbacks; never seen). If even all pairs find
 // nothing, the exact discrete answer NO is returned: the theorem would be
 // wrong on this instance, and collide_no_certificate says so.
@@ -250,25 +250,25 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     return finish_with(res, sim, schedule_from_order(order_starting_with(inst, {f.nets.front().first})));
   }
 
-  // 2. One coupling: one schedule in both models, decided by the
+  // 2. One coupling: one schedule in both models, decided by one sort per
+  // row when every operation is on one axis (O(n log n)), else by the
   // space-time cell sweep (single_coupling.hpp); a YES is then simulated.
-  // Operations along one axis only: one sort per row, O(n log n).
   if (method == CollideMethod::Auto && nq == 1) {
-    std::optional<SingleCouplingAnswer> one_axis = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
-                                                                            &res.stats.pair_tests);
+    std::optional<SingleCouplingAnswer> answer = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
+                                                                          &res.stats.pair_tests);
     SingleCouplingStats st;
-    if (one_axis) {
+    if (answer) {
       res.algorithm = "single-coupling-one-axis";
       res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
     } else {
       res.algorithm = "single-coupling";
       res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
-      one_axis = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline, kSingleCouplingBandItems,
-                                       progress.step(res.algorithm));
+      answer = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline, kSingleCouplingBandItems,
+                                     progress.step(res.algorithm));
       res.stats.cell_items = st.items;
       res.stats.pair_tests = st.tests;
     }
-    const SingleCouplingAnswer& ans = *one_axis;
+    const SingleCouplingAnswer& ans = *answer;
     if (!ans.collides) {
       if (st.bands) progress.report(res.algorithm, st.bands, st.bands);
       return res;

@@ -4,7 +4,8 @@
 // find_collision picks the algorithm that fits the instance (docs/collide.md):
 //   1. a coupling with a non-zero net vector around some face walk: running
 //      it alone breaks that cycle (both models)                     O(n + e log e)
-//   2. a single coupling: both models have one schedule; simulate it
+//   2. a single coupling: both models have one schedule: on one axis the
+//      row neighbours at t = 0 (O(n log n)), else the space-time cell sweep
 //   3. no couplings (all singletons): centroid decomposition and a red-blue
 //      rectangle sweep over full-width squares (both models)        O(n log^2 n)
 //   4. couplings, continuous: every pair of regions against the zonotope of
@@ -66,8 +67,8 @@ struct CollideResult {
   // The simulator's first collision on the witness (it may be another pair:
   // any collision answers the question).
   std::optional<Collision> simulated;
-  std::string algorithm;   // "cycle", "single-coupling", "no-operations", "tree-centroid",
-                           // "tree-pairwise", "pairwise-zonotope", "pairwise-angle-tree",
+  std::string algorithm;   // "cycle", "single-coupling", "single-coupling-one-axis", "no-operations",
+                           // "tree-centroid", "tree-pairwise", "pairwise-zonotope", "pairwise-angle-tree",
                            // "pairwise-subset-sum"; discrete under Auto, a continuous name,
                            // with "+subset-sum" when it found the discrete witness
   std::string complexity;  // e.g. "O(n log^2 n)"
