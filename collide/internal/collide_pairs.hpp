@@ -148,7 +148,7 @@ enum class ZonotopeTest {
 // call: one of their eight forms alone is <= 0 on the whole cube (the
 // filter's bounds are sums of per-term maxima of one form).
 // around (optional): traverse only from the nodes that the faces of these
-// regions follow (at most 4 per region: a unit node itself; an inserted,
+// regions follow (at most 2 per region: a unit node itself; an inserted,
 // grown or contracting region also the node it is attached to) and test
 // their regions against every region of the instance (not only those of
 // later nodes): O(|around| n) pairs instead of O(n^2). The discrete
