@@ -181,8 +181,8 @@ void BM_DiagonalSingleCoupling(benchmark::State& state) {
 // serpentine (docs/performance.md, "The discrete answer by the continuous
 // decider"). range(1): coupling size as in serpentine_bench (3, 0: sqrt
 // of the operations, -3: cube root); range(2): 0 Auto (the continuous pair
-// tests decide; a YES's witness by subset sums from the continuous pair's
-// two nodes), 1 Pairwise (subset sums on every pair: the discrete decider
+// tests decide; a YES's witness by subset sums from the nodes the continuous
+// pair's faces follow), 1 Pairwise (subset sums on every pair: the discrete decider
 // on its own); range(3): contract_percent (0: NO, every pair examined;
 // > 0: most instances collide, the witness search runs).
 void BM_DiscreteAnswerSerpentine(benchmark::State& state) {

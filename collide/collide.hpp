@@ -13,7 +13,7 @@
 //   5. couplings, discrete: the answer is the continuous one (proven:
 //      docs/collide.md, "the models agree"), so step 4 decides it; after a
 //      YES, subset sums over the path's vectors find the discrete witness
-//      from the continuous pair's two nodes. (Pairwise: every pair by
+//      from the nodes the continuous pair's faces follow. (Pairwise: every pair by
 //      subset sums, the discrete decider on its own.)
 // Every YES comes with a schedule that the exact Simulator has run and seen
 // collide; if the simulator disagrees, find_collision throws
@@ -49,7 +49,7 @@ struct CollideStats {
   uint64_t cell_items = 0;  // single coupling: (cell, time interval) items of the sweep (M)
   uint64_t pair_tests = 0;  // single coupling: exact pair tests of the sweep (T)
   // Discrete, Auto, with couplings: times the witness search from the
-  // continuous pair's two nodes found nothing and every pair was searched
+  // nodes the continuous pair's faces follow found nothing and every pair was searched
   // (the models-agree theorem says it cannot happen; never seen).
   uint64_t witness_fallbacks = 0;
 };

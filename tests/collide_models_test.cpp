@@ -37,7 +37,7 @@ struct ModelCounts {
 
 // The continuous decider, the discrete one on its own (Pairwise: subset
 // sums on every pair) and Auto's discrete answer (the continuous decision,
-// then the witness search from the continuous pair's two nodes) agree;
+// then the witness search from the nodes the continuous pair's faces follow) agree;
 // that search never falls back to all pairs.
 void check_instance(const Instance& inst, uint64_t seed, ModelCounts& n) {
   const CollideResult c = find_collision(inst, TimeModel::Continuous);
@@ -82,7 +82,7 @@ TEST(CollideModels, ModelsAgreeOnWholeInstances) {
   std::cout << "[collide] models: " << instances << " instances, " << n.continuous_yes << " continuous YES, "
             << n.unit_pairs << " on a unit node and a unit or inserted node, " << n.other_pairs
             << " on other regions; every one discrete YES (" << n.discrete_only_no << " discrete NO); "
-            << n.witnesses_near << " discrete witnesses found from the continuous pair's two nodes\n";
+            << n.witnesses_near << " discrete witnesses found near the continuous pair\n";
   EXPECT_GT(n.unit_pairs, test::scaled(300));
   EXPECT_GT(n.other_pairs, test::scaled(100));
   EXPECT_GT(n.witnesses_near, test::scaled(1000));

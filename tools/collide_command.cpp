@@ -157,7 +157,7 @@ int run_collide(const std::vector<std::string>& args) {
   else if (res.stats.pair_tests) ans.comment("pair tests: " + std::to_string(res.stats.pair_tests));
   if (res.stats.witness_fallbacks)
     ans.comment(
-        "the discrete witness search from the continuous pair's two nodes found nothing; every pair was "
+        "the discrete witness search from the nodes the continuous pair's faces follow found nothing; every pair was "
         "searched (docs/collide.md, \"the models agree\": please report this instance)");
   if (res.stats.levels)
     ans.comment("centroid levels: " + std::to_string(res.stats.levels) +
