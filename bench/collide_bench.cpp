@@ -76,11 +76,15 @@ void coupled_bench(benchmark::State& state, bool mixed, TimeModel model) {
 // is examined. The pairwise method itself (pairwise_collision, as
 // find_collision's Pairwise step calls it), continuous with the incremental
 // supports or the per-pair rebuild (the method before them), or discrete.
+// The coupling size range(1) asks for on a serpentine of range(0) nodes:
+// -3 means couplings of about n^(1/3) operations, which makes the distinct
+// net directions on a path (D) largest: about n^(2/3).
+int64_t serpentine_coupling_size(const benchmark::State& state) {
+  return state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0)))) : state.range(1);
+}
+
 void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeModel model, ZonotopeTest ztest) {
-  // range(1) == -3: couplings of about n^(1/3) operations, which makes the
-  // distinct net directions on a path (D) largest: about n^(2/3).
-  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(state.range(0))))
-                                         : state.range(1);
+  const int64_t c = serpentine_coupling_size(state);
   SerpentineParams p = how == SerpentineCouplings::Fan
                            ? fan_serpentine(state.range(0))
                            : square_serpentine(state.range(0), static_cast<uint32_t>(c), how);
@@ -186,8 +190,7 @@ void BM_DiagonalSingleCoupling(benchmark::State& state) {
 // on its own); range(3): contract_percent (0: NO, every pair examined;
 // > 0: most instances collide, the witness search runs).
 void BM_DiscreteAnswerSerpentine(benchmark::State& state) {
-  const int64_t n = state.range(0);
-  const int64_t c = state.range(1) == -3 ? std::llround(std::cbrt(static_cast<double>(n))) : state.range(1);
+  const int64_t n = state.range(0), c = serpentine_coupling_size(state);
   SerpentineParams p = square_serpentine(n, static_cast<uint32_t>(c), SerpentineCouplings::Mixed);
   p.contract_percent = static_cast<uint32_t>(state.range(3));
   const Instance inst = serpentine_instance(p, 1);
