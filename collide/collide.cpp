@@ -44,6 +44,29 @@ CollideResult finish_with(CollideResult& res, Simulator& sim, Schedule s) {
   return res;
 }
 
+// A one-axis YES: the answer names the first collision (its proof), and the
+// simulator's configuration at a moment inside the pair's overlap confirms
+// that the witness collides (logic_error otherwise). O(n) where simulating
+// this motion costs up to Theta(n^2) (a row whose expansions share the
+// coupling).
+CollideResult finish_one_axis(CollideResult& res, const Instance& inst, const SingleCouplingAnswer& ans) {
+  res.collides = true;
+  res.witness = schedule_from_order({0});
+  const std::vector<RectQ> at = configuration_at(inst, res.witness, *ans.during);
+  const RectQ &A = at[ans.pair->a], &B = at[ans.pair->b];
+  if (!(std::max(A.xlo, B.xlo) < std::min(A.xhi, B.xhi) && std::max(A.ylo, B.ylo) < std::min(A.yhi, B.yhi)))
+    throw std::logic_error("collide (" + res.algorithm + "): the predicted pair does not overlap at time " +
+                           ans.during->str() + " in the simulator's configuration");
+  Collision c;
+  c.kind = Collision::Kind::Node;
+  c.time = *ans.first;
+  c.a = ans.pair->a, c.b = ans.pair->b;
+  c.moving = {0};
+  res.simulated = c;
+  res.checked_at = ans.during;
+  return res;
+}
+
 // Turns a step's (done, total) into at most four CollideProgress reports a
 // second, plus every report with done == total.
 class Reporter {
@@ -252,7 +275,8 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
 
   // 2. One coupling: one schedule in both models, decided by one sort per
   // row when every operation is on one axis (O(n log n)), else by the
-  // space-time cell sweep (single_coupling.hpp); a YES is then simulated.
+  // space-time cell sweep (single_coupling.hpp); a sweep's YES is then
+  // simulated, a one-axis YES checked at one moment.
   if (method == CollideMethod::Auto && nq == 1) {
     std::optional<SingleCouplingAnswer> answer = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
                                                                           &res.stats.pair_tests);
@@ -274,6 +298,7 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
       return res;
     }
     if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
+    if (ans.first) return finish_one_axis(res, inst, ans);
     finish_with(res, sim, schedule_from_order({0}));
     if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
       res.region_a = res.simulated->a, res.region_b = res.simulated->b;

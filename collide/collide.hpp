@@ -28,6 +28,7 @@
 
 #include "lattice/instance.hpp"
 #include "lattice/prepared.hpp"
+#include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
 #include "lattice/time_model.hpp"
@@ -64,9 +65,15 @@ struct CollideResult {
   // walk (cycle collision).
   uint32_t region_a = kNone, region_b = kNone;
   std::vector<NodeId> cycle;
-  // The simulator's first collision on the witness (it may be another pair:
-  // any collision answers the question).
+  // The first collision on the witness (it may be another pair: any
+  // collision answers the question): the simulator's; for
+  // "single-coupling-one-axis" the one that algorithm's proof names (the
+  // simulator's: the same moment and pair), confirmed in the simulator's
+  // configuration at checked_at.
   std::optional<Collision> simulated;
+  // Set when the witness was confirmed by the configuration at this moment
+  // (configuration_at: the pair overlaps) rather than by a full simulation.
+  std::optional<Rational> checked_at;
   std::string algorithm;   // "cycle", "single-coupling", "single-coupling-one-axis", "no-operations",
                            // "tree-centroid", "tree-pairwise", "pairwise-zonotope", "pairwise-angle-tree",
                            // "pairwise-subset-sum"; discrete under Auto, a continuous name,

@@ -53,14 +53,16 @@ Span alive(const Faces& r) {
   return s;
 }
 
-// The exact test: do A and B overlap with positive area at some t in
-// (0, 1)? Eight strict linear inequalities (four overlaps, four widths).
-// An overlap at t = 1 is one just before it too (strict inequalities hold
-// on a neighbourhood), so the open interval loses nothing.
-bool overlap(const Faces& A, const Faces& B) {
+// The times in (0, 1) at which A and B overlap with positive area: eight
+// strict linear inequalities (four overlaps, four widths), an open interval
+// (empty when they never overlap). An overlap at t = 1 is one just before
+// it too (strict inequalities hold on a neighbourhood), so the open
+// interval loses nothing.
+Span overlap_span(const Faces& A, const Faces& B) {
   Span s = alive(A);
   const Span b = alive(B);
-  if (s.empty() || b.empty()) return false;
+  if (s.empty()) return s;
+  if (b.empty()) return b;
   if (less(s.lo, b.lo)) s.lo = b.lo;
   if (less(b.hi, s.hi)) s.hi = b.hi;
   for (size_t lo = 0; lo < 4; lo += 2) {
@@ -68,8 +70,11 @@ bool overlap(const Faces& A, const Faces& B) {
     s.cut(ahi.a - blo.a, ahi.b - blo.b);
     s.cut(bhi.a - alo.a, bhi.b - alo.b);
   }
-  return !s.empty();
+  return s;
 }
+
+// The exact test: do A and B overlap with positive area at some t in (0, 1)?
+bool overlap(const Faces& A, const Faces& B) { return !overlap_span(A, B).empty(); }
 
 // The value of f at time q, floored / ceiled.
 int64_t floor_at(const Lin& f, const Frac& q) {
@@ -227,12 +232,13 @@ SingleCouplingAnswer sweep_cell(const std::vector<Item>& items, size_t b, size_t
       if (less(x.lo, items[y].hi)) active[keep++] = y;
     active.resize(keep);
     st.max_active = std::max<uint64_t>(st.max_active, keep);
-    if (keep > kPackingBound) return SingleCouplingAnswer{true, std::nullopt};
+    if (keep > kPackingBound) return SingleCouplingAnswer{true, std::nullopt, std::nullopt, std::nullopt};
     for (uint32_t y : active) {
       ++st.tests;
       if (overlap(faces[x.region], faces[items[y].region]))
         return SingleCouplingAnswer{
-            true, RegionPair{std::min(x.region, items[y].region), std::max(x.region, items[y].region)}};
+            true, RegionPair{std::min(x.region, items[y].region), std::max(x.region, items[y].region)}, std::nullopt,
+            std::nullopt};
     }
     active.push_back(static_cast<uint32_t>(k));
   }
@@ -329,36 +335,48 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
   SingleCouplingAnswer ans;
   uint64_t made = 0;
   // The regions between two consecutive ones of positive width at t = 0,
-  // both included: every pair of them is tested.
+  // both included: every pair of them is tested, and the pair that starts
+  // overlapping first is kept, the smallest on ties, as the simulator does
+  // (the proof: every pair that overlaps right after the first moment is
+  // in one group).
   std::vector<uint32_t> group;
+  Span first;
   auto test_group = [&] {
     for (size_t i = 0; i < group.size(); ++i)
       for (size_t j = i + 1; j < group.size(); ++j) {
         ++made;
-        if (overlap(faces[group[i]], faces[group[j]])) {
-          ans.collides = true;
-          ans.pair = RegionPair{std::min(group[i], group[j]), std::max(group[i], group[j])};
-          return true;
-        }
+        const Span s = overlap_span(faces[group[i]], faces[group[j]]);
+        if (s.empty()) continue;
+        const RegionPair p{std::min(group[i], group[j]), std::max(group[i], group[j])};
+        if (ans.collides && (less(first.lo, s.lo) ||
+                             (!less(s.lo, first.lo) && std::pair(ans.pair->a, ans.pair->b) < std::pair(p.a, p.b))))
+          continue;
+        ans.collides = true;
+        ans.pair = p;
+        first = s;
       }
-    return false;
   };
-  for (size_t k = 0; k < order.size() && !ans.collides;) {
+  for (size_t k = 0; k < order.size();) {
     size_t e = k;
     while (e < order.size() && faces[order[e]][c].a == faces[order[k]][c].a) ++e;
     group.clear();
-    for (size_t i = k; i < e && !ans.collides; ++i) {
+    for (size_t i = k; i < e; ++i) {
       const uint32_t r = order[i];
       group.push_back(r);
       if (faces[r][m + 1].a > faces[r][m].a) {  // positive width at t = 0: closes the group, opens the next
-        if (group.size() > 1 && test_group()) break;
+        test_group();
         group.assign(1, r);
       }
     }
-    if (!ans.collides && group.size() > 1) test_group();
+    test_group();
     k = e;
   }
   if (tests) *tests = made;
+  if (ans.collides) {
+    ans.first = Rational(first.lo.num, first.lo.den);
+    // The middle of the first pair's overlap: (lo + hi) / 2.
+    ans.during = (*ans.first + Rational(first.hi.num, first.hi.den)) * Rational(1, 2);
+  }
   return ans;
 }
 

@@ -24,6 +24,7 @@
 #include "common/limits.hpp"
 #include "lattice/instance.hpp"
 #include "lattice/motion.hpp"
+#include "lattice/rational.hpp"
 
 namespace gridlock {
 
@@ -52,6 +53,11 @@ struct SingleCouplingAnswer {
   // overlaps allows: docs/collide.md), the pair then to be found by the
   // simulator.
   std::optional<RegionPair> pair;
+  // single_coupling_one_axis only: pair is the first to collide (the
+  // smallest pair on ties), from `first` (the infimum of all overlap times:
+  // the first collision's time), and overlaps at `during` (a time inside its
+  // overlap, first < during < 1).
+  std::optional<Rational> first, during;
 };
 
 // Do two regions overlap while every operation of `inst` runs together
@@ -79,7 +85,10 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 // as next to both (docs/collide.md, "One coupling, one axis": the proof).
 // So one sort per row and the exact test on those neighbours decide what
 // single_coupling_sweep decides (whether some pair overlaps; the pair may
-// differ), in O(n log n) whatever the motion. nullopt when the operations
+// differ), in O(n log n) whatever the motion; on a YES the answer also
+// names the first collision (`first`, `during`), the simulator's: every
+// pair that overlaps right after the first moment is in one group, so the
+// earliest group pair, the smallest on ties, is the simulator's pair. nullopt when the operations
 // use both axes, or when some region's width is not positive all along
 // (0, 1), which happens only when the coupling breaks a cycle (the face
 // test's case, which find_collision settles first). tests (optional): the

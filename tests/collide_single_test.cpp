@@ -14,6 +14,8 @@
 #include "collide/single_coupling.hpp"
 #include "common/random.hpp"
 #include "lattice/random_instance.hpp"
+#include "lattice/rational.hpp"
+#include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
@@ -183,7 +185,7 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnLargerInstances) {
 TEST(SingleCouplingOneAxis, AgreesWithTwinsOnRandomInstances) {
   const uint64_t seed0 = test::base_seed(27000);
   const int cases = test::scaled(4000);
-  int yes = 0, no = 0, vertical = 0, mixed = 0, declined = 0;
+  int yes = 0, no = 0, vertical = 0, mixed = 0, declined = 0, first_checked = 0;
   uint64_t tests = 0, most_tests = 0;
   for (int i = 0; i < cases; ++i) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
@@ -220,8 +222,32 @@ TEST(SingleCouplingOneAxis, AgreesWithTwinsOnRandomInstances) {
       ASSERT_TRUE(one->pair) << where;
       ASSERT_LT(one->pair->a, one->pair->b) << where;
     }
+    if (one->collides) {  // the pair overlaps at `during`, after `first`
+      ASSERT_TRUE(one->first && one->during) << where;
+      ASSERT_LT(Rational(0), *one->during) << where;
+      ASSERT_LT(*one->first, *one->during) << where;
+      ASSERT_LT(*one->during, Rational(1)) << where;
+      const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *one->during);
+      const RectQ &A = at[one->pair->a], &B = at[one->pair->b];
+      ASSERT_LT(std::max(A.xlo, B.xlo), std::min(A.xhi, B.xhi)) << where;
+      ASSERT_LT(std::max(A.ylo, B.ylo), std::min(A.yhi, B.yhi)) << where;
+    }
     if (sim.faces().faces.empty() && inst.couplings().size() == 1) {
-      ASSERT_EQ(one->collides, sim.run_order({0}).collision.has_value()) << where;
+      const SimResult run = sim.run_order({0});
+      ASSERT_EQ(one->collides, run.collision.has_value()) << where;
+      if (one->collides) {  // the first collision's moment, as the simulator finds it
+        ASSERT_EQ(*one->first, run.collision->time) << where;
+        const CollideResult res = find_collision(inst, TimeModel::Continuous);
+        ASSERT_EQ(res.algorithm, "single-coupling-one-axis") << where;
+        ASSERT_EQ(res.simulated->time, run.collision->time) << where;
+        ASSERT_EQ(res.checked_at, one->during) << where;
+        ASSERT_EQ(one->pair->a, run.collision->a) << where;  // the smallest pair on ties, as the simulator
+        ASSERT_EQ(one->pair->b, run.collision->b) << where;
+        ASSERT_EQ(res.simulated->a, run.collision->a) << where;
+        ASSERT_EQ(res.simulated->b, run.collision->b) << where;
+        ASSERT_EQ(res.simulated->moving, run.collision->moving) << where;
+        ++first_checked;
+      }
     }
     // Linear in the regions: at most a few tests per region.
     ASSERT_LE(made, 4 * sim.regions().size()) << where;
@@ -231,7 +257,8 @@ TEST(SingleCouplingOneAxis, AgreesWithTwinsOnRandomInstances) {
   }
   std::cout << "[ info ] one axis: " << yes + no << " instances (" << yes << " collide, " << no << " do not, "
             << vertical << " vertical), " << mixed << " on both axes and " << declined << " breaking a cycle declined; "
-            << tests << " exact tests, at most " << most_tests << " in one instance\n";
+            << tests << " exact tests, at most " << most_tests << " in one instance; " << first_checked
+            << " first collisions equal to the simulator's\n";
   EXPECT_GT(yes, cases / 10);
   EXPECT_GT(no, cases / 10);
   EXPECT_GT(vertical, cases / 5);
