@@ -151,6 +151,7 @@ py::dict collide(const Instance& inst, const std::string& model, const std::stri
   d["collision"] = py::none();
   d["certificate"] = py::none();
   d["certificate_note"] = py::none();
+  d["checked_at"] = py::none();
   if (!r.collides) {
     if (!certificate) return d;
     const CollideCertificate cert = run_interruptible([&] { return collide_no_certificate(inst, &no_limit); });
@@ -159,6 +160,7 @@ py::dict collide(const Instance& inst, const std::string& model, const std::stri
     return d;
   }
   d["collision"] = collision_dict(inst, Regions::build(inst), *r.simulated);
+  if (r.checked_at) d["checked_at"] = r.checked_at->str();
   if (tm == TimeModel::Discrete) d["order"] = order_names(inst, r.witness.order);
   else d["times"] = times_dict(inst, r.witness);
   return d;

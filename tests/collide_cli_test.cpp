@@ -103,6 +103,34 @@ TEST(CollideCommand, DiscreteAnswerFromTheContinuousTests) {
   EXPECT_EQ(cert.exit_code, 20) << cert.out << cert.err;
 }
 
+// One coupling, one axis: the answer names the first collision itself and
+// checks it in the simulator's configuration at one moment; `check` runs
+// the full simulation on the witness and must agree.
+TEST(CollideCommand, OneAxisYesNamesTheFirstCollision) {
+  const std::string dir = test::temp_dir();
+  // worked case 1 with both growths in one coupling: [1, 1 + t] meets [2 - t, 2] after t = 1/2.
+  test::write_file(dir + "/g.grid",
+                   "p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\n"
+                   "e 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n");
+  for (const char* model : {"continuous", "discrete"}) {
+    auto r = run_gridlock({"collide", dir + "/g.grid", "--model", model});
+    ASSERT_EQ(r.exit_code, 10) << r.out << r.err;
+    EXPECT_NE(r.out.find("c algorithm: single-coupling-one-axis"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("c first node collision at time 1/2 between"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("c checked in the simulator's configuration at time 3/4: they overlap"), std::string::npos)
+        << r.out;
+    test::write_file(dir + "/w", r.out);
+    auto c = run_gridlock(
+        {"check", dir + "/g.grid", std::string(model) == "discrete" ? "--order-file" : "--times", dir + "/w"});
+    EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+    EXPECT_NE(c.out.find("at time 1/2"), std::string::npos) << c.out;
+  }
+  auto j = nlohmann::json::parse(run_gridlock({"collide", dir + "/g.grid", "--json"}).out);
+  EXPECT_EQ(j["status"], "YES");
+  EXPECT_EQ(j["checked_at"], "3/4");
+  EXPECT_EQ(j["collision"]["time"], "1/2");
+}
+
 TEST(CollideCommand, BadInput) {
   std::string dir = test::temp_dir();
   auto m = run_gridlock({"collide", kExamples + "model-case1-two-growths.grid", "--model", "quantum"});

@@ -85,7 +85,13 @@ int report_collision(Answer& ans, const Instance& inst, const CollideResult& res
                 region_label(inst, regions, res.region_b) + " can collide");
   }
   const Collision& c = *res.simulated;
-  ans.comment("checked by the simulator: " + describe(inst, regions, c));
+  if (res.checked_at) {  // one axis: the first collision from the proof, confirmed at one moment
+    ans.comment("first " + describe(inst, regions, c));
+    ans.comment("checked in the simulator's configuration at time " + res.checked_at->str() + ": they overlap");
+    ans.data()["checked_at"] = res.checked_at->str();
+  } else {
+    ans.comment("checked by the simulator: " + describe(inst, regions, c));
+  }
   ans.data()["collision"] = collision_json(inst, regions, c);
   if (vm.count("svg")) {
     write_collision_svg(vm["svg"].as<std::string>(), inst, res.witness, c);

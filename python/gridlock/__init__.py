@@ -100,6 +100,9 @@ class CollideResult:
     times: Optional[Times] = None
     certificate: Optional[str] = None       # NO with certificate=True: the text certify() checks
     certificate_note: Optional[str] = None  # NO with certificate=True but none written: why
+    # YES confirmed at this one moment (the pair overlaps in the simulator's
+    # configuration) instead of a full simulation: one coupling, one axis
+    checked_at: Optional[Fraction] = None
 
     def __bool__(self) -> bool:
         return self.status == "YES"
@@ -182,6 +185,7 @@ def collide(instance: Instance, model: str = "discrete", method: str = "auto",
     "Colliding Schedule: the models agree", proves to be a bug)."""
     d = _core.collide(instance, model=model, method=method, certificate=certificate)
     d["collision"] = _collision(d["collision"])
+    d["checked_at"] = None if d["checked_at"] is None else Fraction(d["checked_at"])
     return CollideResult(**d)
 
 

@@ -10,7 +10,7 @@ from fractions import Fraction
 import pytest
 
 import gridlock
-from conftest import INSTANCES, SEED, cli, cli_json, scaled
+from conftest import INSTANCES, SEED, SOURCE, cli, cli_json, scaled
 
 
 def cli_times(witness):
@@ -80,6 +80,22 @@ def check_collide(inst, path, model):
 @pytest.mark.parametrize("model", ["discrete", "continuous"])
 def test_collide_examples_equal_cli(instance_path, model):
     check_collide(gridlock.Instance.read(str(instance_path)), instance_path, model)
+
+
+@pytest.mark.parametrize("model", ["discrete", "continuous"])
+def test_collide_one_axis_yes_checked_at_one_moment(tmp_path, model):
+    """One coupling, one axis: the first collision comes from the proof and
+    is confirmed at one moment; it is the simulator's, and equals the CLI."""
+    path = tmp_path / "g.grid"
+    path.write_text("p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\n"
+                    "e 1 1 2 1\ne 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n")
+    inst = gridlock.Instance.read(str(path))
+    check_collide(inst, str(path), model)
+    got = gridlock.collide(inst, model=model)
+    assert got.algorithm == "single-coupling-one-axis"
+    assert got.checked_at == Fraction(3, 4) and got.collision.time == Fraction(1, 2)
+    assert cli_json("collide", str(path), "--model", model)["checked_at"] == "3/4"
+    assert gridlock.collide(gridlock.Instance.read(str(SOURCE / "examples" / "instances" / "tiny-sat.grid"))).checked_at is None
 
 
 def test_gaps_examples_equal_cli(instance_path):
