@@ -8,6 +8,13 @@
 // so no schedule of a comb collides. group > 1 couples consecutive
 // expansions into couplings of `group` operations (0: one coupling of all).
 //
+// hook: a row of L nodes along y = 0 (L >= 2) with an expansion (+x) on
+// every other edge, all in one coupling, under a static row of L + 2 nodes
+// along y = 1 joined to it at x = 0, whose end comes down to (L + 1, 0):
+// the row's end, pushed at speed floor(L / 2) (one unit per expansion), enters
+// the free cell (L, 0) and meets the static node (n = 2 L + 3, one axis,
+// YES at the first moment 1 / (number of expansions)).
+//
 // separation_chain: n separation gadgets in a row, the shape of the
 // continuous reduction's contract t_b >= t_a + 1. Gadget i (x0 = 3i): a
 // column (x0,0)-(x0,1) and (x0+1,0)-(x0+1,1) on a spine along y = 0;
@@ -67,6 +74,26 @@ inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t gro
       if (g.size() > 1) b.add_coupling("Q" + std::to_string(i), g);
     }
   }
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
+  return inst;
+}
+
+inline Instance hook(int64_t L) {
+  InstanceBuilder b;
+  for (int64_t x = 0; x < L; ++x) b.add_node({x, 0});
+  for (int64_t x = 0; x < L + 2; ++x) b.add_node({x, 1});
+  b.add_node({L + 1, 0});
+  for (int64_t x = 0; x + 1 < L; ++x) b.add_edge({x, 0}, {x + 1, 0});
+  for (int64_t x = 0; x + 1 < L + 2; ++x) b.add_edge({x, 1}, {x + 1, 1});
+  b.add_edge({0, 0}, {0, 1});
+  b.add_edge({L + 1, 1}, {L + 1, 0});
+  std::vector<std::string> names;
+  for (int64_t x = 0; x + 1 < L; x += 2) {
+    names.push_back("e" + std::to_string(x));
+    b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX);
+  }
+  b.add_coupling("all", names);
   Instance inst;
   if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
   return inst;

@@ -175,6 +175,13 @@ void BM_SpineCombSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Spine, 0, 7));
 }
 
+// The hook (bench_families.hpp): one axis, YES, total motion Theta(n^2);
+// Auto names the first collision and checks it at one moment, the
+// simulation (range(1) = 2) is what confirmed the witness before.
+void BM_HookSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, bench::hook((state.range(0) - 3) / 2));
+}
+
 // The diagonal sweep (collide/adversarial.hpp): quadratic candidate pairs
 // for the simulator, total motion O(n^{3/2}).
 void BM_DiagonalSingleCoupling(benchmark::State& state) {
@@ -279,6 +286,8 @@ BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(be
 BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099, 16387}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099}, {2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
@@ -371,6 +380,16 @@ void register_large_one_axis() {
       ->Args({65536, 5})  // the sweep: about 2 minutes
       ->Iterations(1)
       ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {65539, 262147, 1048579})  // a YES named and checked at one moment
+    benchmark::RegisterBenchmark("BM_HookSingleCoupling", BM_HookSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {16387, 65539})  // the simulation that confirmed it before: minutes at 65 539
+    benchmark::RegisterBenchmark("BM_HookSingleCoupling", BM_HookSingleCoupling)
+        ->Args({n, 2})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
 }
 
 // The serpentines' large sizes (docs/performance.md, issue 25).
