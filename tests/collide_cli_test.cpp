@@ -2,6 +2,8 @@
 // back by `gridlock check`, and bad input.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
@@ -129,6 +131,25 @@ TEST(CollideCommand, OneAxisYesNamesTheFirstCollision) {
   EXPECT_EQ(j["status"], "YES");
   EXPECT_EQ(j["checked_at"], "3/4");
   EXPECT_EQ(j["collision"]["time"], "1/2");
+}
+
+// --certificate C on an answer without one: C is left as it was (a file
+// there is not this answer's certificate) and a comment says so.
+TEST(CollideCommand, CertificateOptionOnAYesLeavesTheFileAndSaysSo) {
+  const std::string dir = test::temp_dir();
+  test::write_file(dir + "/old.cert", "an earlier certificate\n");
+  const std::string yes = kExamples + "model-case1-two-growths.grid";
+  auto r = run_gridlock({"collide", yes, "--certificate", dir + "/old.cert"});
+  ASSERT_EQ(r.exit_code, 10) << r.out << r.err;
+  EXPECT_NE(r.out.find("c no certificate written: only a NO has one"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("old.cert is left as it was (not this answer's)"), std::string::npos) << r.out;
+  EXPECT_EQ(test::read_file(dir + "/old.cert"), "an earlier certificate\n");
+  for (const char* model : {"discrete", "continuous"}) {
+    auto s = run_gridlock({"solve", kExamples + "tiny-sat.grid", "--model", model, "--certificate", dir + "/new.cert"});
+    ASSERT_EQ(s.exit_code, 10) << s.out << s.err;
+    EXPECT_NE(s.out.find("new.cert not created"), std::string::npos) << s.out;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/new.cert"));
+  }
 }
 
 TEST(CollideCommand, BadInput) {

@@ -242,6 +242,14 @@ void write_text_files(const std::vector<std::pair<std::string, std::string>>& fi
     if (path == "-") std::cout << text;
 }
 
+std::string certificate_not_written(const std::string& path, bool yes) {
+  std::error_code ec;
+  const bool there = path != "-" && std::filesystem::exists(path, ec);
+  return std::string("no certificate written: ") +
+         (yes ? "only a NO has one (the witness of this YES is on the 'v' lines)" : "no answer") + "; " + path +
+         (there ? " is left as it was (not this answer's)" : " not created");
+}
+
 void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs) {
   if (out == "-") return;
   for (const auto& in : inputs) {

@@ -74,6 +74,12 @@ void write_text_files(const std::vector<std::pair<std::string, std::string>>& fi
 // through links). "-" never conflicts. Call it before reading the inputs.
 void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs);
 
+// --certificate PATH on an answer that has no certificate (yes: a YES,
+// whose witness is on the 'v' lines; else an UNKNOWN): the comment that
+// says so and that PATH was left as it was, so a file already there is not
+// taken for this answer's certificate.
+std::string certificate_not_written(const std::string& path, bool yes);
+
 // Inputs are sacred (docs/errors.md). parse_args calls guard_paths on every
 // command line: each file named by an input option (instance, formula, file,
 // inputs, times, order-file, schedule, model) is protected

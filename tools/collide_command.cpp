@@ -150,6 +150,7 @@ int run_collide(const std::vector<std::string>& args) {
   } catch (const LimitReached&) {
     line.clear();
     ans.comment("limit reached before an answer (--timeout " + vm["timeout"].as<std::string>() + ")");
+    if (vm.count("certificate")) ans.comment(cli::certificate_not_written(vm["certificate"].as<std::string>(), false));
     ans.data()["model"] = model_name;
     return ans.finish(Verdict::Unknown);
   }
@@ -175,6 +176,7 @@ int run_collide(const std::vector<std::string>& args) {
       write_no_certificate(ans, inst, model, vm["certificate"].as<std::string>(), seconds > 0 ? &deadline : nullptr);
     return ans.finish(Verdict::No);
   }
+  if (vm.count("certificate")) ans.comment(cli::certificate_not_written(vm["certificate"].as<std::string>(), true));
   return report_collision(ans, inst, res, model, vm);
 }
 

@@ -80,6 +80,7 @@ int run_continuous(const std::string& path, const Instance& inst, const SolveOpt
   if (r.status == Verdict::Yes) ans.comment("start times checked by the simulator: collision-free");
   if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
   if (r.status == Verdict::No) write_certificate(ans, cert_path, cc.certificate, cc.why_none);
+  else if (!cert_path.empty()) ans.comment(cli::certificate_not_written(cert_path, r.status == Verdict::Yes));
   if (r.status == Verdict::Yes)
     for (CouplingId q = 0; q < inst.couplings().size(); ++q)
       ans.witness(inst.couplings()[q].name + " " + r.schedule.start[q].str());
@@ -124,6 +125,7 @@ int run_discrete(const std::string& path, const Instance& inst, const SolveOptio
   if (r.status == Verdict::Yes) ans.comment("order checked by the simulator: collision-free");
   if (r.status == Verdict::Unknown) ans.comment("limit reached before an answer");
   if (r.status == Verdict::No) write_certificate(ans, cert_path, cs.certificate, cs.why_none);
+  else if (!cert_path.empty()) ans.comment(cli::certificate_not_written(cert_path, r.status == Verdict::Yes));
   for (CouplingId q : r.order) ans.witness(inst.couplings()[q].name);
   nlohmann::json& d = ans.data();
   d["engine"] = st.engine;
