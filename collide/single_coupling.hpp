@@ -85,14 +85,14 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 // as next to both (docs/collide.md, "One coupling, one axis": the proof).
 // So one sort per row and the exact test on those neighbours decide what
 // single_coupling_sweep decides (whether some pair overlaps; the pair may
-// differ), in O(n log n) whatever the motion; on a YES the answer also
+// differ), in O(n log n) whatever the motion. On a YES the answer also
 // names the first collision (`first`, `during`), the simulator's: every
 // pair that overlaps right after the first moment is in one group, so the
-// earliest group pair, the smallest on ties, is the simulator's pair. nullopt when the operations
-// use both axes, or when some region's width is not positive all along
-// (0, 1), which happens only when the coupling breaks a cycle (the face
-// test's case, which find_collision settles first). tests (optional): the
-// exact pair tests made.
+// earliest group pair, the smallest on ties, is the simulator's pair.
+// nullopt when the operations use both axes, or when some region's width
+// is not positive all along (0, 1), which happens only when the coupling
+// breaks a cycle (the face test's case, which find_collision settles
+// first). tests (optional): the exact pair tests made.
 std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
                                                              const Regions& regions, uint64_t* tests = nullptr);
 
