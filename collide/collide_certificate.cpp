@@ -153,7 +153,8 @@ std::string header(const Instance& inst) {
 
 }  // namespace
 
-CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* deadline, bool partial) {
+CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* deadline, bool partial,
+                                          const std::function<void(uint64_t, uint64_t)>& on_source) {
   CollideCertificate out;
   const FaceNets faces = FaceNets::build(inst);
   if (std::ranges::any_of(faces.coupling_breaks_cycle, [](char b) { return b != 0; })) {
@@ -174,7 +175,7 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
   };
   PairwiseStats stats;
   if (auto hit = pairwise_collision(inst, tree, regions, TimeModel::Continuous, &stats, deadline,
-                                    ZonotopeTest::Incremental, {}, on_apart)) {
+                                    ZonotopeTest::Incremental, on_source, on_apart)) {
     out.pairs = stats.pairs;
     out.why_none = region_label(inst, regions, hit->a) + " and " + region_label(inst, regions, hit->b) +
                    " can collide in continuous time";
@@ -182,6 +183,7 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
     if (partial) out.text = header(inst) + body;
     return out;
   }
+  if (on_source) on_source(inst.num_nodes(), inst.num_nodes());
   out.pairs = stats.pairs;
   out.text = header(inst) + body;
   return out;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "common/limits.hpp"
@@ -38,8 +39,11 @@ struct CollideCertificate {
 // deadline as in find_collision (LimitReached).
 // partial (for tests): when a pair can overlap, text still holds the lines
 // of the pairs found apart before it (a certificate the checker refuses,
-// whose lines it checks one by one).
+// whose lines it checks one by one). on_source (optional): (source nodes
+// done, total) of the traversal before each source node, and (total,
+// total) when a certificate is complete.
 CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* deadline = nullptr,
-                                          bool partial = false);
+                                          bool partial = false,
+                                          const std::function<void(uint64_t, uint64_t)>& on_source = {});
 
 }  // namespace gridlock

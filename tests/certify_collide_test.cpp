@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "certify/certify.hpp"
@@ -211,6 +212,35 @@ TEST(CertifyCollide, EveryNoCertifiedAndMutationsRefused) {
             << " YES refused foreign certificates\n";
   EXPECT_GT(n.no, test::scaled(1000));
   EXPECT_GT(n.with_lines, test::scaled(50));
+}
+
+// Progress: the writer reports its traversal's source nodes (growing, the
+// last with done == total), and a listener changes nothing in the text.
+TEST(CertifyCollide, WriterReportsProgress) {
+  std::string grid = "p grid 40 39 20 1\n";
+  for (int x = 0; x < 40; ++x) grid += "n " + std::to_string(x) + " 0\n";
+  for (int x = 0; x + 1 < 40; ++x) grid += "e " + std::to_string(x) + " 0 " + std::to_string(x + 1) + " 0\n";
+  std::string q = "q all";
+  for (int x = 0; x < 40; x += 2) {
+    grid += "o e" + std::to_string(x) + " expand " + std::to_string(x) + " 0 +x\n";
+    q += " e" + std::to_string(x);
+  }
+  const Instance inst = test::parse_instance(grid + q + "\n");
+  std::vector<std::pair<uint64_t, uint64_t>> seen;
+  const CollideCertificate cert = collide_no_certificate(
+      inst, nullptr, false, [&](uint64_t done, uint64_t total) { seen.emplace_back(done, total); });
+  ASSERT_FALSE(cert.text.empty()) << cert.why_none;
+  EXPECT_EQ(cert.text, collide_no_certificate(inst).text);
+  ASSERT_GE(seen.size(), 2u);
+  for (size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].second, inst.num_nodes());
+    EXPECT_LE(seen[i].first, seen[i].second);
+    if (i > 0) {
+      EXPECT_GE(seen[i].first, seen[i - 1].first);
+    }
+  }
+  EXPECT_EQ(seen.back().first, seen.back().second);
+  EXPECT_TRUE(certify(inst, cert.text, "continuous").proved);
 }
 
 // YES instances: the lines written for the pairs found apart before the

@@ -3,6 +3,7 @@
 
 #include "collide/collide.hpp"
 #include "collide/collide_certificate.hpp"
+#include "common/clock.hpp"
 #include "common/limits.hpp"
 #include "lattice/simulate.hpp"
 #include "tools/cli_common.hpp"
@@ -51,9 +52,18 @@ CollideMethod method_arg(const std::string& name) {
 void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, const std::string& cert_path,
                           const Deadline* deadline) {
   CollideCertificate cert;
+  // The certificate covers every pair (O(n^2)), even when the answer came
+  // in O(n log n): a terminal sees how far it is.
+  cli::ProgressLine line(!ans.json());
+  const Stopwatch since;
+  auto on_source = [&](uint64_t done, uint64_t total) {
+    line.show(cli::collide_progress_text(CollideProgress{"certificate", done, total, since.seconds()}));
+  };
   try {
-    cert = collide_no_certificate(inst, deadline);
+    cert = collide_no_certificate(inst, deadline, false, on_source);
+    line.clear();
   } catch (const LimitReached&) {
+    line.clear();
     ans.comment("no certificate: limit reached while writing it");
     return;
   }
