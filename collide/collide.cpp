@@ -171,10 +171,41 @@ CollideResult finish_discrete(CollideResult& res, Simulator& sim, const Instance
   return finish_with(res, sim, schedule_from_order(order_starting_with(inst, first)));
 }
 
+// The continuous pair tests that decide an instance with couplings under
+// Auto: on one axis only the group pairs (one_axis_group_pairs, O(n) pairs,
+// O(n sqrt n) steps of the ends), else every pair (continuous_pairs). Sets
+// res's algorithm and complexity.
+std::optional<PairCollision> continuous_decider(const Instance& inst, Simulator& sim, CollideResult& res,
+                                                const Deadline* deadline, Reporter& progress) {
+  PairwiseStats ps;
+  std::optional<PairCollision> pc;
+  if (auto groups = one_axis_group_pairs(inst, sim.regions())) {
+    res.algorithm = "one-axis-groups";
+    res.complexity = "O(n log n + n sqrt n) (one axis: O(n) group pairs, ends walked in Mo's order)";
+    pc = listed_pairs_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, *groups, &ps, deadline);
+  } else {
+    const ContinuousPairs cp = continuous_pairs(inst);
+    res.algorithm = cp.algorithm;
+    res.complexity = cp.complexity;
+    pc = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, &ps, deadline, cp.ztest,
+                            progress.step(res.algorithm));
+    if (!pc) progress.report(res.algorithm, inst.num_nodes(), inst.num_nodes());
+  }
+  add_pair_stats(res, ps);
+  return pc;
+}
+
 // Steps 4/5, couplings: all pairs, exact per-pair tests in the model's
-// sense (the continuous tests, or the discrete subset sums).
-CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideResult& res,
-                            const Deadline* deadline, Reporter& progress) {
+// sense (the continuous tests, or the discrete subset sums); continuous
+// under Auto, continuous_decider.
+CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel model, CollideMethod method,
+                            CollideResult& res, const Deadline* deadline, Reporter& progress) {
+  if (model == TimeModel::Continuous && method == CollideMethod::Auto) {
+    auto pc = continuous_decider(inst, sim, res, deadline, progress);
+    if (!pc) return res;
+    res.region_a = pc->a, res.region_b = pc->b;
+    return finish_with(res, sim, schedule_reaching(inst.couplings().size(), pc->witness.progress));
+  }
   PairwiseStats ps;
   const ContinuousPairs cp = continuous_pairs(inst);
   if (model == TimeModel::Continuous) {
@@ -208,19 +239,12 @@ CollideResult pairwise_step(const Instance& inst, Simulator& sim, TimeModel mode
 // wrong on this instance, and collide_no_certificate says so.
 CollideResult discrete_by_continuous_step(const Instance& inst, Simulator& sim, CollideResult& res,
                                           const Deadline* deadline, Reporter& progress) {
-  const ContinuousPairs cp = continuous_pairs(inst);
-  res.algorithm = cp.algorithm;
-  res.complexity = std::string(cp.complexity) + "; the discrete answer is the continuous one (the models agree)";
-  PairwiseStats ps;
-  auto pc = pairwise_collision(inst, sim.tree(), sim.regions(), TimeModel::Continuous, &ps, deadline, cp.ztest,
-                               progress.step(res.algorithm));
-  add_pair_stats(res, ps);
-  if (!pc) {
-    progress.report(res.algorithm, inst.num_nodes(), inst.num_nodes());
-    return res;
-  }
+  auto pc = continuous_decider(inst, sim, res, deadline, progress);
+  const std::string decided_in = res.complexity;
+  res.complexity += "; the discrete answer is the continuous one (the models agree)";
+  if (!pc) return res;
   res.algorithm += "+subset-sum";
-  res.complexity = std::string(cp.complexity) +
+  res.complexity = decided_in +
                    ", then the discrete witness by subset sums from the pair's nodes: O(n (c^2 A + c L^2))";
   const std::vector<uint32_t> around{pc->a, pc->b};
   PairwiseStats ws;
@@ -317,7 +341,7 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   // continuous tests decide, the subset sums give the witness).
   if (model == TimeModel::Discrete && method == CollideMethod::Auto)
     return discrete_by_continuous_step(inst, sim, res, deadline, progress);
-  return pairwise_step(inst, sim, model, res, deadline, progress);
+  return pairwise_step(inst, sim, model, method, res, deadline, progress);
 }
 
 }  // namespace gridlock

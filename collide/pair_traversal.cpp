@@ -3,6 +3,8 @@
 // in the continuous model, their zonotope's supports or angle tree), with
 // every pair of regions met tested.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <optional>
@@ -291,6 +293,70 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
     }
   }
   st.line_purges = path.purges;
+  if (stats) *stats = st;
+  return found;
+}
+
+std::optional<PairCollision> listed_pairs_collision(const Instance& inst, const SpanningTree& tree,
+                                                    const Regions& regions, TimeModel model,
+                                                    const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                                                    PairwiseStats* stats, const Deadline* deadline) {
+  const size_t n = inst.num_nodes();
+  const std::vector<RegionForm> forms = region_forms(inst, regions);
+  // Per node: depth, the coupling and vector of the edge from its parent
+  // (X(w) - X(parent) per coupling), and its place in the Euler walk of
+  // the tree (2 tin - depth: every earlier node is entered and left, every
+  // ancestor only entered), which bounds the tree distance between nodes.
+  std::vector<uint32_t> depth(n, 0);
+  std::vector<CouplingId> up_q(n, kNone);
+  std::vector<Vec2> down(n, Vec2{0, 0});
+  for (NodeId w : tree.order) {
+    if (tree.parent[w] == kNone) continue;
+    depth[w] = depth[tree.parent[w]] + 1;
+    if (tree.parent_op[w] == kNone) continue;
+    up_q[w] = inst.ops()[tree.parent_op[w]].coupling;
+    down[w] = op_child_vector(inst, tree, w);
+  }
+  auto euler = [&](NodeId w) { return 2 * static_cast<uint64_t>(tree.tin[w]) - depth[w]; };
+  // Mo's order: by block of the first end's place, then by the second's
+  // (alternating), so the ends move O(n sqrt(P)) edges in all.
+  const uint64_t block = std::max<uint64_t>(
+      1, static_cast<uint64_t>(2.0 * static_cast<double>(n) /
+                               std::sqrt(static_cast<double>(std::max<size_t>(1, pairs.size())))));
+  std::vector<uint32_t> idx(pairs.size());
+  for (uint32_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  auto mo_key = [&](uint32_t i) {
+    const uint64_t b = euler(forms[pairs[i].first].ref) / block, e = euler(forms[pairs[i].second].ref);
+    return std::array<uint64_t, 3>{b, b % 2 == 0 ? e : ~e, i};
+  };
+  std::sort(idx.begin(), idx.end(), [&](uint32_t x, uint32_t y) { return mo_key(x) < mo_key(y); });
+
+  PathNetTracker path(inst.couplings().size());
+  path.supports = model == TimeModel::Continuous;
+  uint64_t steps = 0;
+  // The path's nets are X(b) - X(a) per coupling: moving end b one edge
+  // adds that edge's change of X, moving end a subtracts it.
+  auto step = [&](NodeId child, int sign) {  // an end crosses the edge child - parent; sign: +1 down, -1 up, for b
+    if (deadline && (++steps & 4095) == 0) deadline->check();
+    if (up_q[child] != kNone) path.apply(up_q[child], Vec2{sign * down[child].x, sign * down[child].y});
+  };
+  auto move = [&](NodeId& end, NodeId target, int side) {  // side: +1 for end b, -1 for end a
+    NodeId x = end, y = target;
+    while (depth[x] > depth[y]) step(x, -side), x = tree.parent[x];
+    while (depth[y] > depth[x]) step(y, side), y = tree.parent[y];
+    while (x != y) step(x, -side), x = tree.parent[x], step(y, side), y = tree.parent[y];
+    end = target;
+  };
+  PairwiseStats st;
+  std::optional<PairCollision> found;
+  NodeId end_a = tree.root, end_b = tree.root;
+  for (uint32_t i : idx) {
+    const auto [a, b] = pairs[i];
+    move(end_a, forms[a].ref, -1);
+    move(end_b, forms[b].ref, +1);
+    found = test_pair(forms, a, b, path, model, ZonotopeTest::Incremental, st, {});
+    if (found) break;
+  }
   if (stats) *stats = st;
   return found;
 }

@@ -82,7 +82,7 @@ TEST(CollideCommand, DiscreteAnswerFromTheContinuousTests) {
   const std::string yes = kExamples + "tiny-sat.grid";
   auto r = run_gridlock({"collide", yes, "--model", "discrete"});
   ASSERT_EQ(r.exit_code, 10) << r.err;
-  EXPECT_NE(r.out.find("c algorithm: pairwise-zonotope+subset-sum"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("c algorithm: one-axis-groups+subset-sum"), std::string::npos) << r.out;
   test::write_file(dir + "/w", r.out);
   auto c = run_gridlock({"check", yes, "--order-file", dir + "/w"});
   EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
@@ -97,7 +97,7 @@ TEST(CollideCommand, DiscreteAnswerFromTheContinuousTests) {
                    "o a expand 0 0 +x\no b expand 2 0 +x\no c expand 4 0 +x\nq P a b\nq Q c\n");
   auto n = run_gridlock({"collide", dir + "/row.grid", "--model", "discrete", "--certificate", dir + "/no.cert"});
   ASSERT_EQ(n.exit_code, 20) << n.out << n.err;
-  EXPECT_NE(n.out.find("c algorithm: pairwise-zonotope ("), std::string::npos) << n.out;
+  EXPECT_NE(n.out.find("c algorithm: one-axis-groups ("), std::string::npos) << n.out;
   EXPECT_NE(n.out.find("the discrete answer is the continuous one"), std::string::npos) << n.out;
   auto np = run_gridlock({"collide", dir + "/row.grid", "--model", "discrete", "--method", "pairwise"});
   EXPECT_EQ(np.exit_code, 20) << np.out << np.err;

@@ -17,6 +17,7 @@
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
 #include "lattice/simulate.hpp"
+#include "support/instance_io.hpp"
 #include "support/reference_collide.hpp"
 #include "support/test_scale.hpp"
 
@@ -24,35 +25,8 @@ namespace gridlock {
 namespace {
 
 // The same shape and operations with every operation in one coupling "Q";
-// with `transpose`, x and y swapped (cells and directions): a horizontal-only
-// instance becomes a vertical-only one.
-Instance one_coupling(const Instance& inst, bool transpose = false) {
-  auto cell = [&](NodeId w) {
-    const Vec2 c = inst.cells()[w];
-    return transpose ? Vec2{c.y, c.x} : c;
-  };
-  auto dir = [&](Dir d) {
-    if (!transpose) return d;
-    return d == Dir::PosX ? Dir::PosY : d == Dir::PosY ? Dir::PosX : d == Dir::NegX ? Dir::NegY : Dir::NegX;
-  };
-  InstanceBuilder b;
-  for (NodeId w = 0; w < inst.num_nodes(); ++w) EXPECT_FALSE(b.add_node(cell(w)));
-  for (const Edge& e : inst.edges()) EXPECT_FALSE(b.add_edge(cell(e.a), cell(e.b)));
-  std::vector<std::string> names;
-  for (const Operation& op : inst.ops()) {
-    EXPECT_FALSE(b.add_op(op.name, op.kind, cell(op.u), dir(op.dir)));
-    names.push_back(op.name);
-  }
-  if (!names.empty()) {
-    EXPECT_FALSE(b.add_coupling("Q", names));
-  }
-  if (inst.has_explicit_anchor()) {
-    EXPECT_FALSE(b.set_anchor(cell(inst.anchor())));
-  }
-  Instance out;
-  EXPECT_FALSE(b.finish(out));
-  return out;
-}
+// with `transpose`, x and y swapped.
+Instance one_coupling(const Instance& inst, bool transpose = false) { return test::rebuilt(inst, transpose, true); }
 
 RandomInstanceParams single_params(Rng& rng) {
   RandomInstanceParams p;

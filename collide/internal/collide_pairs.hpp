@@ -163,4 +163,32 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
                                                 const ApartFn& on_apart = {},
                                                 const std::vector<uint32_t>* around = nullptr);
 
+// The pair tests on a given list of region pairs only: the path's nets
+// between ref(a) and ref(b) are kept by walking the two ends over the tree
+// (moving an end one edge changes each coupling's net by that edge's
+// vector, whether the path grows or shrinks), the pairs taken in Mo's
+// order on the ends' Euler-walk positions: O(n sqrt(P)) end moves for P
+// pairs, plus one exact test per pair. The continuous model uses the
+// support table (ZonotopeTest::Incremental), the discrete one the subset
+// sums. First meeting pair in that order, with its witness, or nullopt.
+// Requires that no coupling breaks a cycle; deadline as pairwise_collision.
+std::optional<PairCollision> listed_pairs_collision(const Instance& inst, const SpanningTree& tree,
+                                                    const Regions& regions, TimeModel model,
+                                                    const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                                                    PairwiseStats* stats = nullptr, const Deadline* deadline = nullptr);
+
+// One axis, any couplings (docs/collide.md, "One axis, any couplings"):
+// when every operation moves along x (or every one along y) and no
+// coupling breaks a cycle, some schedule collides iff one of these pairs
+// can overlap. A unit region (a node whose width never changes) keeps its
+// place among the units of its row; every other region stays between the
+// two units around it at p = 0 (it is attached to one of their faces)
+// until the first collision, which is therefore inside one group: two
+// consecutive units of a row and the regions between them. The pairs of
+// every group, O(n) of them (a group holds two units and at most the
+// regions of their two operations); nullopt when the operations use both
+// axes. O(n log n).
+std::optional<std::vector<std::pair<uint32_t, uint32_t>>> one_axis_group_pairs(const Instance& inst,
+                                                                               const Regions& regions);
+
 }  // namespace gridlock

@@ -1,11 +1,14 @@
-// Reading instances in tests: from a string, or from examples/instances/.
-// A reader error fails the current test (EXPECT) and returns what was read.
+// Reading instances in tests: from a string, or from examples/instances/;
+// and rebuilding one with x and y swapped or every operation in one
+// coupling. A reader or builder error fails the current test (EXPECT) and
+// returns what was read or built.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "lattice/grid_format.hpp"
 
@@ -24,6 +27,45 @@ inline Instance load_example(const std::string& name) {
   auto err = read_instance_file(std::string(GRIDLOCK_SOURCE_DIR) + "/examples/instances/" + name, inst);
   EXPECT_FALSE(err) << err->str();
   return inst;
+}
+
+// The same shape and operations; with `transpose`, x and y swapped (cells
+// and directions: a horizontal-only instance becomes a vertical-only one);
+// with `one_coupling`, every operation in one coupling "Q", else the
+// instance's couplings.
+inline Instance rebuilt(const Instance& inst, bool transpose, bool one_coupling) {
+  auto cell = [&](NodeId w) {
+    const Vec2 c = inst.cells()[w];
+    return transpose ? Vec2{c.y, c.x} : c;
+  };
+  auto dir = [&](Dir d) {
+    if (!transpose) return d;
+    return d == Dir::PosX ? Dir::PosY : d == Dir::PosY ? Dir::PosX : d == Dir::NegX ? Dir::NegY : Dir::NegX;
+  };
+  InstanceBuilder b;
+  for (NodeId w = 0; w < inst.num_nodes(); ++w) EXPECT_FALSE(b.add_node(cell(w)));
+  for (const Edge& e : inst.edges()) EXPECT_FALSE(b.add_edge(cell(e.a), cell(e.b)));
+  std::vector<std::string> all;
+  for (const Operation& op : inst.ops()) {
+    EXPECT_FALSE(b.add_op(op.name, op.kind, cell(op.u), dir(op.dir)));
+    all.push_back(op.name);
+  }
+  if (one_coupling && !all.empty()) {
+    EXPECT_FALSE(b.add_coupling("Q", all));
+  }
+  if (!one_coupling)
+    for (const Coupling& c : inst.couplings()) {
+      if (c.ops.size() < 2) continue;  // singletons are implicit
+      std::vector<std::string> names;
+      for (OpId k : c.ops) names.push_back(inst.ops()[k].name);
+      EXPECT_FALSE(b.add_coupling(c.name, names));
+    }
+  if (inst.has_explicit_anchor()) {
+    EXPECT_FALSE(b.set_anchor(cell(inst.anchor())));
+  }
+  Instance out;
+  EXPECT_FALSE(b.finish(out));
+  return out;
 }
 
 }  // namespace gridlock::test
