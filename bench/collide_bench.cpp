@@ -182,6 +182,27 @@ void BM_HookSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::hook((state.range(0) - 3) / 2));
 }
 
+// One axis, couplings of 3 (NO: expansions only push apart). range(1): 0
+// a row of n nodes, 1 a square comb (spine and teeth of about sqrt(n)
+// nodes), whose row neighbours are 2h + 1 tree edges apart at height h;
+// n / 4 expansions on the spine (+x). range(2): 0 Auto (the group pairs,
+// ends walked in Mo's order), 1 Pairwise (every pair: what Auto ran before).
+void BM_OneAxisCouplings(benchmark::State& state) {
+  const int64_t n = state.range(0);
+  const int64_t side = std::llround(std::sqrt(static_cast<double>(n)));
+  const Instance inst = state.range(1) == 0 ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
+                                            : bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7);
+  CollideResult r;
+  for (auto _ : state)
+    r = find_collision(inst, TimeModel::Continuous,
+                       state.range(2) == 0 ? CollideMethod::Auto : CollideMethod::Pairwise);
+  state.SetLabel(r.algorithm);
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = r.collides;
+  state.counters["pairs"] = static_cast<double>(r.stats.pairs);
+  state.counters["full_tests"] = static_cast<double>(r.stats.full_tests);
+}
+
 // The diagonal sweep (collide/adversarial.hpp): quadratic candidate pairs
 // for the simulator, total motion O(n^{3/2}).
 void BM_DiagonalSingleCoupling(benchmark::State& state) {
@@ -288,6 +309,8 @@ BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}}
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099, 16387}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099}, {2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096, 16384}, {0, 1}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096}, {0, 1}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
@@ -383,6 +406,17 @@ void register_large_one_axis() {
   for (int64_t n : {65539, 262147, 1048579})  // a YES named and checked at one moment
     benchmark::RegisterBenchmark("BM_HookSingleCoupling", BM_HookSingleCoupling)
         ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {65536, 262144, 1048576})  // one axis, couplings of 3: the group pairs
+    for (int64_t family : {0, 1})
+      benchmark::RegisterBenchmark("BM_OneAxisCouplings", BM_OneAxisCouplings)
+          ->Args({n, family, 0})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t family : {0, 1})  // every pair: about a minute at 16 384
+    benchmark::RegisterBenchmark("BM_OneAxisCouplings", BM_OneAxisCouplings)
+        ->Args({16384, family, 1})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   for (int64_t n : {16387, 65539})  // the simulation that confirmed it before: minutes at 65 539
