@@ -45,7 +45,7 @@ std::vector<std::pair<uint32_t, uint32_t>> every_pair(size_t regions) {
 TEST(OneAxisGroups, AgreeWithEveryPairAndTheBruteForce) {
   const uint64_t seed0 = test::base_seed(29000);
   const int cases = test::scaled(3000);
-  int decided = 0, yes = 0, vertical = 0, mixed = 0, cycles = 0, brute = 0;
+  int decided = 0, yes = 0, vertical = 0, mixed = 0, cycles = 0, brute = 0, by_auto = 0;
   uint64_t group_pairs = 0, regions = 0, all_pairs = 0;
   for (int i = 0; i < cases; ++i) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
@@ -92,9 +92,15 @@ TEST(OneAxisGroups, AgreeWithEveryPairAndTheBruteForce) {
               all_discrete)
         << where;
     // The whole answer, both models, against the all-pairs method.
-    if (inst.couplings().size() > 1 || !inst.couplings().empty()) {
+    bool any_coupling = false;  // then Auto takes the group pairs (one coupling: the single-coupling step)
+    for (const Coupling& cp : inst.couplings()) any_coupling |= cp.ops.size() > 1;
+    if (!inst.ops().empty()) {
       for (TimeModel model : {TimeModel::Continuous, TimeModel::Discrete}) {
         const CollideResult a = find_collision(inst, model);
+        if (any_coupling && inst.couplings().size() > 1) {
+          ASSERT_EQ(a.algorithm.rfind("one-axis-groups", 0), 0u) << where << ": " << a.algorithm;
+          ++by_auto;
+        }
         const CollideResult b = find_collision(inst, model, CollideMethod::Pairwise);
         ASSERT_EQ(a.collides, all) << where;
         ASSERT_EQ(b.collides, all) << where;
@@ -109,9 +115,9 @@ TEST(OneAxisGroups, AgreeWithEveryPairAndTheBruteForce) {
     group_pairs += groups->size(), regions += R, all_pairs += everything.size();
   }
   std::cout << "[ info ] one axis, any couplings: " << decided << " instances (" << yes << " collide, " << vertical
-            << " vertical, " << brute << " against the brute force), " << mixed << " on both axes, " << cycles
-            << " breaking a cycle; " << group_pairs << " group pairs for " << regions << " regions (all pairs "
-            << all_pairs << ")\n";
+            << " vertical, " << brute << " against the brute force, " << by_auto << " answers of Auto by the groups), "
+            << mixed << " on both axes, " << cycles << " breaking a cycle; " << group_pairs << " group pairs for "
+            << regions << " regions (all pairs " << all_pairs << ")\n";
   EXPECT_GT(yes, cases / 10);
   EXPECT_GT(decided - yes, cases / 10);
   EXPECT_GT(vertical, cases / 5);
