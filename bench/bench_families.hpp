@@ -13,7 +13,8 @@
 // along y = 1 joined to it at x = 0, whose end comes down to (L + 1, 0):
 // the row's end, pushed at speed floor(L / 2) (one unit per expansion), enters
 // the free cell (L, 0) and meets the static node (n = 2 L + 3, one axis,
-// YES at the first moment 1 / (number of expansions)).
+// YES at the first moment 1 / (number of expansions)). group > 0 couples
+// consecutive expansions into couplings of `group` instead (still YES).
 //
 // separation_chain: n separation gadgets in a row, the shape of the
 // continuous reduction's contract t_b >= t_a + 1. Gadget i (x0 = 3i): a
@@ -27,6 +28,7 @@
 // from (0,-1)), so couplings have 3 operations as in compiled formulas.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -79,7 +81,7 @@ inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t gro
   return inst;
 }
 
-inline Instance hook(int64_t L) {
+inline Instance hook(int64_t L, int64_t group = 0) {
   InstanceBuilder b;
   for (int64_t x = 0; x < L; ++x) b.add_node({x, 0});
   for (int64_t x = 0; x < L + 2; ++x) b.add_node({x, 1});
@@ -93,7 +95,16 @@ inline Instance hook(int64_t L) {
     names.push_back("e" + std::to_string(x));
     b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX);
   }
-  b.add_coupling("all", names);
+  if (group == 0) {
+    b.add_coupling("all", names);
+  } else {
+    for (size_t i = 0; i < names.size(); i += static_cast<size_t>(group)) {
+      const size_t end = std::min(names.size(), i + static_cast<size_t>(group));
+      if (end - i > 1)
+        b.add_coupling("Q" + std::to_string(i),
+                       {names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(end)});
+    }
+  }
   Instance inst;
   if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
   return inst;

@@ -187,11 +187,13 @@ void BM_HookSingleCoupling(benchmark::State& state) {
 // nodes), whose row neighbours are 2h + 1 tree edges apart at height h;
 // n / 4 expansions on the spine (+x). range(2): 0 Auto (the group pairs,
 // ends walked in Mo's order), 1 Pairwise (every pair: what Auto ran before).
+// Family 2: the hook (bench_families.hpp) with couplings of 3, a YES.
 void BM_OneAxisCouplings(benchmark::State& state) {
   const int64_t n = state.range(0);
   const int64_t side = std::llround(std::sqrt(static_cast<double>(n)));
-  const Instance inst = state.range(1) == 0 ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
-                                            : bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7);
+  const Instance inst = state.range(1) == 0   ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
+                        : state.range(1) == 1 ? bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7)
+                                              : bench::hook((n - 3) / 2, 3);
   CollideResult r;
   for (auto _ : state)
     r = find_collision(inst, TimeModel::Continuous,
@@ -309,8 +311,8 @@ BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}}
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099, 16387}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099}, {2}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096, 16384}, {0, 1}, {0}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096}, {0, 1}, {1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096, 16384}, {0, 1, 2}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096}, {0, 1, 2}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
@@ -409,12 +411,12 @@ void register_large_one_axis() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   for (int64_t n : {65536, 262144, 1048576})  // one axis, couplings of 3: the group pairs
-    for (int64_t family : {0, 1})
+    for (int64_t family : {0, 1, 2})
       benchmark::RegisterBenchmark("BM_OneAxisCouplings", BM_OneAxisCouplings)
           ->Args({n, family, 0})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
-  for (int64_t family : {0, 1})  // every pair: about a minute at 16 384
+  for (int64_t family : {0, 1, 2})  // every pair: up to a minute at 16 384
     benchmark::RegisterBenchmark("BM_OneAxisCouplings", BM_OneAxisCouplings)
         ->Args({16384, family, 1})
         ->Iterations(1)
