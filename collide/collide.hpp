@@ -9,15 +9,19 @@
 //   3. no couplings (all singletons): centroid decomposition and a red-blue
 //      rectangle sweep over full-width squares (both models)        O(n log^2 n)
 //   4. couplings, continuous: every pair of regions against the zonotope of
-//      the coupling vectors on its path, own widths by Fourier-Motzkin
+//      the coupling vectors on its path, own widths by Fourier-Motzkin; when
+//      every operation is on one axis only the O(n) pairs of one row group
+//      (proven), their paths walked in Mo's order       O(n log n + n sqrt n)
 //   5. couplings, discrete: the answer is the continuous one (proven:
 //      docs/collide.md, "the models agree"), so step 4 decides it; after a
 //      YES, subset sums over the path's vectors find the discrete witness
 //      from the nodes the continuous pair's faces follow. (Pairwise: every pair by
 //      subset sums, the discrete decider on its own.)
 // Every YES comes with a schedule that the exact Simulator has run and seen
-// collide; if the simulator disagrees, find_collision throws
-// std::logic_error (a bug, never a silent wrong answer).
+// collide (for one coupling on one axis: whose named pair overlaps in the
+// simulator's configuration at checked_at); if the simulator disagrees,
+// find_collision throws std::logic_error (a bug, never a silent wrong
+// answer).
 #pragma once
 
 #include <cstdint>
@@ -75,8 +79,8 @@ struct CollideResult {
   // (configuration_at: the pair overlaps) rather than by a full simulation.
   std::optional<Rational> checked_at;
   std::string algorithm;   // "cycle", "single-coupling", "single-coupling-one-axis", "no-operations",
-                           // "tree-centroid", "tree-pairwise", "pairwise-zonotope", "pairwise-angle-tree",
-                           // "pairwise-subset-sum"; discrete under Auto, a continuous name,
+                           // "tree-centroid", "tree-pairwise", "one-axis-groups", "pairwise-zonotope",
+                           // "pairwise-angle-tree", "pairwise-subset-sum"; discrete under Auto, a continuous name,
                            // with "+subset-sum" when it found the discrete witness
   std::string complexity;  // e.g. "O(n log^2 n)"
   CollideStats stats;
