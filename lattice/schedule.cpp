@@ -180,8 +180,17 @@ MaybeError read_times_file(const Instance& inst, const std::string& path, Schedu
         return std::nullopt;
       });
   if (err) return err;
-  for (CouplingId q = 0; q < line_of.size(); ++q)
-    if (!line_of[q]) return Diagnostic{shown, last, "no start time for coupling '" + inst.couplings()[q].name + "'"};
+  for (CouplingId q = 0; q < line_of.size(); ++q) {
+    if (line_of[q]) continue;
+    const std::string& c = inst.couplings()[q].name;
+    // A coupling named "c": "c 0.5" is a comment line (its time is not a
+    // time), which would otherwise be a silent puzzle.
+    return Diagnostic{shown, last,
+                      "no start time for coupling '" + c + "'" +
+                          (c == "c" ? " (a line 'c TIME' is its entry only with TIME an integer or a fraction a/b; "
+                                      "other 'c' lines are comments)"
+                                    : "")};
+  }
   return std::nullopt;
 }
 

@@ -252,6 +252,14 @@ TEST(ScheduleFiles, CouplingNamedCGetsItsTimeInTimesFiles) {
   err = read_times_file(other, schedule_file("c 0\ng 0\n"), s);
   ASSERT_TRUE(err);
   EXPECT_NE(err->str().find("no start time for coupling 'a'"), std::string::npos) << err->str();
+  EXPECT_EQ(err->str().find("other 'c' lines are comments"), std::string::npos) << err->str();
+  // "c 0.5" is no entry (0.5 is not a time), so it is a comment: the
+  // error for the missing time says how c's entry reads.
+  err = read_times_file(inst, schedule_file("c 0.5\ng 0\n"), s);
+  ASSERT_TRUE(err);
+  EXPECT_NE(err->str().find("no start time for coupling 'c' (a line 'c TIME' is its entry only with TIME an integer"),
+            std::string::npos)
+      << err->str();
 }
 
 }  // namespace
