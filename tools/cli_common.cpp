@@ -243,11 +243,15 @@ void write_text_files(const std::vector<std::pair<std::string, std::string>>& fi
 }
 
 std::string certificate_not_written(const std::string& path, bool yes) {
-  std::error_code ec;
-  const bool there = path != "-" && std::filesystem::exists(path, ec);
   return std::string("no certificate written: ") +
-         (yes ? "only a NO has one (the witness of this YES is on the 'v' lines)" : "no answer") + "; " + path +
-         (there ? " is left as it was (not this answer's)" : " not created");
+         (yes ? "only a NO has one (the witness of this YES is on the 'v' lines)" : "no answer") + "; " +
+         certificate_left(path);
+}
+
+std::string certificate_left(const std::string& path) {
+  if (path == "-") return "nothing printed";
+  std::error_code ec;
+  return path + (std::filesystem::exists(path, ec) ? " is left as it was (not this answer's)" : " not created");
 }
 
 void refuse_overwriting_input(const std::string& out, const std::vector<std::string>& inputs) {

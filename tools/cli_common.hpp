@@ -79,6 +79,10 @@ void refuse_overwriting_input(const std::string& out, const std::vector<std::str
 // says so and that PATH was left as it was, so a file already there is not
 // taken for this answer's certificate.
 std::string certificate_not_written(const std::string& path, bool yes);
+// "PATH is left as it was (not this answer's)", "PATH not created", or for
+// "-" "nothing printed": what became of PATH when no certificate was
+// written there.
+std::string certificate_left(const std::string& path);
 
 // Inputs are sacred (docs/errors.md). parse_args calls guard_paths on every
 // command line: each file named by an input option (instance, formula, file,

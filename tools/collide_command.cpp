@@ -64,7 +64,7 @@ void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, co
     line.clear();
   } catch (const LimitReached&) {
     line.clear();
-    ans.comment("no certificate: limit reached while writing it");
+    ans.comment("no certificate: limit reached while writing it; " + cli::certificate_left(cert_path));
     return;
   }
   if (cert.text.empty()) {

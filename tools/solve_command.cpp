@@ -36,7 +36,7 @@ nlohmann::json stats_json(const SolveStats& st) {
 void write_certificate(Answer& ans, const std::string& cert_path, const std::string& text, const std::string& why) {
   if (cert_path.empty()) return;
   if (text.empty()) {
-    ans.comment("no certificate written: " + why);
+    ans.comment("no certificate written: " + why + "; " + cli::certificate_left(cert_path));
     return;
   }
   cli::write_text_file(cert_path, text);
