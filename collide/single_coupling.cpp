@@ -4,8 +4,10 @@
 #include <array>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
+#include "collide/internal/row_groups.hpp"
 #include "common/int_math.hpp"
 
 namespace gridlock {
@@ -313,11 +315,10 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 
 std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
                                                              const Regions& regions, uint64_t* tests) {
-  bool along_x = true, along_y = true;
-  for (const Operation& o : inst.ops()) (is_horizontal(o.dir) ? along_y : along_x) = false;
-  if (!along_x && !along_y) return std::nullopt;
+  const std::optional<int> axis = moving_axis(inst);
+  if (!axis) return std::nullopt;
   const std::vector<Faces> faces = region_faces(inst, t, regions);
-  const size_t m = along_x ? 0 : 2, c = 2 - m;  // faces m, m + 1 move; c, c + 1 stay one unit apart
+  const size_t m = 2 * static_cast<size_t>(*axis), c = 2 - m;  // faces m, m + 1 move; c, c + 1 stay one unit apart
   for (const Faces& f : faces) {
     if (f[c].b != 0 || f[c + 1].b != 0 || f[c + 1].a - f[c].a != 1) return std::nullopt;  // never, on one axis
     // The proof needs every width positive on (0, 1): affine, so >= 0 at
@@ -326,50 +327,30 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
     const int64_t w0 = f[m + 1].a - f[m].a, w1 = w0 + f[m + 1].b - f[m].b;
     if (w0 < 0 || w1 < 0 || w0 + w1 == 0) return std::nullopt;
   }
-  // By row, then by position at t = 0: a region of width 0 at p comes
-  // after one ending at p and before one starting at p.
-  std::vector<uint32_t> order(faces.size());
-  for (uint32_t r = 0; r < order.size(); ++r) order[r] = r;
-  auto key = [&](uint32_t r) { return std::array<int64_t, 4>{faces[r][c].a, faces[r][m].a, faces[r][m + 1].a, r}; };
-  std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return key(x) < key(y); });
+  // By row, then by position at t = 0; the groups are cut at the regions of
+  // positive width at t = 0. Every pair of a group is tested, and the pair
+  // that starts overlapping first is kept, the smallest on ties, as the
+  // simulator does (the proof: every pair that overlaps right after the
+  // first moment is in one group).
+  const std::vector<std::pair<uint32_t, uint32_t>> pairs = row_group_pairs(
+      faces.size(),
+      [&](uint32_t r) {
+        return std::array<int64_t, 3>{faces[r][c].a, faces[r][m].a, faces[r][m + 1].a};
+      },
+      [&](uint32_t r) { return faces[r][m + 1].a > faces[r][m].a; });
   SingleCouplingAnswer ans;
-  uint64_t made = 0;
-  // The regions between two consecutive ones of positive width at t = 0,
-  // both included: every pair of them is tested, and the pair that starts
-  // overlapping first is kept, the smallest on ties, as the simulator does
-  // (the proof: every pair that overlaps right after the first moment is
-  // in one group).
-  std::vector<uint32_t> group;
+  const uint64_t made = pairs.size();
   Span first;
-  auto test_group = [&] {
-    for (size_t i = 0; i < group.size(); ++i)
-      for (size_t j = i + 1; j < group.size(); ++j) {
-        ++made;
-        const Span s = overlap_span(faces[group[i]], faces[group[j]]);
-        if (s.empty()) continue;
-        const RegionPair p{std::min(group[i], group[j]), std::max(group[i], group[j])};
-        if (ans.collides && (less(first.lo, s.lo) ||
-                             (!less(s.lo, first.lo) && std::pair(ans.pair->a, ans.pair->b) < std::pair(p.a, p.b))))
-          continue;
-        ans.collides = true;
-        ans.pair = p;
-        first = s;
-      }
-  };
-  for (size_t k = 0; k < order.size();) {
-    size_t e = k;
-    while (e < order.size() && faces[order[e]][c].a == faces[order[k]][c].a) ++e;
-    group.clear();
-    for (size_t i = k; i < e; ++i) {
-      const uint32_t r = order[i];
-      group.push_back(r);
-      if (faces[r][m + 1].a > faces[r][m].a) {  // positive width at t = 0: closes the group, opens the next
-        test_group();
-        group.assign(1, r);
-      }
-    }
-    test_group();
-    k = e;
+  for (const auto& [x, y] : pairs) {
+    const Span s = overlap_span(faces[x], faces[y]);
+    if (s.empty()) continue;
+    const RegionPair p{std::min(x, y), std::max(x, y)};
+    if (ans.collides &&
+        (less(first.lo, s.lo) || (!less(s.lo, first.lo) && std::pair(ans.pair->a, ans.pair->b) < std::pair(p.a, p.b))))
+      continue;
+    ans.collides = true;
+    ans.pair = p;
+    first = s;
   }
   if (tests) *tests = made;
   if (ans.collides) {
