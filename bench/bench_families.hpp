@@ -43,6 +43,22 @@ namespace gridlock::bench {
 
 enum class CombOps { Spine, Teeth, Mixed };
 
+// Couplings of the operations `names`: group 0 one coupling "all" of
+// them; group > 1 consecutive ones in couplings "Q<first index>" of
+// `group` (a last one left alone stays a singleton); group 1 none.
+inline void couple_consecutive(InstanceBuilder& b, const std::vector<std::string>& names, int64_t group) {
+  if (group == 0) {
+    b.add_coupling("all", names);
+    return;
+  }
+  if (group < 2) return;
+  for (size_t i = 0; i + 1 < names.size(); i += static_cast<size_t>(group)) {
+    const size_t end = std::min(names.size(), i + static_cast<size_t>(group));
+    std::vector<std::string> g(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(end));
+    if (g.size() > 1) b.add_coupling("Q" + std::to_string(i), g);
+  }
+}
+
 inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t group, uint64_t seed) {
   InstanceBuilder b;
   for (int64_t x = 0; x < L; ++x)
@@ -67,15 +83,7 @@ inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t gro
     b.add_op(name, OpKind::Expand, u, tooth ? Dir::PosY : Dir::PosX);
     names.push_back(name);
   }
-  if (group == 0) {
-    b.add_coupling("all", names);
-  } else if (group > 1) {
-    for (size_t i = 0; i + 1 < names.size(); i += static_cast<size_t>(group)) {
-      size_t end = std::min(names.size(), i + static_cast<size_t>(group));
-      std::vector<std::string> g(names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(end));
-      if (g.size() > 1) b.add_coupling("Q" + std::to_string(i), g);
-    }
-  }
+  couple_consecutive(b, names, group);
   Instance inst;
   if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
   return inst;
@@ -95,16 +103,7 @@ inline Instance hook(int64_t L, int64_t group = 0) {
     names.push_back("e" + std::to_string(x));
     b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX);
   }
-  if (group == 0) {
-    b.add_coupling("all", names);
-  } else {
-    for (size_t i = 0; i < names.size(); i += static_cast<size_t>(group)) {
-      const size_t end = std::min(names.size(), i + static_cast<size_t>(group));
-      if (end - i > 1)
-        b.add_coupling("Q" + std::to_string(i),
-                       {names.begin() + static_cast<long>(i), names.begin() + static_cast<long>(end)});
-    }
-  }
+  couple_consecutive(b, names, group);
   Instance inst;
   if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
   return inst;
