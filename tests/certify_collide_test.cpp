@@ -217,15 +217,7 @@ TEST(CertifyCollide, EveryNoCertifiedAndMutationsRefused) {
 // Progress: the writer reports its traversal's source nodes (growing, the
 // last with done == total), and a listener changes nothing in the text.
 TEST(CertifyCollide, WriterReportsProgress) {
-  std::string grid = "p grid 40 39 20 1\n";
-  for (int x = 0; x < 40; ++x) grid += "n " + std::to_string(x) + " 0\n";
-  for (int x = 0; x + 1 < 40; ++x) grid += "e " + std::to_string(x) + " 0 " + std::to_string(x + 1) + " 0\n";
-  std::string q = "q all";
-  for (int x = 0; x < 40; x += 2) {
-    grid += "o e" + std::to_string(x) + " expand " + std::to_string(x) + " 0 +x\n";
-    q += " e" + std::to_string(x);
-  }
-  const Instance inst = test::parse_instance(grid + q + "\n");
+  const Instance inst = test::parse_instance(test::expansion_row_grid(40, 0));
   std::vector<std::pair<uint64_t, uint64_t>> seen;
   const CollideCertificate cert = collide_no_certificate(
       inst, nullptr, false, [&](uint64_t done, uint64_t total) { seen.emplace_back(done, total); });

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
+#include "support/instance_io.hpp"
 
 namespace gridlock {
 namespace {
@@ -158,15 +159,7 @@ TEST(CollideCommand, CertificateOptionOnAYesLeavesTheFileAndSaysSo) {
   // A row of 20 000 nodes with couplings of 3: its NO takes well under a
   // second, its certificate (every pair) far more than one, so the limit
   // comes while it is written (or, on a slow machine, before the answer).
-  std::string row = "p grid 20000 19999 10000 3334\n", ops, qs;
-  for (int x = 0; x < 20000; ++x) row += "n " + std::to_string(x) + " 0\n";
-  for (int x = 0; x + 1 < 20000; ++x) row += "e " + std::to_string(x) + " 0 " + std::to_string(x + 1) + " 0\n";
-  for (int x = 0; x < 20000; x += 2) {
-    ops += "o e" + std::to_string(x) + " expand " + std::to_string(x) + " 0 +x\n";
-    if (x % 6 == 0) qs += (x ? "\nq Q" : "q Q") + std::to_string(x);
-    qs += " e" + std::to_string(x);
-  }
-  test::write_file(dir + "/row.grid", row + ops + qs + "\n");
+  test::write_file(dir + "/row.grid", test::expansion_row_grid(20000, 3));
   auto t = run_gridlock({"collide", dir + "/row.grid", "--timeout", "1", "--certificate", dir + "/old.cert"});
   EXPECT_TRUE(t.exit_code == 20 || t.exit_code == 0) << t.out << t.err;
   EXPECT_NE(t.out.find("old.cert is left as it was (not this answer's)"), std::string::npos) << t.out;

@@ -29,6 +29,27 @@ inline Instance load_example(const std::string& name) {
   return inst;
 }
 
+// The .grid text of a row of n nodes along y = 0 (n >= 2) with an
+// expansion "e<x>" (+x) at every even x < n - 1, in couplings "Q<x>" of
+// `group` consecutive expansions (x: the first one's; 0: one coupling
+// "all"). NO in every schedule: expansions only push apart.
+inline std::string expansion_row_grid(int n, int group) {
+  std::string nodes, edges, ops, couplings;
+  int count = 0, coupled = 0;
+  for (int x = 0; x < n; ++x) nodes += "n " + std::to_string(x) + " 0\n";
+  for (int x = 0; x + 1 < n; ++x) edges += "e " + std::to_string(x) + " 0 " + std::to_string(x + 1) + " 0\n";
+  for (int x = 0; x + 1 < n; x += 2, ++count) {
+    ops += "o e" + std::to_string(x) + " expand " + std::to_string(x) + " 0 +x\n";
+    if (count == 0 || (group > 0 && count % group == 0)) {
+      couplings += (count == 0 ? "q " : "\nq ") + (group == 0 ? std::string("all") : "Q" + std::to_string(x));
+      ++coupled;
+    }
+    couplings += " e" + std::to_string(x);
+  }
+  return "p grid " + std::to_string(n) + " " + std::to_string(n - 1) + " " + std::to_string(count) + " " +
+         std::to_string(coupled) + "\n" + nodes + edges + ops + couplings + "\n";
+}
+
 // The same shape and operations; with `transpose`, x and y swapped (cells
 // and directions: a horizontal-only instance becomes a vertical-only one);
 // with `one_coupling`, every operation in one coupling "Q", else the
