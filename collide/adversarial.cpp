@@ -133,7 +133,7 @@ SerpentineParams fan_serpentine(int64_t n) {
   return p;
 }
 
-Instance diagonal_sweep_instance(uint32_t K, uint32_t b) {
+Instance diagonal_sweep_instance(uint32_t K, uint32_t b, bool hits) {
   if (K == 0 || b < 3) throw std::invalid_argument("diagonal_sweep_instance: needs K >= 1 and b >= 3");
   InstanceBuilder bl;
   std::vector<std::string> ops;
@@ -171,16 +171,29 @@ Instance diagonal_sweep_instance(uint32_t K, uint32_t b) {
       if (y < 0 && x == 0) must(bl.add_edge(Vec2{0, 0}, Vec2{0, -1}));
     }
   }
+  if (hits) {
+    // The post: up from the triangle's top row (y = 3K - 1) at x = X, then
+    // left along y = 3K + b to x = 3K + b - 1, where the blob's top right
+    // cell, (2K + b - 1, 2K + b) + t (K, K), arrives at t = 1 - 1/K.
+    for (int64_t y = 3 * k; y <= 3 * k + w; ++y) {
+      must(bl.add_node(Vec2{X, y}));
+      must(bl.add_edge(Vec2{X, y - 1}, Vec2{X, y}));
+    }
+    for (int64_t x = X - 1; x >= 3 * k + w - 1; --x) {
+      must(bl.add_node(Vec2{x, 3 * k + w}));
+      must(bl.add_edge(Vec2{x + 1, 3 * k + w}, Vec2{x, 3 * k + w}));
+    }
+  }
   must(bl.add_coupling("Q", ops));
   Instance inst;
   if (auto e = bl.finish(inst)) throw std::logic_error("diagonal_sweep_instance: " + e->message);
   return inst;
 }
 
-Instance diagonal_sweep_of_size(int64_t n) {
+Instance diagonal_sweep_of_size(int64_t n, bool hits) {
   const auto K = static_cast<uint32_t>(
       std::max<int64_t>(6, std::llround(std::sqrt(static_cast<double>(std::max<int64_t>(n, 1)) / 4.75))));
-  return diagonal_sweep_instance(K, K / 2);
+  return diagonal_sweep_instance(K, K / 2, hits);
 }
 
 }  // namespace gridlock

@@ -98,10 +98,14 @@ uint32_t fan_size(uint64_t x, uint64_t y);
 // cells, so the simulator tests about b^2 (K - b)^2 / 2 static pairs: with
 // b = K / 2, n ~ 4.75 K^2 nodes and ~ K^4 / 32 ~ n^2 / 720 candidate pairs,
 // while the total motion of the regions is O(K^3) = O(n^{3/2}).
+// With `hits`, a static post (b + 3 more nodes, up from the triangle at
+// x = X to y = 3K + b, then left to x = 3K + b - 1) stands where the
+// blob's top right cell arrives: the answer is YES, the first collision at
+// t = 1 - 1/K between that cell and the post's end, after the same motion.
 // Deterministic, O(n). Throws std::invalid_argument for K == 0 or b < 3.
-Instance diagonal_sweep_instance(uint32_t K, uint32_t b);
+Instance diagonal_sweep_instance(uint32_t K, uint32_t b, bool hits = false);
 
 // The diagonal sweep of about n nodes: K = max(6, round(sqrt(n / 4.75))), b = K / 2. O(n).
-Instance diagonal_sweep_of_size(int64_t n);
+Instance diagonal_sweep_of_size(int64_t n, bool hits = false);
 
 }  // namespace gridlock
