@@ -44,12 +44,13 @@ CollideResult finish_with(CollideResult& res, Simulator& sim, Schedule s) {
   return res;
 }
 
-// A one-axis YES: the answer names the first collision (its proof), and the
-// simulator's configuration at a moment inside the pair's overlap confirms
-// that the witness collides (logic_error otherwise). O(n) where simulating
-// this motion costs up to Theta(n^2) (a row whose expansions share the
-// coupling).
-CollideResult finish_one_axis(CollideResult& res, const Instance& inst, const SingleCouplingAnswer& ans) {
+// A one-coupling YES that names its first collision (the one-axis test and
+// the sweep do, docs/collide.md): the simulator's configuration at a
+// moment inside the pair's overlap confirms that the witness collides
+// (logic_error otherwise). O(n) where simulating this motion costs up to
+// Theta(n^2) (a row whose expansions share the coupling; the diagonal
+// sweep's broad phase).
+CollideResult finish_named(CollideResult& res, const Instance& inst, const SingleCouplingAnswer& ans) {
   res.collides = true;
   res.witness = schedule_from_order({0});
   const std::vector<RectQ> at = configuration_at(inst, res.witness, *ans.during);
@@ -299,8 +300,9 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
 
   // 2. One coupling: one schedule in both models, decided by one sort per
   // row when every operation is on one axis (O(n log n)), else by the
-  // space-time cell sweep (single_coupling.hpp); a sweep's YES is then
-  // simulated, a one-axis YES checked at one moment.
+  // space-time cell sweep (single_coupling.hpp). Both name the first
+  // collision, checked at one moment; a YES of the sweep's packing bound
+  // names none and is simulated.
   if (method == CollideMethod::Auto && nq == 1) {
     std::optional<SingleCouplingAnswer> answer = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
                                                                           &res.stats.pair_tests);
@@ -322,7 +324,7 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
       return res;
     }
     if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
-    if (ans.first) return finish_one_axis(res, inst, ans);
+    if (ans.first) return finish_named(res, inst, ans);
     finish_with(res, sim, schedule_from_order({0}));
     if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
       res.region_a = res.simulated->a, res.region_b = res.simulated->b;

@@ -18,8 +18,9 @@
 //      from the nodes the continuous pair's faces follow. (Pairwise: every pair by
 //      subset sums, the discrete decider on its own.)
 // Every YES comes with a schedule that the exact Simulator has run and seen
-// collide (for one coupling on one axis: whose named pair overlaps in the
-// simulator's configuration at checked_at); if the simulator disagrees,
+// collide (for one coupling, when the algorithm names the first collision:
+// whose named pair overlaps in the simulator's configuration at
+// checked_at); if the simulator disagrees,
 // find_collision throws std::logic_error (a bug, never a silent wrong
 // answer).
 #pragma once
@@ -71,9 +72,10 @@ struct CollideResult {
   std::vector<NodeId> cycle;
   // The first collision on the witness (it may be another pair: any
   // collision answers the question): the simulator's; for
-  // "single-coupling-one-axis" the one that algorithm's proof names (the
-  // simulator's: the same moment and pair), confirmed in the simulator's
-  // configuration at checked_at.
+  // "single-coupling-one-axis" and "single-coupling" (unless its packing
+  // bound decided) the one that algorithm's proof names (the simulator's:
+  // the same moment and pair), confirmed in the simulator's configuration
+  // at checked_at.
   std::optional<Collision> simulated;
   // Set when the witness was confirmed by the configuration at this moment
   // (configuration_at: the pair overlaps) rather than by a full simulation.

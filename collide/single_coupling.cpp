@@ -220,31 +220,62 @@ std::vector<int64_t> column_bands(const std::vector<Faces>& faces, const CellKey
 // 25 thinner ones meet one open unit cell.
 constexpr size_t kPackingBound = 43;
 
+// The earliest overlap found so far: its pair and its overlap span
+// (lo: the time the pair starts to overlap). Earlier means a smaller lo,
+// then a smaller pair, as the simulator orders its first collision.
+struct Earliest {
+  bool found = false;
+  RegionPair pair;
+  Span span;
+  bool improved_by(const Span& s, const RegionPair& p) const {
+    if (!found || less(s.lo, span.lo)) return true;
+    if (less(span.lo, s.lo)) return false;
+    return std::pair(p.a, p.b) < std::pair(pair.a, pair.b);
+  }
+};
+
 // One cell's items [b, e), sorted by start: each entering item is tested
 // against the items still present (open spans: present iff hi > lo of the
-// entering one). Stops at the first overlap (collides, with the pair) or
-// when more than kPackingBound items are present (collides, no pair).
-SingleCouplingAnswer sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::vector<Faces>& faces,
-                                std::vector<uint32_t>& active, SingleCouplingStats& st) {
+// entering one), and every overlap found that starts no later than the
+// earliest so far updates `best`. Items that start after best's start are
+// not entered: a pair starting to overlap at t* meets a common cell with
+// items that both start at or before t* (docs/collide.md, "The first
+// collision"). Returns false, with `best` as it stands, when more than
+// kPackingBound items are present (a collision that the items do not name).
+bool sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::vector<Faces>& faces,
+                std::vector<uint32_t>& active, SingleCouplingStats& st, Earliest& best) {
   active.clear();
   for (size_t k = b; k < e; ++k) {
     const Item& x = items[k];
+    if (best.found && less(best.span.lo, x.lo)) break;  // starts are sorted: the rest start later too
     size_t keep = 0;
     for (uint32_t y : active)
       if (less(x.lo, items[y].hi)) active[keep++] = y;
     active.resize(keep);
     st.max_active = std::max<uint64_t>(st.max_active, keep);
-    if (keep > kPackingBound) return SingleCouplingAnswer{true, std::nullopt, std::nullopt, std::nullopt};
+    if (keep > kPackingBound) return false;
     for (uint32_t y : active) {
       ++st.tests;
-      if (overlap(faces[x.region], faces[items[y].region]))
-        return SingleCouplingAnswer{
-            true, RegionPair{std::min(x.region, items[y].region), std::max(x.region, items[y].region)}, std::nullopt,
-            std::nullopt};
+      const Span s = overlap_span(faces[x.region], faces[items[y].region]);
+      if (s.empty()) continue;
+      const RegionPair p{std::min(x.region, items[y].region), std::max(x.region, items[y].region)};
+      if (best.improved_by(s, p)) best = Earliest{true, p, s};
     }
     active.push_back(static_cast<uint32_t>(k));
   }
-  return {};
+  return true;
+}
+
+// The answer naming `best` as the first collision: `first` its start,
+// `during` the middle of its overlap.
+SingleCouplingAnswer named(const Earliest& best) {
+  SingleCouplingAnswer ans;
+  if (!best.found) return ans;
+  ans.collides = true;
+  ans.pair = best.pair;
+  ans.first = Rational(best.span.lo.num, best.span.lo.den);
+  ans.during = (*ans.first + Rational(best.span.hi.num, best.span.hi.den)) * Rational(1, 2);
+  return ans;
 }
 
 }  // namespace
@@ -273,11 +304,12 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
   // Bands left to right; cells are keyed by column first, so the cells are
   // swept in the same order as one global sort would (the same answer for
   // every band size).
-  SingleCouplingAnswer found;
+  Earliest best;
+  bool packed = false;  // the packing bound fired: a collision, not named
   std::vector<Item> items;
   std::vector<uint32_t> active, open;  // open: live regions whose columns reach the band
   size_t next = 0, cells = 0;
-  for (size_t band = 0; band + 1 < cuts.size() && !found.collides; ++band) {
+  for (size_t band = 0; band + 1 < cuts.size() && !packed; ++band) {
     if (on_band) on_band(band, st.bands);
     const int64_t c0 = cuts[band], c1 = cuts[band + 1];
     for (; next < live.size() && first_column(faces[live[next]]) < c1; ++next) open.push_back(live[next]);
@@ -303,14 +335,15 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
       if (less(y.lo, x.lo)) return false;
       return x.region < y.region;
     });
-    for (size_t b = 0, e = 0; b < items.size() && !found.collides; b = e) {
+    for (size_t b = 0, e = 0; b < items.size() && !packed; b = e) {
       if (deadline && ++cells % 4096 == 0) deadline->check();
       for (e = b + 1; e < items.size() && items[e].cell == items[b].cell;) ++e;
-      found = sweep_cell(items, b, e, faces, active, st);
+      packed = !sweep_cell(items, b, e, faces, active, st, best);
     }
   }
   if (stats) *stats = st;
-  return found;
+  if (packed) return SingleCouplingAnswer{true, std::nullopt, std::nullopt, std::nullopt};
+  return named(best);
 }
 
 std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
@@ -338,27 +371,15 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
         return std::array<int64_t, 3>{faces[r][c].a, faces[r][m].a, faces[r][m + 1].a};
       },
       [&](uint32_t r) { return faces[r][m + 1].a > faces[r][m].a; });
-  SingleCouplingAnswer ans;
-  const uint64_t made = pairs.size();
-  Span first;
+  Earliest best;
   for (const auto& [x, y] : pairs) {
     const Span s = overlap_span(faces[x], faces[y]);
     if (s.empty()) continue;
     const RegionPair p{std::min(x, y), std::max(x, y)};
-    if (ans.collides &&
-        (less(first.lo, s.lo) || (!less(s.lo, first.lo) && std::pair(ans.pair->a, ans.pair->b) < std::pair(p.a, p.b))))
-      continue;
-    ans.collides = true;
-    ans.pair = p;
-    first = s;
+    if (best.improved_by(s, p)) best = Earliest{true, p, s};
   }
-  if (tests) *tests = made;
-  if (ans.collides) {
-    ans.first = Rational(first.lo.num, first.lo.den);
-    // The middle of the first pair's overlap: (lo + hi) / 2.
-    ans.during = (*ans.first + Rational(first.hi.num, first.hi.den)) * Rational(1, 2);
-  }
-  return ans;
+  if (tests) *tests = pairs.size();
+  return named(best);
 }
 
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,

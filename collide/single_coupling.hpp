@@ -47,16 +47,14 @@ struct RegionPair {
 
 struct SingleCouplingAnswer {
   bool collides = false;
-  // Set when an exact test found it (some colliding pair, not necessarily
-  // the first in time); unset with collides when the packing bound decided
-  // (more items in one cell at one moment than a configuration without
-  // overlaps allows: docs/collide.md), the pair then to be found by the
-  // simulator.
+  // With collides, the first collision of the one schedule, as the
+  // simulator names it: `pair` starts to overlap first (the smallest pair
+  // on ties), at `first` (the infimum of all overlap times), and overlaps
+  // at `during` (the middle of its overlap, first < during < 1). All three
+  // unset when the sweep's packing bound decided (more items in one cell
+  // at one moment than a configuration without overlaps allows:
+  // docs/collide.md), the collision then to be found by the simulator.
   std::optional<RegionPair> pair;
-  // single_coupling_one_axis only: pair is the first to collide (the
-  // smallest pair on ties), from `first` (the infimum of all overlap times:
-  // the first collision's time), and overlaps at `during` (a time inside its
-  // overlap, first < during < 1).
   std::optional<Rational> first, during;
 };
 
@@ -68,7 +66,10 @@ struct SingleCouplingAnswer {
 // Memory: O(n + columns + band_items + the items of the fullest column):
 // the cells are swept in bands of whole columns holding at most band_items
 // items each (one counting pass decides the bands), so the O(mu) items are
-// never all in memory; time stays O(n + mu log mu). The answer (pair
+// never all in memory; time stays O(n + mu log mu). The sweep does not stop
+// at the first overlap it meets: it keeps the earliest, entering no item
+// that starts after it, so a YES names the first collision in the same
+// bound (docs/collide.md, "The sweep's first collision"). The answer (pair
 // included) is the same for every band_items >= 1. on_band (optional) is
 // called before each band with (bands done, bands).
 // Throws std::overflow_error if the motion spans more than 2^32 cells along
@@ -84,11 +85,10 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 // counting the regions of width 0 at t = 0 between two of positive width
 // as next to both (docs/collide.md, "One coupling, one axis": the proof).
 // So one sort per row and the exact test on those neighbours decide what
-// single_coupling_sweep decides (whether some pair overlaps; the pair may
-// differ), in O(n log n) whatever the motion. On a YES the answer also
-// names the first collision (`first`, `during`), the simulator's: every
-// pair that overlaps right after the first moment is in one group, so the
-// earliest group pair, the smallest on ties, is the simulator's pair.
+// single_coupling_sweep decides, the same answer, in O(n log n) whatever
+// the motion. On a YES it names the first collision too: every pair that
+// overlaps right after the first moment is in one group, so the earliest
+// group pair, the smallest on ties, is the simulator's pair.
 // nullopt when the operations use both axes, or when some region's width
 // is not positive all along (0, 1), which happens only when the coupling
 // breaks a cycle (the face test's case, which find_collision settles

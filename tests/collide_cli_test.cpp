@@ -106,32 +106,53 @@ TEST(CollideCommand, DiscreteAnswerFromTheContinuousTests) {
   EXPECT_EQ(cert.exit_code, 20) << cert.out << cert.err;
 }
 
-// One coupling, one axis: the answer names the first collision itself and
-// checks it in the simulator's configuration at one moment; `check` runs
-// the full simulation on the witness and must agree.
-TEST(CollideCommand, OneAxisYesNamesTheFirstCollision) {
-  const std::string dir = test::temp_dir();
-  // worked case 1 with both growths in one coupling: [1, 1 + t] meets [2 - t, 2] after t = 1/2.
-  test::write_file(dir + "/g.grid",
-                   "p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\n"
-                   "e 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n");
+// A one-coupling YES that names its first collision (the instance's .grid
+// text): in both models
+// `collide` reports `algorithm`, the collision at `time` (`first`: the
+// rest of its line) and the moment it was checked at, and `check` runs the
+// full simulation on the witness and must find the same collision.
+void expect_named_first_collision(const std::string& grid_text, const std::string& algorithm, const std::string& time,
+                                  const std::string& first, const std::string& checked_at) {
+  const std::string dir = test::temp_dir(), grid = dir + "/i.grid";
+  test::write_file(grid, grid_text);
   for (const char* model : {"continuous", "discrete"}) {
-    auto r = run_gridlock({"collide", dir + "/g.grid", "--model", model});
+    auto r = run_gridlock({"collide", grid, "--model", model});
     ASSERT_EQ(r.exit_code, 10) << r.out << r.err;
-    EXPECT_NE(r.out.find("c algorithm: single-coupling-one-axis"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("c first node collision at time 1/2 between"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("c checked in the simulator's configuration at time 3/4: they overlap"), std::string::npos)
+    EXPECT_NE(r.out.find("c algorithm: " + algorithm + " ("), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("c first node collision at time " + time + " between " + first), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("c checked in the simulator's configuration at time " + checked_at + ": they overlap"),
+              std::string::npos)
         << r.out;
     test::write_file(dir + "/w", r.out);
-    auto c = run_gridlock(
-        {"check", dir + "/g.grid", std::string(model) == "discrete" ? "--order-file" : "--times", dir + "/w"});
+    auto c = run_gridlock({"check", grid, std::string(model) == "discrete" ? "--order-file" : "--times", dir + "/w"});
     EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
-    EXPECT_NE(c.out.find("at time 1/2"), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find("node collision at time " + time + " between " + first), std::string::npos) << c.out;
   }
-  auto j = nlohmann::json::parse(run_gridlock({"collide", dir + "/g.grid", "--json"}).out);
+  auto j = nlohmann::json::parse(run_gridlock({"collide", grid, "--json"}).out);
   EXPECT_EQ(j["status"], "YES");
-  EXPECT_EQ(j["checked_at"], "3/4");
-  EXPECT_EQ(j["collision"]["time"], "1/2");
+  EXPECT_EQ(j["checked_at"], checked_at);
+  EXPECT_EQ(j["collision"]["time"], time);
+}
+
+// One coupling, one axis: the answer names the first collision itself
+// (worked case 1 with both growths in one coupling: [1, 1 + t] meets
+// [2 - t, 2] after t = 1/2).
+TEST(CollideCommand, OneAxisYesNamesTheFirstCollision) {
+  expect_named_first_collision(
+      "p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\ne 1 1 2 1\n"
+      "e 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n",
+      "single-coupling-one-axis", "1/2", "", "3/4");
+}
+
+// One coupling on both axes: the space-time sweep names the first
+// collision too. A U whose right side contracts (+y) pulls its top left
+// node onto its bottom left one from t = 0, while an expansion (+x) moves
+// the whole U.
+TEST(CollideCommand, SweepYesNamesTheFirstCollision) {
+  expect_named_first_collision(
+      "p grid 5 4 2 1\nn -1 0\nn 0 0\nn 1 0\nn 1 1\nn 0 1\ne -1 0 0 0\ne 0 0 1 0\ne 1 0 1 1\n"
+      "e 1 1 0 1\no x expand -1 0 +x\no c contract 1 0 +y\nq Q x c\n",
+      "single-coupling", "0", "node (0,0) and node (0,1)", "1/2");
 }
 
 // --certificate C on an answer without one: C is left as it was (a file

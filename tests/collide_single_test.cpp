@@ -42,13 +42,34 @@ RandomInstanceParams single_params(Rng& rng) {
 }
 
 struct Tally {
-  int cases = 0, yes = 0, no = 0, brute = 0, cycles = 0, by_packing = 0, multi_band = 0;
+  int cases = 0, yes = 0, no = 0, brute = 0, cycles = 0, by_packing = 0, multi_band = 0, first_named = 0;
   uint64_t max_active = 0;
 };
 
+// `ans` names the simulator's first collision `c` of the one schedule:
+// the same moment and pair (the smallest on ties), and the pair overlaps
+// at `during` in the simulator's own configuration.
+void expect_names_first(const Instance& inst, const SingleCouplingAnswer& ans, const Collision& c,
+                        const std::string& where) {
+  ASSERT_TRUE(ans.pair && ans.first && ans.during) << where;
+  ASSERT_LT(ans.pair->a, ans.pair->b) << where;
+  ASSERT_LE(Rational(0), *ans.first) << where;
+  ASSERT_LT(*ans.first, *ans.during) << where;
+  ASSERT_LT(*ans.during, Rational(1)) << where;
+  const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *ans.during);
+  const RectQ &A = at[ans.pair->a], &B = at[ans.pair->b];
+  ASSERT_LT(std::max(A.xlo, B.xlo), std::min(A.xhi, B.xhi)) << where;
+  ASSERT_LT(std::max(A.ylo, B.ylo), std::min(A.yhi, B.yhi)) << where;
+  ASSERT_EQ(c.kind, Collision::Kind::Node) << where;
+  ASSERT_EQ(*ans.first, c.time) << where;
+  ASSERT_EQ(ans.pair->a, c.a) << where;
+  ASSERT_EQ(ans.pair->b, c.b) << where;
+}
+
 // Sweep, all pairs and the simulator (all operations from t = 0) agree on
-// whether a node collision happens; find_collision agrees with the brute
-// reference on tiny instances.
+// whether a node collision happens, and the sweep names the simulator's
+// first collision; find_collision agrees with the brute reference on tiny
+// instances.
 void check_instance(const Instance& inst, const std::string& where, Tally& tally) {
   Simulator sim(inst);
   SingleCouplingStats st;
@@ -69,8 +90,10 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     if (ans.pair) {
       ASSERT_EQ(banded.pair->a, ans.pair->a) << where << ", band " << band;
       ASSERT_EQ(banded.pair->b, ans.pair->b) << where << ", band " << band;
+      ASSERT_EQ(banded.first, ans.first) << where << ", band " << band;
+      ASSERT_EQ(banded.during, ans.during) << where << ", band " << band;
     }
-    if (!ans.collides) {
+    if (!ans.collides || ans.pair) {  // the same cells in the same order, whatever the bands
       ASSERT_EQ(sb.items, st.items) << where << ", band " << band;
       ASSERT_EQ(sb.tests, st.tests) << where << ", band " << band;
     }
@@ -87,6 +110,21 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
   if (sim.faces().faces.empty()) {
     const SimResult run = sim.run(s);
     ASSERT_EQ(sweep, run.collision.has_value()) << where;
+    if (ans.pair) {
+      expect_names_first(inst, ans, *run.collision, where);
+      if (::testing::Test::HasFatalFailure()) return;
+      ++tally.first_named;
+      if (inst.couplings().size() == 1) {  // find_collision reports it, checked at one moment
+        const CollideResult r = find_collision(inst, TimeModel::Continuous);
+        if (r.algorithm == "single-coupling") {
+          ASSERT_EQ(r.checked_at, ans.during) << where;
+          ASSERT_EQ(r.simulated->time, run.collision->time) << where;
+          ASSERT_EQ(r.simulated->a, run.collision->a) << where;
+          ASSERT_EQ(r.simulated->b, run.collision->b) << where;
+          ASSERT_EQ(r.simulated->moving, run.collision->moving) << where;
+        }
+      }
+    }
   } else {
     ++tally.cycles;
   }
@@ -116,11 +154,13 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   }
   std::cout << "[ info ] " << tally.cases << " instances (" << tally.yes << " node collisions, " << tally.no
             << " none; " << tally.cycles << " with a cycle net; " << tally.brute << " against the brute reference; "
-            << tally.by_packing << " decided by the packing bound; most items present at an entry " << tally.max_active
-            << "; " << tally.multi_band << " banded sweeps of several bands)\n";
+            << tally.by_packing << " decided by the packing bound; " << tally.first_named
+            << " first collisions equal to the simulator's; most items present at an entry " << tally.max_active << "; "
+            << tally.multi_band << " banded sweeps of several bands)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
+  EXPECT_GT(tally.first_named, cases / 10);
   EXPECT_GT(tally.no, cases / 10);
 }
 
@@ -144,7 +184,9 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnLargerInstances) {
     if (::testing::Test::HasFatalFailure()) return;
   }
   std::cout << "[ info ] " << tally.cases << " instances (" << tally.yes << " node collisions, " << tally.no
-            << " none; most items present at an entry " << tally.max_active << ")\n";
+            << " none; " << tally.first_named
+            << " first collisions equal to the simulator's; most items present at an entry " << tally.max_active
+            << ")\n";
   EXPECT_GT(tally.no, cases / 10);
   EXPECT_GT(tally.yes, cases / 10);
 }
@@ -196,27 +238,16 @@ TEST(SingleCouplingOneAxis, AgreesWithTwinsOnRandomInstances) {
       ASSERT_TRUE(one->pair) << where;
       ASSERT_LT(one->pair->a, one->pair->b) << where;
     }
-    if (one->collides) {  // the pair overlaps at `during`, after `first`
-      ASSERT_TRUE(one->first && one->during) << where;
-      ASSERT_LT(Rational(0), *one->during) << where;
-      ASSERT_LT(*one->first, *one->during) << where;
-      ASSERT_LT(*one->during, Rational(1)) << where;
-      const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *one->during);
-      const RectQ &A = at[one->pair->a], &B = at[one->pair->b];
-      ASSERT_LT(std::max(A.xlo, B.xlo), std::min(A.xhi, B.xhi)) << where;
-      ASSERT_LT(std::max(A.ylo, B.ylo), std::min(A.yhi, B.yhi)) << where;
-    }
     if (sim.faces().faces.empty() && inst.couplings().size() == 1) {
       const SimResult run = sim.run_order({0});
       ASSERT_EQ(one->collides, run.collision.has_value()) << where;
-      if (one->collides) {  // the first collision's moment, as the simulator finds it
-        ASSERT_EQ(*one->first, run.collision->time) << where;
+      if (one->collides) {  // the first collision, as the simulator finds it
+        expect_names_first(inst, *one, *run.collision, where);
+        if (::testing::Test::HasFatalFailure()) return;
         const CollideResult res = find_collision(inst, TimeModel::Continuous);
         ASSERT_EQ(res.algorithm, "single-coupling-one-axis") << where;
         ASSERT_EQ(res.simulated->time, run.collision->time) << where;
         ASSERT_EQ(res.checked_at, one->during) << where;
-        ASSERT_EQ(one->pair->a, run.collision->a) << where;  // the smallest pair on ties, as the simulator
-        ASSERT_EQ(one->pair->b, run.collision->b) << where;
         ASSERT_EQ(res.simulated->a, run.collision->a) << where;
         ASSERT_EQ(res.simulated->b, run.collision->b) << where;
         ASSERT_EQ(res.simulated->moving, run.collision->moving) << where;
@@ -269,6 +300,34 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
   }
   EXPECT_GT(pairs[1], 150 * pairs[0]) << pairs[0] << " -> " << pairs[1];
   EXPECT_LT(items[1], 80 * items[0]) << items[0] << " -> " << items[1];
+}
+
+// The diagonal sweep with its post (collide/adversarial.hpp): YES, first
+// at t = 1 - 1/K, after the motion that makes the simulator's broad phase
+// quadratic. The sweep names that collision and find_collision reports it,
+// checked at one moment, without simulating; the simulator agrees.
+TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
+  for (uint32_t K : {1u, 2u, 5u, 12u})
+    for (uint32_t b : {3u, 4u, 7u}) {
+      const Instance inst = diagonal_sweep_instance(K, b, true);
+      const std::string where = "K " + std::to_string(K) + ", b " + std::to_string(b);
+      Simulator sim(inst);
+      const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions());
+      ASSERT_TRUE(ans.collides) << where;
+      const SimResult run = sim.run_order({0});
+      ASSERT_TRUE(run.collision) << where;
+      EXPECT_EQ(run.collision->time, Rational(static_cast<int64_t>(K) - 1, K)) << where;
+      expect_names_first(inst, ans, *run.collision, where);
+      const CollideResult r = find_collision(inst, TimeModel::Continuous);
+      ASSERT_TRUE(r.collides) << where;
+      EXPECT_EQ(r.algorithm, "single-coupling") << where;
+      EXPECT_EQ(r.checked_at, ans.during) << where;
+      ASSERT_TRUE(r.simulated) << where;
+      EXPECT_EQ(r.simulated->time, run.collision->time) << where;
+      EXPECT_EQ(r.simulated->a, run.collision->a) << where;
+      EXPECT_EQ(r.simulated->b, run.collision->b) << where;
+      EXPECT_EQ(inst.num_nodes(), diagonal_sweep_instance(K, b).num_nodes() + b + 3) << where;
+    }
 }
 
 // Progress: the one-coupling step reports its column bands through

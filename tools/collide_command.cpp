@@ -95,7 +95,7 @@ int report_collision(Answer& ans, const Instance& inst, const CollideResult& res
                 region_label(inst, regions, res.region_b) + " can collide");
   }
   const Collision& c = *res.simulated;
-  if (res.checked_at) {  // one axis: the first collision from the proof, confirmed at one moment
+  if (res.checked_at) {  // one coupling: the first collision, named by its proof, confirmed at one moment
     ans.comment("first " + describe(inst, regions, c));
     ans.comment("checked in the simulator's configuration at time " + res.checked_at->str() + ": they overlap");
     ans.data()["checked_at"] = res.checked_at->str();
