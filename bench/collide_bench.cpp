@@ -211,6 +211,14 @@ void BM_DiagonalSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, diagonal_sweep_of_size(state.range(0)));
 }
 
+// The diagonal sweep with its post (collide/adversarial.hpp): the same
+// motion, a YES at t = 1 - 1/K. Auto (range(1) = 0) names the first
+// collision from the sweep and checks it at one moment; the simulation
+// (2) is what confirmed a sweep's YES before, on top of the sweep.
+void BM_DiagonalHitSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, diagonal_sweep_of_size(state.range(0), true));
+}
+
 // The discrete answer as `collide --model discrete` gives it, on the mixed
 // serpentine (docs/performance.md, "The discrete answer by the continuous
 // decider"). range(1): coupling size as in serpentine_bench (3, 0: sqrt
@@ -315,6 +323,7 @@ BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096, 16384}, {0, 1, 2}, {0}
 BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096}, {0, 1, 2}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiagonalHitSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiscreteAnswerSerpentine)
@@ -421,6 +430,12 @@ void register_large_one_axis() {
         ->Args({16384, family, 1})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {32768, 65536, 131072, 262144})  // the diagonal sweep's YES: named, and simulated
+    for (int64_t how : {0, 2})
+      benchmark::RegisterBenchmark("BM_DiagonalHitSingleCoupling", BM_DiagonalHitSingleCoupling)
+          ->Args({n, how})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
   for (int64_t n : {16387, 65539})  // the simulation that confirmed it before: minutes at 65 539
     benchmark::RegisterBenchmark("BM_HookSingleCoupling", BM_HookSingleCoupling)
         ->Args({n, 2})
