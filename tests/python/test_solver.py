@@ -82,19 +82,31 @@ def test_collide_examples_equal_cli(instance_path, model):
     check_collide(gridlock.Instance.read(str(instance_path)), instance_path, model)
 
 
+NAMED_YES = {  # one coupling: (the .grid text, the algorithm, checked_at, the first collision's time)
+    "one-axis": ("p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\n"
+                 "e 1 1 2 1\ne 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n",
+                 "single-coupling-one-axis", Fraction(3, 4), Fraction(1, 2)),
+    "sweep": ("p grid 5 4 2 1\nn -1 0\nn 0 0\nn 1 0\nn 1 1\nn 0 1\ne -1 0 0 0\ne 0 0 1 0\ne 1 0 1 1\n"
+              "e 1 1 0 1\no x expand -1 0 +x\no c contract 1 0 +y\nq Q x c\n",
+              "single-coupling", Fraction(1, 2), Fraction(0)),
+}
+
+
 @pytest.mark.parametrize("model", ["discrete", "continuous"])
-def test_collide_one_axis_yes_checked_at_one_moment(tmp_path, model):
-    """One coupling, one axis: the first collision comes from the proof and
-    is confirmed at one moment; it is the simulator's, and equals the CLI."""
+@pytest.mark.parametrize("case", sorted(NAMED_YES))
+def test_collide_one_coupling_yes_checked_at_one_moment(tmp_path, model, case):
+    """One coupling (one axis: the row groups; both axes: the sweep): the
+    first collision comes from the proof and is confirmed at one moment;
+    it is the simulator's, and equals the CLI."""
+    text, algorithm, checked_at, time = NAMED_YES[case]
     path = tmp_path / "g.grid"
-    path.write_text("p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\n"
-                    "e 1 1 2 1\ne 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n")
+    path.write_text(text)
     inst = gridlock.Instance.read(str(path))
     check_collide(inst, str(path), model)
     got = gridlock.collide(inst, model=model)
-    assert got.algorithm == "single-coupling-one-axis"
-    assert got.checked_at == Fraction(3, 4) and got.collision.time == Fraction(1, 2)
-    assert cli_json("collide", str(path), "--model", model)["checked_at"] == "3/4"
+    assert got.algorithm == algorithm
+    assert got.checked_at == checked_at and got.collision.time == time
+    assert cli_json("collide", str(path), "--model", model)["checked_at"] == str(checked_at)
     assert gridlock.collide(gridlock.Instance.read(str(SOURCE / "examples" / "instances" / "tiny-sat.grid"))).checked_at is None
 
 
