@@ -236,12 +236,13 @@ struct Earliest {
 
 // One cell's items [b, e), sorted by start: each entering item is tested
 // against the items still present (open spans: present iff hi > lo of the
-// entering one), and every overlap found that starts no later than the
-// earliest so far updates `best`. Items that start after best's start are
-// not entered: a pair starting to overlap at t* meets a common cell with
-// items that both start at or before t* (docs/collide.md, "The first
-// collision"). Returns false, with `best` as it stands, when more than
-// kPackingBound items are present (a collision that the items do not name).
+// entering one), and an overlap found earlier than `best` (Earliest's
+// order) replaces it. Items that start after best's start are not
+// entered: a pair starting to overlap at t* meets a common cell with items
+// that both start at or before t* (docs/collide.md, "The sweep's first
+// collision"). Returns false when more than kPackingBound items are
+// present: a collision that the items do not name (best is then not
+// necessarily the first).
 bool sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::vector<Faces>& faces,
                 std::vector<uint32_t>& active, SingleCouplingStats& st, Earliest& best) {
   active.clear();
