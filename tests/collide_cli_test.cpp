@@ -115,18 +115,20 @@ void expect_named_first_collision(const std::string& grid_text, const std::strin
                                   const std::string& first, const std::string& checked_at) {
   const std::string dir = test::temp_dir(), grid = dir + "/i.grid";
   test::write_file(grid, grid_text);
+  const std::string collision = "node collision at time " + time + " between " + first;
+  const std::string algorithm_line = "c algorithm: " + algorithm + " (";
+  const std::string checked_line = "c checked in the simulator's configuration at time " + checked_at +
+                                   ": they overlap";
   for (const char* model : {"continuous", "discrete"}) {
     auto r = run_gridlock({"collide", grid, "--model", model});
     ASSERT_EQ(r.exit_code, 10) << r.out << r.err;
-    EXPECT_NE(r.out.find("c algorithm: " + algorithm + " ("), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("c first node collision at time " + time + " between " + first), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("c checked in the simulator's configuration at time " + checked_at + ": they overlap"),
-              std::string::npos)
-        << r.out;
+    EXPECT_NE(r.out.find(algorithm_line), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("c first " + collision), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(checked_line), std::string::npos) << r.out;
     test::write_file(dir + "/w", r.out);
     auto c = run_gridlock({"check", grid, std::string(model) == "discrete" ? "--order-file" : "--times", dir + "/w"});
     EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
-    EXPECT_NE(c.out.find("node collision at time " + time + " between " + first), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find(collision), std::string::npos) << c.out;
   }
   auto j = nlohmann::json::parse(run_gridlock({"collide", grid, "--json"}).out);
   EXPECT_EQ(j["status"], "YES");
