@@ -322,7 +322,9 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
     for (uint32_t r : open) {
       if (deadline && ++cells % 4096 == 0) deadline->check();
       each_item(faces[r], c0, c1, [&](int64_t i, int64_t j, const Span& s) {
-        items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
+        // An item that starts after the earliest overlap found in the
+        // bands before would not enter (sweep_cell): not kept at all.
+        if (!best.found || !less(best.span.lo, s.lo)) items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
       });
     }
     if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items in one column");

@@ -31,7 +31,7 @@ namespace gridlock {
 struct SingleCouplingStats {
   uint64_t regions = 0;     // regions of positive width at some t in (0, 1)
   uint64_t motion = 0;      // sum over regions of 1 + |speed_x| + |speed_y| (largest face speeds), in the frame
-  uint64_t items = 0;       // M: (cell, time interval) items
+  uint64_t items = 0;       // M: (cell, time interval) items kept (all of them on a NO)
   uint64_t tests = 0;       // T: exact pair tests
   uint64_t max_active = 0;  // most items present in one cell when an item entered
   uint64_t bands = 0;       // column bands swept one after another
@@ -68,8 +68,9 @@ struct SingleCouplingAnswer {
 // items each (one counting pass decides the bands), so the O(mu) items are
 // never all in memory; time stays O(n + mu log mu). The sweep does not stop
 // at the first overlap it meets: it keeps the earliest, entering no item
-// that starts after it, so a YES names the first collision in the same
-// bound (docs/collide.md, "The sweep's first collision"). The answer (pair
+// that starts after it (nor keeps it, in a later band), so a YES names the
+// first collision in the same bound (docs/collide.md, "The sweep's first
+// collision"). The answer (pair
 // included) is the same for every band_items >= 1. on_band (optional) is
 // called before each band with (bands done, bands).
 // Throws std::overflow_error if the motion spans more than 2^32 cells along
