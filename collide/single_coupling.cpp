@@ -227,10 +227,17 @@ struct Earliest {
   bool found = false;
   RegionPair pair;
   Span span;
-  bool improved_by(const Span& s, const RegionPair& p) const {
-    if (!found || less(s.lo, span.lo)) return true;
-    if (less(span.lo, s.lo)) return false;
-    return std::pair(p.a, p.b) < std::pair(pair.a, pair.b);
+  // Does an item starting at `start` start after the earliest overlap (so
+  // that it can no longer matter)?
+  bool passed(const Frac& start) const { return found && less(span.lo, start); }
+  // The exact test on regions x and y; their overlap is kept if earlier.
+  void test(const std::vector<Faces>& faces, uint32_t x, uint32_t y) {
+    const Span s = overlap_span(faces[x], faces[y]);
+    if (s.empty()) return;
+    const RegionPair p{std::min(x, y), std::max(x, y)};
+    if (found && (less(span.lo, s.lo) || (!less(s.lo, span.lo) && std::pair(pair.a, pair.b) < std::pair(p.a, p.b))))
+      return;
+    *this = Earliest{true, p, s};
   }
 };
 
@@ -248,7 +255,7 @@ bool sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::v
   active.clear();
   for (size_t k = b; k < e; ++k) {
     const Item& x = items[k];
-    if (best.found && less(best.span.lo, x.lo)) break;  // starts are sorted: the rest start later too
+    if (best.passed(x.lo)) break;  // starts are sorted: the rest start later too
     size_t keep = 0;
     for (uint32_t y : active)
       if (less(x.lo, items[y].hi)) active[keep++] = y;
@@ -257,10 +264,7 @@ bool sweep_cell(const std::vector<Item>& items, size_t b, size_t e, const std::v
     if (keep > kPackingBound) return false;
     for (uint32_t y : active) {
       ++st.tests;
-      const Span s = overlap_span(faces[x.region], faces[items[y].region]);
-      if (s.empty()) continue;
-      const RegionPair p{std::min(x.region, items[y].region), std::max(x.region, items[y].region)};
-      if (best.improved_by(s, p)) best = Earliest{true, p, s};
+      best.test(faces, x.region, items[y].region);
     }
     active.push_back(static_cast<uint32_t>(k));
   }
@@ -324,7 +328,7 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
       each_item(faces[r], c0, c1, [&](int64_t i, int64_t j, const Span& s) {
         // An item that starts after the earliest overlap found in the
         // bands before would not enter (sweep_cell): not kept at all.
-        if (!best.found || !less(best.span.lo, s.lo)) items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
+        if (!best.passed(s.lo)) items.push_back(Item{keys.key(i, j), s.lo, s.hi, r});
       });
     }
     if (items.size() >= UINT32_MAX) throw std::overflow_error("single_coupling_sweep: too many items in one column");
@@ -375,12 +379,7 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
       },
       [&](uint32_t r) { return faces[r][m + 1].a > faces[r][m].a; });
   Earliest best;
-  for (const auto& [x, y] : pairs) {
-    const Span s = overlap_span(faces[x], faces[y]);
-    if (s.empty()) continue;
-    const RegionPair p{std::min(x, y), std::max(x, y)};
-    if (best.improved_by(s, p)) best = Earliest{true, p, s};
-  }
+  for (const auto& [x, y] : pairs) best.test(faces, x, y);
   if (tests) *tests = pairs.size();
   return named(best);
 }
