@@ -20,8 +20,10 @@
 #include <string>
 
 #include "bench_families.hpp"
+#include "certify/certify.hpp"
 #include "collide/adversarial.hpp"
 #include "collide/collide.hpp"
+#include "collide/collide_certificate.hpp"
 #include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/collide_tree.hpp"
 #include "collide/single_coupling.hpp"
@@ -204,6 +206,34 @@ void BM_OneAxisCouplings(benchmark::State& state) {
   state.counters["pairs"] = static_cast<double>(r.stats.pairs);
   state.counters["full_tests"] = static_cast<double>(r.stats.full_tests);
 }
+
+// collide's NO certificate on BM_OneAxisCouplings' NO families (range(1):
+// 0 the row, 1 the square comb). range(2): 0 the one-axis kind (the row
+// groups' pairs), 1 every pair (what a one-axis NO got before). range(3):
+// 0 times writing it, 1 checking it (certify, the certificate written
+// once outside the loop).
+void BM_OneAxisCertificate(benchmark::State& state) {
+  const int64_t n = state.range(0);
+  const int64_t side = std::llround(std::sqrt(static_cast<double>(n)));
+  const Instance inst = state.range(1) == 0 ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
+                                            : bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7);
+  const bool every_pair = state.range(2) == 1;
+  CollideCertificate cert = collide_no_certificate(inst, nullptr, false, {}, every_pair);
+  if (cert.text.empty()) state.SkipWithError("no certificate");
+  CertifyResult r;
+  for (auto _ : state) {
+    if (state.range(3) == 0) cert = collide_no_certificate(inst, nullptr, false, {}, every_pair);
+    else r = certify(inst, cert.text, "continuous");
+  }
+  if (state.range(3) == 1 && !r.proved) state.SkipWithError(("refused: " + r.reason).c_str());
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["pairs"] = static_cast<double>(cert.pairs);
+  state.counters["lines"] = static_cast<double>(cert.lines);
+  state.counters["bytes"] = static_cast<double>(cert.text.size());
+}
+BENCHMARK(BM_OneAxisCertificate)
+    ->ArgsProduct({{1024, 4096, 16384}, {0, 1}, {0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 
 // The diagonal sweep (collide/adversarial.hpp): quadratic candidate pairs
 // for the simulator, total motion O(n^{3/2}).
@@ -425,6 +455,13 @@ void register_large_one_axis() {
           ->Args({n, family, 0})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {65536, 262144, 1048576})  // the one-axis certificate: written, checked
+    for (int64_t family : {0, 1})
+      for (int64_t stage : {0, 1})
+        benchmark::RegisterBenchmark("BM_OneAxisCertificate", BM_OneAxisCertificate)
+            ->Args({n, family, 0, stage})
+            ->Iterations(1)
+            ->Unit(benchmark::kMillisecond);
   for (int64_t family : {0, 1, 2})  // every pair: up to a minute at 16 384
     benchmark::RegisterBenchmark("BM_OneAxisCouplings", BM_OneAxisCouplings)
         ->Args({16384, family, 1})

@@ -11,6 +11,7 @@
 
 #include "certify/internal/certificate_text.hpp"
 #include "certify/internal/geometry.hpp"
+#include "lattice/geometry.hpp"
 
 namespace gridlock {
 namespace {
@@ -29,6 +30,8 @@ struct PairLine {
 
 struct CollideText {
   bool header = false, couplings = false;
+  bool one_axis = false;  // p line ends in one-axis: only the row groups' pairs need cover
+  size_t header_line = 0;
   std::map<std::pair<uint32_t, uint32_t>, PairLine> pairs;  // by (smaller, larger) region
 };
 
@@ -80,9 +83,12 @@ std::optional<std::string> read_collide_text(const Instance& inst, const Regions
   auto one = [&](size_t line, const std::vector<std::string_view>& w) -> std::optional<std::string> {
     if (w[0] == "p") {
       if (out.header) return at(line, "a second p line");
-      if (w.size() != 4 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous")
-        return at(line, std::string("expected 'p ") + kHeader + " 1 continuous'");
+      if (w.size() < 4 || w.size() > 5 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous" ||
+          (w.size() == 5 && w[4] != "one-axis"))
+        return at(line, std::string("expected 'p ") + kHeader + " 1 continuous', optionally followed by 'one-axis'");
       out.header = true;
+      out.one_axis = w.size() == 5;
+      out.header_line = line;
       return std::nullopt;
     }
     if (!out.header) return at(line, std::string("expected 'p ") + kHeader + " 1 continuous' first");
@@ -113,17 +119,32 @@ bool one_form_rules_out(const std::vector<CouplingForm>& forms) {
   return false;
 }
 
-// Every line's multipliers, then every pair without a line.
-void check_pairs(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
+// Every r line: its multipliers rule its pair out over the whole cube.
+bool check_lines(const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
   for (const auto& [key, p] : c.pairs) {
     const std::optional<i128> m = max_over_cube(geo.region_forms(p.a, p.b), p.lambda);
-    if (!m) return void(r.reason = at(p.line, "overflow in the combination of the forms"));
+    if (!m) return r.reason = at(p.line, "overflow in the combination of the forms"), false;
     if (*m > 0)
-      return void(r.reason = at(p.line,
-                                "the combination of the forms is positive somewhere in the cube: it rules "
-                                "nothing out"));
+      return r.reason = at(p.line,
+                           "the combination of the forms is positive somewhere in the cube: it rules "
+                           "nothing out"),
+             false;
     ++r.inequalities;
   }
+  return true;
+}
+
+// A pair with no r line: kept apart by the path bounds or by one form
+// alone, or the reason it is not covered.
+std::optional<std::string> uncovered(const Instance& inst, const CertifyGeometry& geo, const PathBounds& bounds,
+                                     uint32_t a, uint32_t b) {
+  if (bounds.apart(a, b) || one_form_rules_out(geo.region_forms(a, b))) return std::nullopt;
+  return region_label(inst, geo.regions(), a) + " and " + region_label(inst, geo.regions(), b) +
+         " have no r line, and no single form rules them out";
+}
+
+// Every pair of regions: a line, or apart by bounds or one form.
+void check_every_pair(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
   // Pairs whose face bounds overlap in x, by a sweep in order of the
   // lowest left face: a later b whose left face is never left of a's
   // right face keeps them apart on its own (A.xhi - B.xlo <= 0 everywhere).
@@ -137,15 +158,71 @@ void check_pairs(const Instance& inst, const CertifyGeometry& geo, const Collide
     for (size_t j = i + 1; j < order.size() && box[order[j]].lo[0] < box[order[i]].hi[1]; ++j) {
       const uint32_t a = std::min(order[i], order[j]), b = std::max(order[i], order[j]);
       if (c.pairs.count({a, b}) || box[a].hi[3] <= box[b].lo[2] || box[b].hi[3] <= box[a].lo[2]) continue;
-      if (!bounds.apart(a, b) && !one_form_rules_out(geo.region_forms(a, b)))
-        return void(r.reason = region_label(inst, regions, a) + " and " + region_label(inst, regions, b) +
-                               " have no r line, and no single form rules them out");
+      if (auto e = uncovered(inst, geo, bounds, a, b)) return void(r.reason = *e);
     }
   r.lemmas = regions.size() * (regions.size() - 1) / 2 - c.pairs.size();
   r.proved = true;
 }
 
+// The one-axis kind: every operation along one axis, and every pair of
+// every row group covered.
+void check_row_groups(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
+  const std::optional<int> axis = operations_axis(inst);
+  if (!axis) return void(r.reason = at(c.header_line, "one-axis, but the operations move along both x and y"));
+  const PathBounds bounds(geo);
+  const std::vector<std::pair<uint32_t, uint32_t>> pairs = row_group_pairs_of(geo.regions(), *axis);
+  for (auto [x, y] : pairs) {
+    const uint32_t a = std::min(x, y), b = std::max(x, y);
+    if (c.pairs.count({a, b})) continue;
+    if (auto e = uncovered(inst, geo, bounds, a, b)) return void(r.reason = *e + " (a pair of one row group)");
+    ++r.lemmas;
+  }
+  r.axioms = pairs.size();
+  r.one_axis = true;
+  r.proved = true;
+}
+
 }  // namespace
+
+std::optional<int> operations_axis(const Instance& inst) {
+  bool x = false, y = false;
+  for (const Operation& o : inst.ops()) (is_horizontal(o.dir) ? x : y) = true;
+  if (x && y) return std::nullopt;
+  return y ? 1 : 0;
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> row_group_pairs_of(const Regions& regions, int axis) {
+  const int m = 2 * axis, across = 2 - m;  // faces m, m + 1 move; face `across` names the row
+  // A unit: a node whose two faces along the axis follow the same node
+  // (every node but a contracting v): its width is 1 at every moment.
+  auto unit = [&](uint32_t i) {
+    const RegionShape& s = regions.shapes[i];
+    return s.kind == RegionKind::Node && s.ref[m] == s.ref[m + 1];
+  };
+  // By row, then by (lo, hi) at the start: a width-0 region at x lands
+  // after one ending at x and before one starting at x.
+  std::vector<std::array<int64_t, 4>> keys(regions.size());
+  for (uint32_t i = 0; i < keys.size(); ++i) {
+    const RegionShape& s = regions.shapes[i];
+    keys[i] = {s.base[across], s.base[m], s.base[m + 1], static_cast<int64_t>(i)};
+  }
+  std::ranges::sort(keys);
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  // Each maximal stretch of one row from a unit (or the row's start) to
+  // the next unit (or the row's end), both ends included, is a group.
+  auto emit = [&](size_t from, size_t to) {  // keys[from .. to)
+    for (size_t i = from; i < to; ++i)
+      for (size_t j = i + 1; j < to; ++j)
+        out.emplace_back(static_cast<uint32_t>(keys[i][3]), static_cast<uint32_t>(keys[j][3]));
+  };
+  size_t start = 0;
+  for (size_t i = 0; i < keys.size(); ++i) {
+    const bool row_ends = i + 1 == keys.size() || keys[i + 1][0] != keys[i][0];
+    if (unit(static_cast<uint32_t>(keys[i][3])) && i > start) emit(start, i + 1), start = i;
+    if (row_ends) emit(start, i + 1), start = i + 1;
+  }
+  return out;
+}
 
 bool is_collide_certificate(std::string_view text) {
   bool collide = false;
@@ -162,7 +239,9 @@ void check_collide_proof(const Instance& inst, std::string_view text, CertifyRes
   CollideText c;
   if (auto e = read_collide_text(inst, geo.regions(), text, c)) return void(r.reason = *e);
   if (auto e = geo.cycle_breaker()) return void(r.reason = *e);
-  check_pairs(inst, geo, c, r);
+  if (!check_lines(geo, c, r)) return;
+  if (c.one_axis) check_row_groups(inst, geo, c, r);
+  else check_every_pair(inst, geo, c, r);
 }
 
 }  // namespace gridlock

@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "collide/internal/collide_pairs.hpp"
@@ -147,14 +148,15 @@ std::string region_word(const Instance& inst, const Regions& regions, uint32_t r
 }
 
 // The p and couplings lines (docs/certificates.md, "Format").
-std::string header(const Instance& inst) {
-  return "p gridlock-collide-no-certificate 1 continuous\n" + couplings_line(inst);
+std::string header(const Instance& inst, bool one_axis) {
+  return std::string("p gridlock-collide-no-certificate 1 continuous") + (one_axis ? " one-axis" : "") + "\n" +
+         couplings_line(inst);
 }
 
 }  // namespace
 
 CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* deadline, bool partial,
-                                          const std::function<void(uint64_t, uint64_t)>& on_source) {
+                                          const std::function<void(uint64_t, uint64_t)>& on_source, bool every_pair) {
   CollideCertificate out;
   const FaceNets faces = FaceNets::build(inst);
   if (std::ranges::any_of(faces.coupling_breaks_cycle, [](char b) { return b != 0; })) {
@@ -173,19 +175,26 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
     for (int64_t v : *lam) body += " " + std::to_string(v);
     body += "\n";
   };
+  // One axis: only the row groups' pairs (the first collision is in one).
+  std::optional<std::vector<std::pair<uint32_t, uint32_t>>> groups;
+  if (!every_pair) groups = one_axis_group_pairs(inst, regions);
+  out.one_axis = groups.has_value();
   PairwiseStats stats;
-  if (auto hit = pairwise_collision(inst, tree, regions, TimeModel::Continuous, &stats, deadline,
-                                    ZonotopeTest::Incremental, on_source, on_apart)) {
-    out.pairs = stats.pairs;
+  const std::optional<PairCollision> hit = groups ? listed_pairs_collision(inst, tree, regions, TimeModel::Continuous,
+                                                                           *groups, &stats, deadline, on_apart)
+                                                  : pairwise_collision(inst, tree, regions, TimeModel::Continuous,
+                                                                       &stats, deadline, ZonotopeTest::Incremental,
+                                                                       on_source, on_apart);
+  out.pairs = stats.pairs;
+  if (hit) {
     out.why_none = region_label(inst, regions, hit->a) + " and " + region_label(inst, regions, hit->b) +
                    " can collide in continuous time";
     out.meet_a = hit->a, out.meet_b = hit->b;
-    if (partial) out.text = header(inst) + body;
+    if (partial) out.text = header(inst, out.one_axis) + body;
     return out;
   }
   if (on_source) on_source(inst.num_nodes(), inst.num_nodes());
-  out.pairs = stats.pairs;
-  out.text = header(inst) + body;
+  out.text = header(inst, out.one_axis) + body;
   return out;
 }
 

@@ -10,6 +10,11 @@
 // every pair that no single f_i rules out, derives lambda from a
 // Fourier-Motzkin elimination of the pair's projected system that carries
 // each constraint's multipliers along (exact 128-bit integers).
+//
+// When every operation moves along one axis, the first collision is always
+// between two regions of one row group (docs/collide.md, "One axis, any
+// couplings"), so the certificate's p line says `one-axis` and covers only
+// the O(n) group pairs; the checker computes the groups itself.
 #pragma once
 
 #include <cstdint>
@@ -22,10 +27,11 @@
 namespace gridlock {
 
 struct CollideCertificate {
-  std::string text;      // the certificate; empty when there is none
-  std::string why_none;  // when text is empty: why
-  uint64_t pairs = 0;    // region pairs covered
-  uint64_t lines = 0;    // of which with an r line (the others: one form rules them out)
+  std::string text;       // the certificate; empty when there is none
+  std::string why_none;   // when text is empty: why
+  uint64_t pairs = 0;     // region pairs covered
+  uint64_t lines = 0;     // of which with an r line (the others: one form rules them out)
+  bool one_axis = false;  // the one-axis kind: pairs are the row groups' pairs only
   // Some pair can overlap in continuous time: the first one found (regions).
   uint32_t meet_a = kNone, meet_b = kNone;
 };
@@ -34,16 +40,22 @@ struct CollideCertificate {
 // (hence none in discrete time either). None (why_none) when a coupling
 // breaks a cycle or some pair of regions can overlap in continuous time
 // (then some discrete schedule collides too: docs/collide.md, "the models
-// agree"; a discrete NO without a certificate would be a bug). Time: the pairwise
-// traversal, O(n^2) steps and O(R^2) pair tests, plus O(nets) per pair;
-// deadline as in find_collision (LimitReached).
+// agree"; a discrete NO without a certificate would be a bug).
+// Kind: when every operation moves along one axis (and every_pair is
+// false), the one-axis kind: the row groups' pairs only, walked as
+// listed_pairs_collision walks them, O(n log n + n sqrt(n)) plus O(nets)
+// per pair found apart; otherwise every pair: the pairwise traversal,
+// O(n^2) steps and O(R^2) pair tests, plus O(nets) per pair. Deadline as
+// in find_collision (LimitReached).
 // partial (for tests): when a pair can overlap, text still holds the lines
 // of the pairs found apart before it (a certificate the checker refuses,
 // whose lines it checks one by one). on_source (optional): (source nodes
 // done, total) of the traversal before each source node, and (total,
-// total) when a certificate is complete.
+// total) when a certificate is complete (the one-axis kind calls it at
+// the end only).
 CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* deadline = nullptr,
                                           bool partial = false,
-                                          const std::function<void(uint64_t, uint64_t)>& on_source = {});
+                                          const std::function<void(uint64_t, uint64_t)>& on_source = {},
+                                          bool every_pair = false);
 
 }  // namespace gridlock

@@ -300,7 +300,8 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
 std::optional<PairCollision> listed_pairs_collision(const Instance& inst, const SpanningTree& tree,
                                                     const Regions& regions, TimeModel model,
                                                     const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                                                    PairwiseStats* stats, const Deadline* deadline) {
+                                                    PairwiseStats* stats, const Deadline* deadline,
+                                                    const ApartFn& on_apart) {
   const size_t n = inst.num_nodes();
   const std::vector<RegionForm> forms = region_forms(inst, regions);
   // Per node: depth, the coupling and vector of the edge from its parent
@@ -354,7 +355,7 @@ std::optional<PairCollision> listed_pairs_collision(const Instance& inst, const 
     const auto [a, b] = pairs[i];
     move(end_a, forms[a].ref, -1);
     move(end_b, forms[b].ref, +1);
-    found = test_pair(forms, a, b, path, model, ZonotopeTest::Incremental, st, {});
+    found = test_pair(forms, a, b, path, model, ZonotopeTest::Incremental, st, on_apart);
     if (found) break;
   }
   if (stats) *stats = st;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "support/cli.hpp"
+#include "support/instance_io.hpp"
 
 namespace gridlock {
 namespace {
@@ -146,6 +147,52 @@ TEST(CertifyCli, CollideCertificateEndToEnd) {
   const std::string square = test::write_file(d + "/sq.grid", kSquare);
   EXPECT_EQ(run_gridlock({"collide", square, "--certificate", d + "/sq.cert"}).exit_code, 10);
   EXPECT_FALSE(std::filesystem::exists(d + "/sq.cert"));
+}
+
+// One axis: collide writes the one-axis kind (only the row groups' pairs),
+// certify checks it and says so; the one-axis p line is refused on an
+// instance whose operations use both axes, and on a YES (kPush) the
+// certificate of the same shape with its expansion moved (a NO) is refused
+// at the row group pair that meets.
+TEST(CertifyCli, CollideOneAxisCertificateEndToEnd) {
+  const std::string d = test::temp_dir();
+  const std::string row = test::write_file(d + "/row.grid", test::expansion_row_grid(41, 3)), cert = d + "/row.cert";
+  const auto w = run_gridlock({"collide", row, "--certificate", cert, "--json"});
+  ASSERT_EQ(w.exit_code, 20) << w.out << w.err;
+  EXPECT_NE(w.out.find("\"certificate_kind\":\"one-axis\""), std::string::npos) << w.out;
+  // 41 units and 20 inserted nodes: 40 pairs of neighbour units, and each
+  // inserted node with the two units around it.
+  EXPECT_NE(w.out.find("80 pairs of regions (one axis: the row groups' pairs)"), std::string::npos) << w.out;
+  const std::string text = test::read_file(cert);
+  EXPECT_EQ(text.rfind("p gridlock-collide-no-certificate 1 continuous one-axis\n", 0), 0U) << text;
+  for (const char* model : {"continuous", "discrete"}) {
+    const auto c = run_gridlock({"certify", row, cert, "--model", model});
+    EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+    EXPECT_NE(c.out.find("one axis, 80 pairs in row groups"), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find("c certificate checked"), std::string::npos) << c.out;
+  }
+  const std::string diag = test::write_file(d + "/diag.grid", kDiagonal), dcert = d + "/diag.cert";
+  ASSERT_EQ(run_gridlock({"collide", diag, "--certificate", dcert}).exit_code, 20);
+  std::string both = test::read_file(dcert);
+  both.insert(both.find('\n'), " one-axis");
+  const std::string bothf = test::write_file(d + "/both.cert", both);
+  const auto b = run_gridlock({"certify", diag, bothf});
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_NE(b.err.find(bothf + ":1: certificate rejected: one-axis, but the operations move along both x and y"),
+            std::string::npos)
+      << b.err;
+  std::string moved = kPush;
+  moved.replace(moved.find("o a expand 0 0"), 14, "o a expand 1 1");
+  const std::string no = test::write_file(d + "/moved.grid", moved), ncert = d + "/moved.cert";
+  ASSERT_EQ(run_gridlock({"collide", no, "--certificate", ncert}).exit_code, 20);
+  const std::string push = test::write_file(d + "/push.grid", kPush);
+  ASSERT_EQ(run_gridlock({"collide", push}).exit_code, 10);
+  const auto y = run_gridlock({"certify", push, ncert});
+  EXPECT_EQ(y.exit_code, 1);
+  EXPECT_NE(y.err.find("node (1,0) and node (2,0) have no r line, and no single form rules them out (a pair of one "
+                       "row group)"),
+            std::string::npos)
+      << y.err;
 }
 
 TEST(CertifyCli, VerifyAndGenInstancesUseIt) {

@@ -5,14 +5,18 @@
 // certificates are refused, and no YES instance gets one accepted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "certify/certify.hpp"
+#include "certify/internal/collide_proof.hpp"
 #include "certify/internal/geometry.hpp"
 #include "collide/collide.hpp"
 #include "collide/collide_certificate.hpp"
+#include "collide/internal/collide_pairs.hpp"
 #include "common/random.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/random_instance.hpp"
@@ -214,15 +218,22 @@ TEST(CertifyCollide, EveryNoCertifiedAndMutationsRefused) {
   EXPECT_GT(n.with_lines, test::scaled(50));
 }
 
-// Progress: the writer reports its traversal's source nodes (growing, the
-// last with done == total), and a listener changes nothing in the text.
+// Progress: the every-pair writer reports its traversal's source nodes
+// (growing, the last with done == total), and a listener changes nothing
+// in the text.
 TEST(CertifyCollide, WriterReportsProgress) {
   const Instance inst = test::parse_instance(test::expansion_row_grid(40, 0));
   std::vector<std::pair<uint64_t, uint64_t>> seen;
   const CollideCertificate cert = collide_no_certificate(
-      inst, nullptr, false, [&](uint64_t done, uint64_t total) { seen.emplace_back(done, total); });
+      inst, nullptr, false, [&](uint64_t done, uint64_t total) { seen.emplace_back(done, total); }, true);
   ASSERT_FALSE(cert.text.empty()) << cert.why_none;
-  EXPECT_EQ(cert.text, collide_no_certificate(inst).text);
+  EXPECT_EQ(cert.text, collide_no_certificate(inst, nullptr, false, {}, true).text);
+  // The one-axis kind (a row: fast) reports its end only.
+  std::vector<std::pair<uint64_t, uint64_t>> one_axis;
+  const CollideCertificate rows = collide_no_certificate(
+      inst, nullptr, false, [&](uint64_t done, uint64_t total) { one_axis.emplace_back(done, total); });
+  EXPECT_TRUE(rows.one_axis);
+  EXPECT_EQ(one_axis, (std::vector<std::pair<uint64_t, uint64_t>>{{inst.num_nodes(), inst.num_nodes()}}));
   ASSERT_GE(seen.size(), 2u);
   for (size_t i = 0; i < seen.size(); ++i) {
     EXPECT_EQ(seen[i].second, inst.num_nodes());
@@ -319,6 +330,105 @@ TEST(CertifyCollide, FaceAndPathBoundsHoldEverywhere) {
   std::cout << "[certify-collide] " << checked << " overlap forms within the face bounds; " << apart
             << " pairs set apart by the path bounds, each with a form <= 0 on the cube\n";
   EXPECT_GT(apart, test::scaled(1000));
+}
+
+// One axis, any couplings: the checker's row groups (row_group_pairs_of,
+// its own code) are collide's (one_axis_group_pairs), pair for pair; on a
+// NO the one-axis certificate is accepted in both models, its r lines are
+// among those of the every-pair certificate, and each line dropped, or
+// the one-axis p line on an instance whose operations use both axes, is
+// refused; on a YES the one-axis p line without lines is refused (some
+// group pair can overlap). Horizontal instances, some transposed to
+// vertical.
+std::set<std::pair<uint32_t, uint32_t>> ordered(const std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+  std::set<std::pair<uint32_t, uint32_t>> out;
+  for (auto [a, b] : pairs) out.emplace(std::min(a, b), std::max(a, b));
+  return out;
+}
+
+std::vector<std::string> r_lines(const std::string& text) {
+  std::vector<std::string> out;
+  for (const std::string& l : lines_of(text))
+    if (l.rfind("r ", 0) == 0) out.push_back(l);
+  std::ranges::sort(out);
+  return out;
+}
+
+std::string with_one_axis(const std::string& text) {
+  std::vector<std::string> lines = lines_of(text);
+  lines.at(0) += " one-axis";
+  return join(lines);
+}
+
+TEST(CertifyCollide, OneAxisKindCoversTheRowGroups) {
+  int instances = 0, one_axis = 0, no = 0, lines = 0, fewer = 0, two_axes = 0, yes_refused = 0;
+  uint64_t group_pairs = 0, all_pairs = 0;
+  for (int i = 0; i < test::scaled(3000); ++i) {
+    const uint64_t seed = test::base_seed(97000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 8191 + 11);
+    RandomInstanceParams p = cert_params(rng);
+    const bool horizontal = rng.below(8) != 0;
+    p.horizontal_only = horizontal;
+    if (rng.below(3) == 0)
+      p.nodes += static_cast<uint32_t>(rng.below(60)), p.ops += static_cast<uint32_t>(rng.below(30));
+    const Instance made = random_instance(p, seed);
+    const Instance inst = horizontal && rng.below(2) == 0 ? test::rebuilt(made, true, false) : made;
+    const std::string at = where(seed);
+    const FaceNets faces = FaceNets::build(inst);
+    if (std::ranges::any_of(faces.coupling_breaks_cycle, [](char b) { return b != 0; })) continue;
+    ++instances;
+    const Regions regions = Regions::build(inst);
+    const auto groups = one_axis_group_pairs(inst, regions);
+    const std::optional<int> axis = operations_axis(inst);
+    ASSERT_EQ(groups.has_value(), axis.has_value()) << at;
+    if (axis) {
+      const auto mine = ordered(row_group_pairs_of(regions, *axis));
+      ASSERT_EQ(mine, ordered(*groups)) << at;
+      ++one_axis;
+      group_pairs += mine.size();
+      all_pairs += regions.size() * (regions.size() - 1) / 2;
+    }
+    const CollideCertificate cert = collide_no_certificate(inst);
+    if (cert.text.empty()) {  // YES: a one-axis certificate without lines is refused
+      const std::string bare = "p gridlock-collide-no-certificate 1 continuous one-axis\n" + couplings_line(inst);
+      EXPECT_FALSE(certify(inst, bare, "continuous").proved) << at;
+      yes_refused += axis.has_value();
+      continue;
+    }
+    ++no;
+    const CollideCertificate every = collide_no_certificate(inst, nullptr, false, {}, true);
+    ASSERT_FALSE(every.text.empty()) << at;
+    ASSERT_FALSE(every.one_axis) << at;
+    EXPECT_TRUE(certify(inst, every.text, "continuous").proved) << at;
+    if (!axis) {  // both axes: the one-axis p line is refused whatever the lines
+      ASSERT_FALSE(cert.one_axis) << at;
+      const CertifyResult r = certify(inst, with_one_axis(cert.text), "continuous");
+      EXPECT_TRUE(!r.proved && blames_line(r, 1)) << at << ": " << r.reason;
+      ++two_axes;
+      continue;
+    }
+    ASSERT_TRUE(cert.one_axis) << at;
+    for (const char* model : {"continuous", "discrete"}) {
+      const CertifyResult r = certify(inst, cert.text, model);
+      ASSERT_TRUE(r.proved) << at << ": " << r.reason << "\n" << cert.text;
+      EXPECT_TRUE(r.one_axis) << at;
+      EXPECT_EQ(r.axioms, groups->size()) << at;
+      EXPECT_EQ(r.inequalities, cert.lines) << at;
+    }
+    const std::vector<std::string> mine = r_lines(cert.text), all = r_lines(every.text);
+    EXPECT_TRUE(std::ranges::includes(all, mine)) << at << ":\n" << cert.text << "every pair:\n" << every.text;
+    lines += static_cast<int>(mine.size());
+    fewer += mine.size() < all.size();
+    expect_mutations_refused(inst, cert.text, true, rng, at);
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::cout << "[certify-collide] one axis: " << instances << " instances (" << one_axis << " on one axis), "
+            << group_pairs << " group pairs of " << all_pairs << " pairs; " << no << " NO certified (" << two_axes
+            << " on both axes refused the one-axis p line), " << lines << " r lines, " << fewer
+            << " certificates with fewer lines than every pair's; " << yes_refused
+            << " YES refused a one-axis certificate without lines\n";
+  EXPECT_GT(no, test::scaled(300));
+  EXPECT_GT(yes_refused, test::scaled(300));
 }
 
 }  // namespace

@@ -179,10 +179,16 @@ TEST(CollideCommand, CertificateOptionOnAYesLeavesTheFileAndSaysSo) {
   EXPECT_NE(d.out.find("only a NO has one (the witness of this YES is on the 'v' lines); nothing printed"),
             std::string::npos)
       << d.out;
-  // A row of 20 000 nodes with couplings of 3: its NO takes well under a
-  // second, its certificate (every pair) far more than one, so the limit
+  // A row of 20 000 nodes with singleton expansions and a stub of two nodes
+  // above its first with one vertical expansion: its NO (the tree method)
+  // takes well under a second; its certificate covers every pair (the
+  // operations use both axes), far more than one second, so the limit
   // comes while it is written (or, on a slow machine, before the answer).
-  test::write_file(dir + "/row.grid", test::expansion_row_grid(20000, 3));
+  std::string row = test::expansion_row_grid(20000, 1);
+  row.replace(0, row.find('\n'), "p grid 20002 20001 10001 10000");
+  row.insert(row.find("e 0 0 1 0"), "n 0 1\nn 0 2\n");
+  row.insert(row.find("o e0 "), "e 0 0 0 1\ne 0 1 0 2\no v expand 0 1 +y\n");
+  test::write_file(dir + "/row.grid", row);
   auto t = run_gridlock({"collide", dir + "/row.grid", "--timeout", "1", "--certificate", dir + "/old.cert"});
   EXPECT_TRUE(t.exit_code == 20 || t.exit_code == 0) << t.out << t.err;
   EXPECT_NE(t.out.find("old.cert is left as it was (not this answer's)"), std::string::npos) << t.out;

@@ -63,8 +63,13 @@ int run_certify(const std::vector<std::string>& args) {
     ans.comment(std::to_string(r.inequalities) + " gap inequalities derived, " + std::to_string(r.axioms) +
                 " closure clauses, " + std::to_string(r.lemmas) + " lemmas checked");
   if (r.kind == "collide")
-    ans.comment("no schedule collides (gridlock collide's NO, in both models): " + std::to_string(r.inequalities) +
-                " pairs of regions kept apart by their multipliers, " + std::to_string(r.lemmas) + " by one form");
+    ans.comment("no schedule collides (gridlock collide's NO, in both models): " +
+                (r.one_axis ? "one axis, " + std::to_string(r.axioms) +
+                                  " pairs in row groups (a first collision is in "
+                                  "one), "
+                            : std::string()) +
+                std::to_string(r.inequalities) + " pairs of regions kept apart by their multipliers, " +
+                std::to_string(r.lemmas) + " by one form");
   if (r.kind == "bounds")
     ans.comment(std::to_string(r.inequalities) + " clauses checked against the instance, " + std::to_string(r.axioms) +
                 " selector definitions, " + std::to_string(r.lemmas) + " lemmas checked");
@@ -72,6 +77,7 @@ int run_certify(const std::vector<std::string>& args) {
   ans.data()["kind"] = r.kind;
   ans.data()["model"] = model;
   ans.data()["lemmas"] = r.lemmas;
+  if (r.one_axis) ans.data()["row_group_pairs"] = r.axioms;
   return ans.finish(Verdict::No);
 }
 

@@ -15,11 +15,22 @@
 //      plus its positive coefficients: the maximum over the cube).
 // Continuous time reaches every p in the cube and the discrete model's
 // states are among them, so the certificate proves NO in both models.
+//
+// The one-axis kind (p line ending in `one-axis`): every operation moves
+// along one axis, and step 2 is required only of the pairs of each row
+// group (row_group_pairs_of). The first collision of any schedule is
+// between two regions of one group (docs/collide.md, "One axis, any
+// couplings", a proof), so these pairs apart means no collision at all.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "certify/certify.hpp"
+#include "lattice/motion.hpp"
 
 namespace gridlock {
 
@@ -29,12 +40,29 @@ bool is_collide_certificate(std::string_view text);
 
 // Checks text as a collide certificate of inst; sets r.kind ("collide"),
 // r.proved or r.reason ("line N: ..." where a line is to blame),
-// r.inequalities (r lines checked) and r.lemmas (pairs the checker ruled
-// out without a line). Exact integers, overflow a reason. Time: O(R log R)
+// r.inequalities (r lines checked), r.lemmas (pairs the checker ruled
+// out without a line) and, for the one-axis kind, r.axioms (the row
+// groups' pairs). Exact integers, overflow a reason. Time: O(R log R)
 // for the face bounds of every region and a sweep over them, O(log n) for
-// the path bounds of each pair the sweep meets (O(R^2) of them at worst),
-// O(L) for the forms of each r line and of each pair those bounds leave
-// (tree paths of length L); O(e L) for the cycles.
+// the path bounds of each pair the sweep meets (O(R^2) of them at worst;
+// one-axis: the O(R) group pairs only), O(L) for the forms of each r line
+// and of each pair those bounds leave (tree paths of length L); O(e L)
+// for the cycles.
 void check_collide_proof(const Instance& inst, std::string_view text, CertifyResult& r);
+
+// The axis every operation moves along: 0 for x (also with no
+// operations), 1 for y; nullopt when they use both. O(ops).
+std::optional<int> operations_axis(const Instance& inst);
+
+// The pairs of every row group along axis (0: x, 1: y), each once: the
+// regions of each row (same position across the axis) sorted by (lo, hi,
+// region id) of their extent along the axis at the start; the units
+// (nodes whose two faces along the axis follow one node, so their width
+// never changes) cut each row into groups, a group being two consecutive
+// units with every region between them (and the regions before a row's
+// first unit or after its last, with it; a row without units is one
+// group). O(R log R + pairs); O(R) pairs when each node takes part in
+// at most one operation.
+std::vector<std::pair<uint32_t, uint32_t>> row_group_pairs_of(const Regions& regions, int axis);
 
 }  // namespace gridlock

@@ -171,11 +171,14 @@ std::optional<PairCollision> pairwise_collision(const Instance& inst, const Span
 // pairs, plus one exact test per pair. The continuous model uses the
 // support table (ZonotopeTest::Incremental), the discrete one the subset
 // sums. First meeting pair in that order, with its witness, or nullopt.
-// Requires that no coupling breaks a cycle; deadline as pairwise_collision.
+// Requires that no coupling breaks a cycle; deadline and on_apart as
+// pairwise_collision (on_apart: every listed pair the exact test finds
+// apart, before the first meeting one).
 std::optional<PairCollision> listed_pairs_collision(const Instance& inst, const SpanningTree& tree,
                                                     const Regions& regions, TimeModel model,
                                                     const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                                                    PairwiseStats* stats = nullptr, const Deadline* deadline = nullptr);
+                                                    PairwiseStats* stats = nullptr, const Deadline* deadline = nullptr,
+                                                    const ApartFn& on_apart = {});
 
 // One axis, any couplings (docs/collide.md, "One axis, any couplings"):
 // when every operation moves along x (or every one along y) and no
