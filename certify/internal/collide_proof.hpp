@@ -60,9 +60,10 @@ std::optional<int> operations_axis(const Instance& inst);
 // (nodes whose two faces along the axis follow one node, so their width
 // never changes) cut each row into groups, a group being two consecutive
 // units with every region between them (and the regions before a row's
-// first unit or after its last, with it; a row without units is one
-// group). O(R log R + pairs); O(R) pairs when each node takes part in
-// at most one operation.
+// first unit or after its last, with it). Every row has a unit: an
+// inserted, grown or contracting region lies in the row of the unit it
+// is attached to. O(R log R + pairs); O(R) pairs when each node takes
+// part in at most one operation.
 std::vector<std::pair<uint32_t, uint32_t>> row_group_pairs_of(const Regions& regions, int axis);
 
 }  // namespace gridlock
