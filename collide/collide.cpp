@@ -299,7 +299,8 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   }
 
   // 2. One coupling: one schedule in both models, decided by one sort per
-  // row when every operation is on one axis (O(n log n)), else by the
+  // row when every operation is on one axis (O(n log n)), a NO by one
+  // moment when no two faces change order (O(n log n)), else by the
   // space-time cell sweep (single_coupling.hpp). Both name the first
   // collision, checked at one moment; a YES of the sweep's packing bound
   // names none and is simulated.
@@ -310,6 +311,10 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     if (answer) {
       res.algorithm = "single-coupling-one-axis";
       res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
+    } else if (single_coupling_fixed_order_no(inst, sim.tree(), sim.regions())) {
+      res.algorithm = "single-coupling-fixed-order";
+      res.complexity = "O(n log n) (no two faces change order: one moment decides)";
+      return res;
     } else {
       res.algorithm = "single-coupling";
       res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <iterator>
+#include <map>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -382,6 +384,69 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
   for (const auto& [x, y] : pairs) best.test(faces, x, y);
   if (tests) *tests = pairs.size();
   return named(best);
+}
+
+namespace {
+
+// The faces of one axis (2 axis, 2 axis + 1) of every live region keep
+// their order on (0, 1): sorted by the order just after 0 (value at 0,
+// then slope), their values at 1 do not decrease. Then for i < j, f_i -
+// f_j is < 0 just after 0 (or f_i = f_j) and <= 0 at 1, so, linear, < 0
+// on all of (0, 1): no two ever swap. Neighbours suffice (<= is
+// transitive); a pair that swaps makes some neighbours decrease at 1.
+// O(r log r).
+bool order_fixed(const std::vector<Faces>& faces, const std::vector<uint32_t>& live, size_t axis) {
+  std::vector<Lin> ends;
+  ends.reserve(2 * live.size());
+  for (uint32_t r : live) ends.push_back(faces[r][2 * axis]), ends.push_back(faces[r][2 * axis + 1]);
+  std::sort(ends.begin(), ends.end(), [](const Lin& f, const Lin& g) { return f.a != g.a ? f.a < g.a : f.b < g.b; });
+  for (size_t i = 0; i + 1 < ends.size(); ++i) {
+    if (ends[i + 1].a + ends[i + 1].b < ends[i].a + ends[i].b) return false;
+  }
+  return true;
+}
+
+// Does some pair of the live regions overlap at t = 1/2? Coordinates
+// doubled (2a + b, integers); a sweep in x keeps the boxes that contain
+// the sweep line by their low y face: those pairwise x-overlap, so with no
+// overlap so far their y intervals are disjoint and only the neighbours
+// of a new box can overlap it. O(r log r).
+bool overlap_at_half(const std::vector<Faces>& faces, const std::vector<uint32_t>& live) {
+  auto at = [&](uint32_t r, size_t f) { return 2 * faces[r][f].a + faces[r][f].b; };
+  struct Event {
+    int64_t x;
+    int kind;  // 0 leaves (before any entry at the same x: touching is no overlap), 1 enters
+    uint32_t r;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * live.size());
+  for (uint32_t r : live) events.push_back({at(r, 1), 0, r}), events.push_back({at(r, 0), 1, r});
+  std::sort(events.begin(), events.end(), [](const Event& e, const Event& f) {
+    return e.x != f.x ? e.x < f.x : e.kind != f.kind ? e.kind < f.kind : e.r < f.r;
+  });
+  std::map<int64_t, int64_t> active;  // low y -> high y
+  for (const Event& e : events) {
+    const int64_t lo = at(e.r, 2), hi = at(e.r, 3);
+    if (e.kind == 0) {
+      active.erase(lo);
+      continue;
+    }
+    const auto next = active.lower_bound(lo);
+    if (next != active.end() && next->first < hi) return true;
+    if (next != active.begin() && std::prev(next)->second > lo) return true;
+    active.emplace(lo, hi);
+  }
+  return false;
+}
+
+}  // namespace
+
+bool single_coupling_fixed_order_no(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+  const std::vector<Faces> faces = region_faces(inst, t, regions);
+  std::vector<uint32_t> live;
+  for (uint32_t r = 0; r < faces.size(); ++r)
+    if (!alive(faces[r]).empty()) live.push_back(r);
+  return order_fixed(faces, live, 0) && order_fixed(faces, live, 1) && !overlap_at_half(faces, live);
 }
 
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,

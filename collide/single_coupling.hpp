@@ -97,6 +97,18 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
                                                              const Regions& regions, uint64_t* tests = nullptr);
 
+// A NO in O(r log r) when the motion keeps every order: if no two faces
+// of one axis (xlo and xhi of every live region; ylo and yhi) change
+// order during (0, 1), then each of the strict inequalities of the
+// overlap test (overlap_span: faces of one axis compared) is true on all
+// of (0, 1) or on none of it, so two regions overlap at some t iff they
+// overlap at t = 1/2 (docs/collide.md, "One coupling: when the motion
+// keeps every order"). True iff the orders are kept and no two live
+// regions overlap at t = 1/2: then no pair ever overlaps. False says
+// nothing (the orders change, or a pair overlaps: ask the sweep, which
+// also names the first collision).
+bool single_coupling_fixed_order_no(const Instance& inst, const SpanningTree& t, const Regions& regions);
+
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t, const Regions& regions);

@@ -43,6 +43,7 @@ RandomInstanceParams single_params(Rng& rng) {
 
 struct Tally {
   int cases = 0, yes = 0, no = 0, brute = 0, cycles = 0, by_packing = 0, multi_band = 0, first_named = 0, pruned = 0;
+  int fixed_order = 0;  // NOs decided by one moment (single_coupling_fixed_order_no)
   uint64_t max_active = 0;
 };
 
@@ -86,6 +87,11 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
   ASSERT_EQ(sweep, pairs.has_value()) << where;
   (sweep ? tally.yes : tally.no)++;
   ++tally.cases;
+  // The one-moment NO is never claimed where a pair overlaps.
+  if (single_coupling_fixed_order_no(inst, sim.tree(), sim.regions())) {
+    ASSERT_FALSE(sweep) << where << ": a NO by one moment, but the pair tests find an overlap";
+    ++tally.fixed_order;
+  }
   tally.max_active = std::max<uint64_t>(tally.max_active, st.max_active);
   // Bounded memory: sweeping in column bands of a few items gives the
   // same answer, pair included, with the same items and tests.
@@ -172,13 +178,15 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << tally.by_packing << " decided by the packing bound; " << tally.first_named
             << " first collisions equal to the simulator's; most items present at an entry " << tally.max_active << "; "
             << tally.multi_band << " banded sweeps of several bands, " << tally.pruned
-            << " of them keeping fewer items after an overlap)\n";
+            << " of them keeping fewer items after an overlap; " << tally.fixed_order
+            << " NOs by one moment, no order changing)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
   EXPECT_GT(tally.first_named, cases / 10);
   EXPECT_GT(tally.pruned, cases / 20);
   EXPECT_GT(tally.no, cases / 10);
+  EXPECT_GT(tally.fixed_order, cases / 10);
 }
 
 // Larger shapes, long paths: more motion, more items per cell.
@@ -321,6 +329,28 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
   }
   EXPECT_GT(pairs[1], 150 * pairs[0]) << pairs[0] << " -> " << pairs[1];
   EXPECT_LT(items[1], 80 * items[0]) << items[0] << " -> " << items[1];
+}
+
+// The square serpentine keeps every order (no two faces of an axis swap),
+// so Auto answers its NO by one moment; the sweep and the simulator agree.
+// The diagonal sweep's orders change: Auto keeps the sweep there.
+TEST(SingleCouplingSweep, SerpentineIsDecidedByOneMoment) {
+  for (int64_t n : {64, 256, 1024}) {
+    const Instance inst = serpentine_instance(square_serpentine(n, 1u << 30, SerpentineCouplings::Mixed), 1);
+    const std::string where = "serpentine of " + std::to_string(n);
+    ASSERT_EQ(inst.couplings().size(), 1u) << where;
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_FALSE(r.collides) << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-fixed-order") << where;
+    Simulator sim(inst);
+    EXPECT_TRUE(single_coupling_fixed_order_no(inst, sim.tree(), sim.regions())) << where;
+    EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
+    EXPECT_FALSE(sim.run_order({0}).collision) << where;
+  }
+  const Instance diagonal = diagonal_sweep_instance(5, 4);
+  Simulator sim(diagonal);
+  EXPECT_FALSE(single_coupling_fixed_order_no(diagonal, sim.tree(), sim.regions()));
+  EXPECT_EQ(find_collision(diagonal, TimeModel::Continuous).algorithm, "single-coupling");
 }
 
 // The diagonal sweep with its post (collide/adversarial.hpp): YES, first
