@@ -11,7 +11,6 @@
 
 #include "certify/internal/certificate_text.hpp"
 #include "certify/internal/geometry.hpp"
-#include "lattice/geometry.hpp"
 
 namespace gridlock {
 namespace {
@@ -167,7 +166,7 @@ void check_every_pair(const Instance& inst, const CertifyGeometry& geo, const Co
 // The one-axis kind: every operation along one axis, and every pair of
 // every row group covered.
 void check_row_groups(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
-  const std::optional<int> axis = operations_axis(inst);
+  const std::optional<int> axis = inst.moving_axis();
   if (!axis) return void(r.reason = at(c.header_line, "one-axis, but the operations move along both x and y"));
   const PathBounds bounds(geo);
   const std::vector<std::pair<uint32_t, uint32_t>> pairs = row_group_pairs_of(geo.regions(), *axis);
@@ -183,13 +182,6 @@ void check_row_groups(const Instance& inst, const CertifyGeometry& geo, const Co
 }
 
 }  // namespace
-
-std::optional<int> operations_axis(const Instance& inst) {
-  bool x = false, y = false;
-  for (const Operation& o : inst.ops()) (is_horizontal(o.dir) ? x : y) = true;
-  if (x && y) return std::nullopt;
-  return y ? 1 : 0;
-}
 
 std::vector<std::pair<uint32_t, uint32_t>> row_group_pairs_of(const Regions& regions, int axis) {
   const int m = 2 * axis, across = 2 - m;  // faces m, m + 1 move; face `across` names the row

@@ -13,7 +13,7 @@ namespace gridlock {
 
 std::optional<std::vector<std::pair<uint32_t, uint32_t>>> one_axis_group_pairs(const Instance& inst,
                                                                                const Regions& regions) {
-  const std::optional<int> axis = moving_axis(inst);
+  const std::optional<int> axis = inst.moving_axis();
   if (!axis) return std::nullopt;
   const std::vector<RegionForm> forms = region_forms(inst, regions);
   const int m = 2 * *axis, c = 2 - m;  // faces m, m + 1 move along the axis; face c names the row

@@ -357,7 +357,7 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 
 std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
                                                              const Regions& regions, uint64_t* tests) {
-  const std::optional<int> axis = moving_axis(inst);
+  const std::optional<int> axis = inst.moving_axis();
   if (!axis) return std::nullopt;
   const std::vector<Faces> faces = region_faces(inst, t, regions);
   const size_t m = 2 * static_cast<size_t>(*axis), c = 2 - m;  // faces m, m + 1 move; c, c + 1 stay one unit apart

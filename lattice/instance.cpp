@@ -93,6 +93,13 @@ bool Instance::horizontal_only() const {
   return std::all_of(ops_.begin(), ops_.end(), [](const Operation& o) { return is_horizontal(o.dir); });
 }
 
+std::optional<int> Instance::moving_axis() const {
+  bool x = false, y = false;
+  for (const Operation& o : ops_) (is_horizontal(o.dir) ? x : y) = true;
+  if (x && y) return std::nullopt;
+  return y ? 1 : 0;
+}
+
 std::string Instance::node_label(NodeId w) const {
   return "(" + std::to_string(cells_[w].x) + "," + std::to_string(cells_[w].y) + ")";
 }

@@ -118,6 +118,9 @@ class Instance {
 
   // True iff every operation moves along the x axis.
   bool horizontal_only() const;
+  // The one axis every operation moves along: 0 for x (also with no
+  // operations), 1 for y; nullopt when the operations use both. O(ops).
+  std::optional<int> moving_axis() const;
   // "(x,y)", how a node is named in messages and witnesses.
   std::string node_label(NodeId w) const;
   // Same shape, same operations, another anchor (any node).

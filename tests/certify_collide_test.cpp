@@ -379,7 +379,7 @@ TEST(CertifyCollide, OneAxisKindCoversTheRowGroups) {
     ++instances;
     const Regions regions = Regions::build(inst);
     const auto groups = one_axis_group_pairs(inst, regions);
-    const std::optional<int> axis = operations_axis(inst);
+    const std::optional<int> axis = inst.moving_axis();
     ASSERT_EQ(groups.has_value(), axis.has_value()) << at;
     if (axis) {
       const auto mine = ordered(row_group_pairs_of(regions, *axis));

@@ -62,14 +62,14 @@ int run_certify(const std::vector<std::string>& args) {
   if (r.kind == "gaps")
     ans.comment(std::to_string(r.inequalities) + " gap inequalities derived, " + std::to_string(r.axioms) +
                 " closure clauses, " + std::to_string(r.lemmas) + " lemmas checked");
-  if (r.kind == "collide")
-    ans.comment("no schedule collides (gridlock collide's NO, in both models): " +
-                (r.one_axis ? "one axis, " + std::to_string(r.axioms) +
-                                  " pairs in row groups (a first collision is in "
-                                  "one), "
-                            : std::string()) +
+  if (r.kind == "collide") {
+    const std::string groups = r.one_axis ? "one axis, " + std::to_string(r.axioms) +
+                                                " pairs in row groups (a first collision is in one), "
+                                          : "";
+    ans.comment("no schedule collides (gridlock collide's NO, in both models): " + groups +
                 std::to_string(r.inequalities) + " pairs of regions kept apart by their multipliers, " +
                 std::to_string(r.lemmas) + " by one form");
+  }
   if (r.kind == "bounds")
     ans.comment(std::to_string(r.inequalities) + " clauses checked against the instance, " + std::to_string(r.axioms) +
                 " selector definitions, " + std::to_string(r.lemmas) + " lemmas checked");

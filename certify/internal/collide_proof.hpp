@@ -24,7 +24,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -49,10 +48,6 @@ bool is_collide_certificate(std::string_view text);
 // and of each pair those bounds leave (tree paths of length L); O(e L)
 // for the cycles.
 void check_collide_proof(const Instance& inst, std::string_view text, CertifyResult& r);
-
-// The axis every operation moves along: 0 for x (also with no
-// operations), 1 for y; nullopt when they use both. O(ops).
-std::optional<int> operations_axis(const Instance& inst);
 
 // The pairs of every row group along axis (0: x, 1: y), each once: the
 // regions of each row (same position across the axis) sorted by (lo, hi,

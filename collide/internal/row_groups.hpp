@@ -9,23 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <utility>
 #include <vector>
 
-#include "lattice/geometry.hpp"
-#include "lattice/instance.hpp"
-
 namespace gridlock {
-
-// The one axis every operation moves along: 0 for x (also with no
-// operations), 1 for y; nullopt when the operations use both. O(ops).
-inline std::optional<int> moving_axis(const Instance& inst) {
-  bool x = false, y = false;
-  for (const Operation& o : inst.ops()) (is_horizontal(o.dir) ? x : y) = true;
-  if (x && y) return std::nullopt;
-  return y ? 1 : 0;
-}
 
 // key(r) = {row, lo, hi} of region r at the start (r = 0 .. regions - 1);
 // separator(r): r closes the group before it and opens the next. The
