@@ -191,12 +191,16 @@ void BM_HookSingleCoupling(benchmark::State& state) {
 // n / 4 expansions on the spine (+x). range(2): 0 Auto (the group pairs,
 // ends walked in Mo's order), 1 Pairwise (every pair: what Auto ran before).
 // Family 2: the hook (bench_families.hpp) with couplings of 3, a YES.
-void BM_OneAxisCouplings(benchmark::State& state) {
-  const int64_t n = state.range(0);
+// (one_axis_family builds them; BM_OneAxisCertificate uses 0 and 1.)
+Instance one_axis_family(int64_t n, int64_t family) {
   const int64_t side = std::llround(std::sqrt(static_cast<double>(n)));
-  const Instance inst = state.range(1) == 0   ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
-                        : state.range(1) == 1 ? bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7)
-                                              : bench::hook((n - 3) / 2, 3);
+  return family == 0   ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
+         : family == 1 ? bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7)
+                       : bench::hook((n - 3) / 2, 3);
+}
+
+void BM_OneAxisCouplings(benchmark::State& state) {
+  const Instance inst = one_axis_family(state.range(0), state.range(1));
   CollideResult r;
   for (auto _ : state)
     r = find_collision(inst, TimeModel::Continuous,
@@ -214,10 +218,7 @@ void BM_OneAxisCouplings(benchmark::State& state) {
 // 0 times writing it, 1 checking it (certify, the certificate written
 // once outside the loop).
 void BM_OneAxisCertificate(benchmark::State& state) {
-  const int64_t n = state.range(0);
-  const int64_t side = std::llround(std::sqrt(static_cast<double>(n)));
-  const Instance inst = state.range(1) == 0 ? bench::comb(n, 0, n / 4, bench::CombOps::Spine, 3, 7)
-                                            : bench::comb(side, side - 1, side / 2, bench::CombOps::Spine, 3, 7);
+  const Instance inst = one_axis_family(state.range(0), state.range(1));
   const bool every_pair = state.range(2) == 1;
   CollideCertificate cert = collide_no_certificate(inst, nullptr, false, {}, every_pair);
   if (cert.text.empty()) state.SkipWithError("no certificate");
