@@ -5,7 +5,12 @@
 //   Spine: all on spine edges (+x); Teeth: all inside teeth (+y);
 //   Mixed: each on the spine or in a tooth at random.
 // Expansions only push teeth apart (they slide along each other, touching),
-// so no schedule of a comb collides. group > 1 couples consecutive
+// so no schedule of a comb collides. With `lid`, a static column at x = -1
+// joined to (0, 0) carries a row at y = H + 1 + r out to x = L + k, over
+// the teeth wherever the spine's expansions take them; a tooth holds at
+// most r = floor((H + 1) / 2) expansions (no node in two operations), so
+// its top only touches the lid: still no collision, but the teeth's x
+// faces now pass the lid's and their y faces each other's. group > 1 couples consecutive
 // expansions into couplings of `group` operations (0: one coupling of all).
 //
 // hook: a row of L nodes along y = 0 (L >= 2) with an expansion (+x) on
@@ -15,6 +20,20 @@
 // the free cell (L, 0) and meets the static node (n = 2 L + 3, one axis,
 // YES at the first moment 1 / (number of expansions)). group > 0 couples
 // consecutive expansions into couplings of `group` instead (still YES).
+//
+// awning_comb: a comb that collides late while its x faces keep their
+// order. A spine of L nodes along y = 0 (L >= 3); even x carries a tooth of
+// nodes y = 1 .. 9 and an awning node (x + 1, 9) joined to its top; odd x
+// a short tooth of y = 1 .. 6, under the awning of x - 1 (two free cells
+// between). Expansions: +x on the spine edges from even x (so the speeds
+// grow to about L / 2: total motion Theta(n^2)), and +y in the short
+// teeth, on edges (x, y)-(x, y + 1) for y = 1, 3, 5 (no node in two
+// operations): all 3 in the middle one (x0 = 2 floor(L / 4) + 1), 0 .. 2
+// at random in the others; all in one coupling. The spine only pushes to the
+// right what is to the right, so no two x faces ever swap; the short
+// teeth's y faces pass their neighbours'. YES: only the middle short
+// tooth reaches its awning, at t = 2/3 (n about 9 L). Deterministic for
+// a seed.
 //
 // separation_chain: n separation gadgets in a row, the shape of the
 // continuous reduction's contract t_b >= t_a + 1. Gadget i (x0 = 3i): a
@@ -59,13 +78,20 @@ inline void couple_consecutive(InstanceBuilder& b, const std::vector<std::string
   }
 }
 
-inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t group, uint64_t seed) {
+inline Instance comb(int64_t L, int64_t H, int64_t k, CombOps where, int64_t group, uint64_t seed, bool lid = false) {
   InstanceBuilder b;
   for (int64_t x = 0; x < L; ++x)
     for (int64_t y = 0; y <= H; ++y) b.add_node({x, y});
   for (int64_t x = 0; x < L; ++x) {
     if (x + 1 < L) b.add_edge({x, 0}, {x + 1, 0});
     for (int64_t y = 0; y < H; ++y) b.add_edge({x, y}, {x, y + 1});
+  }
+  if (lid) {  // a static column at x = -1 and a row over the teeth and their motion
+    const int64_t top = H + 1 + (H + 1) / 2;
+    for (int64_t y = 0; y <= top; ++y) b.add_node({-1, y});
+    for (int64_t y = 0; y < top; ++y) b.add_edge({-1, y}, {-1, y + 1});
+    b.add_edge({-1, 0}, {0, 0});
+    for (int64_t x = 0; x <= L + k; ++x) b.add_node({x, top}), b.add_edge({x - 1, top}, {x, top});
   }
   Rng rng(seed);
   std::vector<std::string> names;
@@ -104,6 +130,44 @@ inline Instance hook(int64_t L, int64_t group = 0) {
     b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX);
   }
   couple_consecutive(b, names, group);
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
+  return inst;
+}
+
+inline Instance awning_comb(int64_t L, uint64_t seed) {
+  if (L < 3) throw std::invalid_argument("awning_comb: L >= 3");
+  InstanceBuilder b;
+  auto must = [](std::optional<std::string> e) {
+    if (e) throw std::runtime_error(*e);
+  };
+  const int64_t x0 = 2 * (L / 4) + 1;
+  Rng rng(seed);
+  std::vector<std::string> names;
+  for (int64_t x = 0; x < L; ++x) {
+    const int64_t top = x % 2 == 0 ? 9 : 6;
+    for (int64_t y = 0; y <= top; ++y) must(b.add_node({x, y}));
+    for (int64_t y = 0; y < top; ++y) must(b.add_edge({x, y}, {x, y + 1}));
+    if (x > 0) must(b.add_edge({x - 1, 0}, {x, 0}));
+    if (x % 2 == 0 && x + 1 < L) {
+      must(b.add_node({x + 1, 9}));
+      must(b.add_edge({x, 9}, {x + 1, 9}));
+    }
+  }
+  for (int64_t x = 0; x < L; ++x) {
+    if (x % 2 == 0) {
+      if (x + 1 == L) break;
+      names.push_back("s" + std::to_string(x));
+      must(b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX));
+    } else {
+      const uint64_t k = x == x0 ? 3 : rng.below(3);
+      for (uint64_t i = 0; i < k; ++i) {
+        names.push_back("t" + std::to_string(x) + "_" + std::to_string(i));
+        must(b.add_op(names.back(), OpKind::Expand, {x, static_cast<int64_t>(2 * i + 1)}, Dir::PosY));
+      }
+    }
+  }
+  couple_consecutive(b, names, 0);
   Instance inst;
   if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
   return inst;

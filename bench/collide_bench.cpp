@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "bench_families.hpp"
@@ -148,6 +149,9 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
   }
   if (how == 0 && algorithm == "single-coupling")
     (void)single_coupling_sweep(inst, sim.tree(), sim.regions(), &st);  // the counters
+  if (how == 0 && algorithm == "single-coupling-fixed-axis")            // the counters: sweeps run, exact tests
+    if (const std::optional<FixedAxisAnswer> f = single_coupling_fixed_axis(inst, sim.tree(), sim.regions()))
+      state.counters["sweeps"] = static_cast<double>(f->sweeps), st.tests = f->tests;
   if (!algorithm.empty()) state.SetLabel(algorithm);
   state.counters["n"] = static_cast<double>(inst.num_nodes());
   state.counters["yes"] = yes;
@@ -169,6 +173,22 @@ void BM_SerpentineSingleCoupling(benchmark::State& state) {
 // The mixed comb (n/4 expansions, spine and teeth, all in one coupling).
 void BM_CombSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7));
+}
+
+// The mixed comb under a lid (bench_families.hpp, comb with lid = true;
+// n/4 spine nodes, teeth of height 3, n/4 expansions, about 3n/2 nodes):
+// NO, total motion Theta(n^2), and the faces of both axes change order:
+// the case Auto leaves to the cell sweep.
+void BM_LiddedCombSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state,
+                        bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7, true));
+}
+
+// The awning comb of about n nodes (bench_families.hpp): both axes, x
+// faces keeping their order, total motion Theta(n^2), YES at t = 2/3.
+// Auto sweeps along x and bisects for the first moment.
+void BM_AwningCombSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, bench::awning_comb(state.range(0) / 9, 7));
 }
 
 // The spine comb: teeth of height 3 on a spine of n / 4 nodes, n / 4
@@ -346,7 +366,11 @@ BENCHMARK(BM_FanAngleTree)->ArgsProduct({{256, 576}, {0}})->Unit(benchmark::kMil
 BENCHMARK(BM_FanPerPair)->ArgsProduct({{256}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AwningCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099, 16387}, {0}})->Unit(benchmark::kMillisecond);
@@ -437,6 +461,23 @@ void register_large_discrete_answers() {
 
 // One coupling on one axis: the spine comb's large sizes.
 void register_large_one_axis() {
+  // One axis keeping its order: one sweep along it (the mixed comb's
+  // 16 384 and 65 536 are with the large serpentines).
+  for (int64_t n : {65536, 262144, 1048576}) {
+    if (n > 65536)
+      benchmark::RegisterBenchmark("BM_CombSingleCoupling", BM_CombSingleCoupling)
+          ->Args({n, 0})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_AwningCombSingleCoupling", BM_AwningCombSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
+  benchmark::RegisterBenchmark("BM_AwningCombSingleCoupling", BM_AwningCombSingleCoupling)
+      ->Args({65536, 5})  // the cell sweep, for the ratio
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
   for (int64_t n : {65536, 262144, 1048576})  // one axis: the row neighbours' test
     benchmark::RegisterBenchmark("BM_SpineCombSingleCoupling", BM_SpineCombSingleCoupling)
         ->Args({n, 0})

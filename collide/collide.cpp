@@ -299,11 +299,12 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   }
 
   // 2. One coupling: one schedule in both models, decided by one sort per
-  // row when every operation is on one axis (O(n log n)), a NO by one
-  // moment when no two faces change order (O(n log n)), else by the
-  // space-time cell sweep (single_coupling.hpp). Both name the first
-  // collision, checked at one moment; a YES of the sweep's packing bound
-  // names none and is simulated.
+  // row when every operation is on one axis (O(n log n)), by one sweep
+  // along an axis whose faces keep their order (O(n log n) for a NO; a
+  // YES bisects for its first moment), else by the space-time cell sweep
+  // (single_coupling.hpp). All name the first collision, checked at one
+  // moment; a YES of the cell sweep's packing bound names none and is
+  // simulated.
   if (method == CollideMethod::Auto && nq == 1) {
     std::optional<SingleCouplingAnswer> answer = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
                                                                           &res.stats.pair_tests);
@@ -311,10 +312,14 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
     if (answer) {
       res.algorithm = "single-coupling-one-axis";
       res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
-    } else if (single_coupling_fixed_order_no(inst, sim.tree(), sim.regions())) {
-      res.algorithm = "single-coupling-fixed-order";
-      res.complexity = "O(n log n) (no two faces change order: one moment decides)";
-      return res;
+    } else if (std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions(),
+                                                                                 deadline)) {
+      res.algorithm = "single-coupling-fixed-axis";
+      res.complexity =
+          "O(n log n) (the faces of one axis keep their order: one sweep along it; a YES bisects for its first "
+          "moment)";
+      res.stats.pair_tests = fixed->tests;
+      answer = fixed->answer;
     } else {
       res.algorithm = "single-coupling";
       res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";

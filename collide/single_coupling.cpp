@@ -406,47 +406,120 @@ bool order_fixed(const std::vector<Faces>& faces, const std::vector<uint32_t>& l
   return true;
 }
 
-// Does some pair of the live regions overlap at t = 1/2? Coordinates
-// doubled (2a + b, integers); a sweep in x keeps the boxes that contain
-// the sweep line by their low y face: those pairwise x-overlap, so with no
-// overlap so far their y intervals are disjoint and only the neighbours
-// of a new box can overlap it. O(r log r).
-bool overlap_at_half(const std::vector<Faces>& faces, const std::vector<uint32_t>& live) {
-  auto at = [&](uint32_t r, size_t f) { return 2 * faces[r][f].a + faces[r][f].b; };
-  struct Event {
-    int64_t x;
-    int kind;  // 0 leaves (before any entry at the same x: touching is no overlap), 1 enters
-    uint32_t r;
+// Along axis m, a width positive on all of (0, 1): affine, so >= 0 at
+// both ends and not 0 at both.
+bool width_positive(const Faces& f, size_t m) {
+  const int64_t w0 = f[2 * m + 1].a - f[2 * m].a, w1 = w0 + f[2 * m + 1].b - f[2 * m].b;
+  return w0 >= 0 && w1 >= 0 && w0 + w1 > 0;
+}
+
+// An end of a live region's interval along the kept axis at t = 1/2
+// (doubled: 2a + b, an integer).
+struct AxisEvent {
+  int64_t x;
+  int kind;  // 0 leaves (before any entry at the same x: touching is no overlap), 1 enters
+  uint32_t r;
+};
+
+// Does some pair of live regions overlap at some t in (0, T), T <= 1?
+// The faces of the kept axis keep their order, so two regions overlap
+// along it at every t in (0, 1) or at none (the events at t = 1/2 say
+// which). The sweep along it keeps the regions that contain the sweep
+// line; their intervals along m sweep strips of the (m, t) plane over
+// (0, T), which, with no overlap found so far, are pairwise disjoint and
+// so ordered below/above on all of (0, T): kept by their low m face at
+// T/2. A new region overlapping some kept one overlaps one of its two
+// neighbours there (docs/collide.md, "One coupling: one axis keeps its
+// order": the proof). The first overlap met is kept in best. O(r log r).
+bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEvent>& events, size_t m, const Frac& T,
+                     Earliest& best, uint64_t& tests) {
+  if (T.num <= 0) return false;  // (0, T) is empty (a first moment at t = 0)
+  // The low m face at T/2, times 2 T.den.
+  auto key = [&](uint32_t r) {
+    const Lin& f = faces[r][2 * m];
+    return 2 * static_cast<__int128>(f.a) * T.den + static_cast<__int128>(f.b) * T.num;
   };
-  std::vector<Event> events;
-  events.reserve(2 * live.size());
-  for (uint32_t r : live) events.push_back({at(r, 1), 0, r}), events.push_back({at(r, 0), 1, r});
-  std::sort(events.begin(), events.end(), [](const Event& e, const Event& f) {
-    return e.x != f.x ? e.x < f.x : e.kind != f.kind ? e.kind < f.kind : e.r < f.r;
-  });
-  std::map<int64_t, int64_t> active;  // low y -> high y
-  for (const Event& e : events) {
-    const int64_t lo = at(e.r, 2), hi = at(e.r, 3);
+  auto meets = [&](uint32_t x, uint32_t y) {
+    ++tests;
+    const Span s = overlap_span(faces[x], faces[y]);
+    if (s.empty() || !less(s.lo, T)) return false;
+    best.test(faces, x, y);
+    return true;
+  };
+  std::map<__int128, uint32_t> active;  // distinct keys: equal ones overlap at T/2
+  for (const AxisEvent& e : events) {
+    const __int128 lo = key(e.r);
     if (e.kind == 0) {
       active.erase(lo);
       continue;
     }
     const auto next = active.lower_bound(lo);
-    if (next != active.end() && next->first < hi) return true;
-    if (next != active.begin() && std::prev(next)->second > lo) return true;
-    active.emplace(lo, hi);
+    if (next != active.end() && meets(e.r, next->second)) return true;
+    if (next != active.begin() && meets(e.r, std::prev(next)->second)) return true;
+    active.emplace_hint(next, lo, e.r);
   }
   return false;
 }
 
 }  // namespace
 
-bool single_coupling_fixed_order_no(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
+                                                          const Regions& regions, const Deadline* deadline) {
   const std::vector<Faces> faces = region_faces(inst, t, regions);
   std::vector<uint32_t> live;
   for (uint32_t r = 0; r < faces.size(); ++r)
     if (!alive(faces[r]).empty()) live.push_back(r);
-  return order_fixed(faces, live, 0) && order_fixed(faces, live, 1) && !overlap_at_half(faces, live);
+  size_t s = 2;
+  for (size_t axis : {size_t{0}, size_t{1}}) {
+    if (order_fixed(faces, live, axis)) {
+      s = axis;
+      break;
+    }
+  }
+  if (s == 2) return std::nullopt;
+  const size_t m = 1 - s;
+  // A live region's width along s keeps its sign on (0, 1) (two faces of
+  // s in order), so it is positive there; along m it must be too.
+  for (uint32_t r : live)
+    if (!width_positive(faces[r], m)) return std::nullopt;
+  std::vector<AxisEvent> events;
+  events.reserve(2 * live.size());
+  for (uint32_t r : live) {
+    const Faces& f = faces[r];
+    events.push_back({2 * f[2 * s + 1].a + f[2 * s + 1].b, 0, r});
+    events.push_back({2 * f[2 * s].a + f[2 * s].b, 1, r});
+  }
+  std::sort(events.begin(), events.end(), [](const AxisEvent& e, const AxisEvent& f) {
+    return e.x != f.x ? e.x < f.x : e.kind != f.kind ? e.kind < f.kind : e.r < f.r;
+  });
+  FixedAxisAnswer out;
+  out.axis = static_cast<int>(s);
+  Earliest best;
+  ++out.sweeps;
+  if (!collides_before(faces, events, m, Frac{1, 1}, best, out.tests)) return out;
+  // A YES: the first moment t* is the least start of an overlapping pair.
+  // [lo, hi) holds t* (dyadic, den 2^k); best's start c >= t*. Each round
+  // asks for an overlap before c (none: c = t*), then halves [lo, hi).
+  // Distinct starts differ by more than the interval once it is short
+  // enough, so the rounds end; O(log) rounds for bounded speeds.
+  int64_t lo = 0, hi = 1, den = 1;
+  for (;;) {
+    if (deadline) deadline->check();
+    ++out.sweeps;
+    if (!collides_before(faces, events, m, best.span.lo, best, out.tests)) break;
+    if (den >= (int64_t{1} << 60)) continue;  // the interval is as fine as int64 allows: shrink by starts alone
+    lo *= 2, hi *= 2, den *= 2;
+    const Frac mid{lo + (hi - lo) / 2, den};
+    if (!less(mid, best.span.lo)) {
+      hi = mid.num;  // t* <= c <= mid
+    } else {
+      ++out.sweeps;
+      if (collides_before(faces, events, m, mid, best, out.tests)) hi = mid.num;  // best now starts before mid
+      else lo = mid.num;
+    }
+  }
+  out.answer = named(best);
+  return out;
 }
 
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,

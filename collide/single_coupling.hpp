@@ -97,17 +97,36 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
 std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& inst, const SpanningTree& t,
                                                              const Regions& regions, uint64_t* tests = nullptr);
 
-// A NO in O(r log r) when the motion keeps every order: if no two faces
-// of one axis (xlo and xhi of every live region; ylo and yhi) change
-// order during (0, 1), then each of the strict inequalities of the
-// overlap test (overlap_span: faces of one axis compared) is true on all
-// of (0, 1) or on none of it, so two regions overlap at some t iff they
-// overlap at t = 1/2 (docs/collide.md, "One coupling: when the motion
-// keeps every order"). True iff the orders are kept and no two live
-// regions overlap at t = 1/2: then no pair ever overlaps. False says
-// nothing (the orders change, or a pair overlaps: ask the sweep, which
-// also names the first collision).
-bool single_coupling_fixed_order_no(const Instance& inst, const SpanningTree& t, const Regions& regions);
+// When the faces of one axis keep their order: exact in O(r log r) for
+// a NO. If no two faces of the kept axis s (xlo and xhi of every live
+// region; else ylo and yhi) change order during (0, 1), two regions
+// overlap along s at every t in (0, 1) or at none, so only the pairs
+// that overlap along s at t = 1/2 can collide, and each of them does iff
+// their intervals along the other axis overlap at some t. One sweep along
+// s with the active regions ordered along the other axis at one moment
+// finds such a pair or proves there is none: only neighbours are tested
+// (docs/collide.md, "One coupling: one axis keeps its order").
+struct FixedAxisAnswer {
+  int axis = 0;  // the axis whose faces keep their order (0 x, 1 y; x when both do)
+  // collides; on a YES pair, first (the first collision's moment) and
+  // during, as single_coupling_sweep names them, except that on ties of
+  // the first moment the pair is one of those that start to overlap
+  // then, not necessarily the smallest.
+  SingleCouplingAnswer answer;
+  uint64_t sweeps = 0;  // sweeps run: 1 on a NO; a YES bisects for its first moment
+  uint64_t tests = 0;   // exact pair tests
+};
+
+// nullopt when the faces of both axes change order, or when some live
+// region's width along the other axis is not positive all along (0, 1)
+// (only when the coupling breaks a cycle: find_collision settles that
+// first). A NO costs one sweep, O(r log r); a YES bisects [0, 1) for the
+// first moment, one or two sweeps per halving, at most about
+// 2 log2(2 max speed) + 2 halvings (distinct starts are fractions with
+// denominators up to twice the largest face speed). Checks deadline (if
+// given) between sweeps.
+std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
+                                                          const Regions& regions, const Deadline* deadline = nullptr);
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.

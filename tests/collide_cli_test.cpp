@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "collide/adversarial.hpp"
+#include "lattice/grid_format.hpp"
 #include "support/cli.hpp"
 #include "support/instance_io.hpp"
 
@@ -146,15 +149,24 @@ TEST(CollideCommand, OneAxisYesNamesTheFirstCollision) {
       "single-coupling-one-axis", "1/2", "", "3/4");
 }
 
-// One coupling on both axes: the space-time sweep names the first
-// collision too. A U whose right side contracts (+y) pulls its top left
-// node onto its bottom left one from t = 0, while an expansion (+x) moves
-// the whole U.
-TEST(CollideCommand, SweepYesNamesTheFirstCollision) {
+// One coupling on both axes whose x faces keep their order: one sweep
+// along x finds the YES and bisects for its first moment. A U whose right
+// side contracts (+y) pulls its top left node onto its bottom left one
+// from t = 0, while an expansion (+x) moves the whole U.
+TEST(CollideCommand, FixedAxisYesNamesTheFirstCollision) {
   expect_named_first_collision(
       "p grid 5 4 2 1\nn -1 0\nn 0 0\nn 1 0\nn 1 1\nn 0 1\ne -1 0 0 0\ne 0 0 1 0\ne 1 0 1 1\n"
       "e 1 1 0 1\no x expand -1 0 +x\no c contract 1 0 +y\nq Q x c\n",
-      "single-coupling", "0", "node (0,0) and node (0,1)", "1/2");
+      "single-coupling-fixed-axis", "0", "node (0,0) and node (0,1)", "1/2");
+}
+
+// One coupling whose faces change order on both axes: the space-time cell
+// sweep names the first collision (the diagonal sweep with its post,
+// K = 2, b = 3: collide/adversarial.hpp; first at t = 1 - 1/K).
+TEST(CollideCommand, SweepYesNamesTheFirstCollision) {
+  std::ostringstream grid;
+  write_instance(grid, diagonal_sweep_instance(2, 3, true));
+  expect_named_first_collision(grid.str(), "single-coupling", "1/2", "node (6,7) and node (8,9)", "3/4");
 }
 
 // --certificate C on an answer without one: C is left as it was (a file

@@ -7,8 +7,12 @@
 // (GRIDLOCK_TEST_SEED replays, GRIDLOCK_TEST_SCALE scales the count).
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "bench/bench_families.hpp"
 #include "collide/adversarial.hpp"
 #include "collide/collide.hpp"
 #include "collide/single_coupling.hpp"
@@ -43,7 +47,8 @@ RandomInstanceParams single_params(Rng& rng) {
 
 struct Tally {
   int cases = 0, yes = 0, no = 0, brute = 0, cycles = 0, by_packing = 0, multi_band = 0, first_named = 0, pruned = 0;
-  int fixed_order = 0;  // NOs decided by one moment (single_coupling_fixed_order_no)
+  int fixed_no = 0, fixed_yes = 0, fixed_y = 0;  // decided by single_coupling_fixed_axis (y: the kept axis is y)
+  uint64_t fixed_sweeps = 0;                     // its sweeps on the YES (bisecting for the first moment)
   uint64_t max_active = 0;
 };
 
@@ -87,10 +92,24 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
   ASSERT_EQ(sweep, pairs.has_value()) << where;
   (sweep ? tally.yes : tally.no)++;
   ++tally.cases;
-  // The one-moment NO is never claimed where a pair overlaps.
-  if (single_coupling_fixed_order_no(inst, sim.tree(), sim.regions())) {
-    ASSERT_FALSE(sweep) << where << ": a NO by one moment, but the pair tests find an overlap";
-    ++tally.fixed_order;
+  // When one axis keeps its order: the same verdict as the pair tests, a
+  // YES's pair overlaps at `during`, and its first moment is the sweep's.
+  const std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions());
+  if (fixed) {
+    ASSERT_EQ(fixed->answer.collides, sweep) << where << ": the fixed-axis sweep along axis " << fixed->axis;
+    if (sweep) {
+      expect_overlaps_during(inst, fixed->answer, where + ", the fixed-axis sweep");
+      if (::testing::Test::HasFatalFailure()) return;
+      if (ans.first) {
+        ASSERT_EQ(*fixed->answer.first, *ans.first) << where << ", the fixed-axis sweep";
+      }
+      ++tally.fixed_yes;
+      tally.fixed_sweeps += fixed->sweeps;
+    } else {
+      ASSERT_EQ(fixed->sweeps, 1u) << where;
+      ++tally.fixed_no;
+    }
+    tally.fixed_y += fixed->axis == 1;
   }
   tally.max_active = std::max<uint64_t>(tally.max_active, st.max_active);
   // Bounded memory: sweeping in column bands of a few items gives the
@@ -137,6 +156,11 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
       ++tally.first_named;
       if (inst.couplings().size() == 1) {  // find_collision reports it, checked at one moment
         const CollideResult r = find_collision(inst, TimeModel::Continuous);
+        if (r.algorithm == "single-coupling-fixed-axis") {  // the first moment; one of its pairs
+          ASSERT_TRUE(fixed) << where;
+          ASSERT_EQ(r.checked_at, fixed->answer.during) << where;
+          ASSERT_EQ(r.simulated->time, run.collision->time) << where;
+        }
         if (r.algorithm == "single-coupling") {
           ASSERT_EQ(r.checked_at, ans.during) << where;
           ASSERT_EQ(r.simulated->time, run.collision->time) << where;
@@ -178,15 +202,18 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << tally.by_packing << " decided by the packing bound; " << tally.first_named
             << " first collisions equal to the simulator's; most items present at an entry " << tally.max_active << "; "
             << tally.multi_band << " banded sweeps of several bands, " << tally.pruned
-            << " of them keeping fewer items after an overlap; " << tally.fixed_order
-            << " NOs by one moment, no order changing)\n";
+            << " of them keeping fewer items after an overlap; one axis keeping its order: " << tally.fixed_no
+            << " NOs and " << tally.fixed_yes << " YES (" << tally.fixed_sweeps << " sweeps), " << tally.fixed_y
+            << " of them along y)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
   EXPECT_GT(tally.first_named, cases / 10);
   EXPECT_GT(tally.pruned, cases / 20);
   EXPECT_GT(tally.no, cases / 10);
-  EXPECT_GT(tally.fixed_order, cases / 10);
+  EXPECT_GT(tally.fixed_no, cases / 10);
+  EXPECT_GT(tally.fixed_yes, cases / 20);
+  EXPECT_GT(tally.fixed_y, cases / 50);
 }
 
 // Larger shapes, long paths: more motion, more items per cell.
@@ -332,25 +359,70 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
 }
 
 // The square serpentine keeps every order (no two faces of an axis swap),
-// so Auto answers its NO by one moment; the sweep and the simulator agree.
-// The diagonal sweep's orders change: Auto keeps the sweep there.
-TEST(SingleCouplingSweep, SerpentineIsDecidedByOneMoment) {
-  for (int64_t n : {64, 256, 1024}) {
-    const Instance inst = serpentine_instance(square_serpentine(n, 1u << 30, SerpentineCouplings::Mixed), 1);
-    const std::string where = "serpentine of " + std::to_string(n);
+// and the mixed comb keeps the order of its x faces (the spine pushes the
+// teeth apart; the teeth's y faces pass each other): Auto answers their
+// NO by one sweep along the kept axis; the cell sweep and the simulator
+// agree. The diagonal sweep's orders change on both axes: Auto keeps the
+// cell sweep there.
+TEST(SingleCouplingSweep, KeptOrderIsDecidedByOneSweep) {
+  std::vector<std::pair<std::string, Instance>> cases;
+  for (int64_t n : {64, 256, 1024})
+    cases.emplace_back("serpentine of " + std::to_string(n),
+                       serpentine_instance(square_serpentine(n, 1u << 30, SerpentineCouplings::Mixed), 1));
+  for (int64_t n : {256, 1024})
+    cases.emplace_back("mixed comb of " + std::to_string(n), bench::comb(n / 4, 3, n / 4, bench::CombOps::Mixed, 0, 7));
+  for (const auto& [where, inst] : cases) {
     ASSERT_EQ(inst.couplings().size(), 1u) << where;
     const CollideResult r = find_collision(inst, TimeModel::Continuous);
     EXPECT_FALSE(r.collides) << where;
-    EXPECT_EQ(r.algorithm, "single-coupling-fixed-order") << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-fixed-axis") << where;
     Simulator sim(inst);
-    EXPECT_TRUE(single_coupling_fixed_order_no(inst, sim.tree(), sim.regions())) << where;
+    const std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(fixed) << where;
+    EXPECT_EQ(fixed->axis, 0) << where;
+    EXPECT_FALSE(fixed->answer.collides) << where;
+    EXPECT_EQ(fixed->sweeps, 1u) << where;
+    EXPECT_LE(fixed->tests, 2 * sim.regions().size()) << where;
     EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
     EXPECT_FALSE(sim.run_order({0}).collision) << where;
   }
   const Instance diagonal = diagonal_sweep_instance(5, 4);
   Simulator sim(diagonal);
-  EXPECT_FALSE(single_coupling_fixed_order_no(diagonal, sim.tree(), sim.regions()));
+  EXPECT_FALSE(single_coupling_fixed_axis(diagonal, sim.tree(), sim.regions()));
   EXPECT_EQ(find_collision(diagonal, TimeModel::Continuous).algorithm, "single-coupling");
+}
+
+// The awning comb (bench/bench_families.hpp): the x faces keep their
+// order, and the middle short tooth reaches its awning at t = 2/3. The
+// fixed-axis sweep bisects for that moment and names that pair; the cell
+// sweep and the simulator agree.
+TEST(SingleCouplingSweep, AwningCombYesIsNamedByTheFixedAxisSweep) {
+  for (int64_t L : {3, 4, 9, 40, 161}) {
+    const Instance inst = bench::awning_comb(L, 11);
+    const std::string where = "awning comb of " + std::to_string(L);
+    ASSERT_EQ(inst.couplings().size(), 1u) << where;
+    Simulator sim(inst);
+    const std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(fixed) << where;
+    EXPECT_EQ(fixed->axis, 0) << where;
+    ASSERT_TRUE(fixed->answer.collides) << where;
+    expect_overlaps_during(inst, fixed->answer, where);
+    if (::testing::Test::HasFatalFailure()) return;
+    EXPECT_EQ(*fixed->answer.first, Rational(2, 3)) << where;
+    const SimResult run = sim.run_order({0});
+    ASSERT_TRUE(run.collision) << where;
+    expect_names_first(inst, fixed->answer, *run.collision, where);  // one pair starts then: the simulator's
+    if (::testing::Test::HasFatalFailure()) return;
+    const SingleCouplingAnswer cells = single_coupling_sweep(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(cells.collides && cells.first) << where;
+    EXPECT_EQ(*cells.first, Rational(2, 3)) << where;
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_EQ(r.algorithm, "single-coupling-fixed-axis") << where;
+    ASSERT_TRUE(r.collides && r.simulated) << where;
+    EXPECT_EQ(r.simulated->time, Rational(2, 3)) << where;
+    EXPECT_GE(fixed->sweeps, 2u) << where;
+    EXPECT_LE(fixed->sweeps, 40u) << where;
+  }
 }
 
 // The diagonal sweep with its post (collide/adversarial.hpp): YES, first
@@ -371,10 +443,14 @@ TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
       expect_names_first(inst, ans, *run.collision, where);
       const CollideResult r = find_collision(inst, TimeModel::Continuous);
       ASSERT_TRUE(r.collides) << where;
-      EXPECT_EQ(r.algorithm, "single-coupling") << where;
-      EXPECT_EQ(r.checked_at, ans.during) << where;
       ASSERT_TRUE(r.simulated) << where;
       EXPECT_EQ(r.simulated->time, run.collision->time) << where;
+      // K = 1: a move of one cell, after which no two x faces have swapped; the
+      // fixed-axis sweep bisects for the first moment, and its pair
+      // overlaps then (find_collision checks it at r.checked_at).
+      EXPECT_EQ(r.algorithm, K == 1 ? "single-coupling-fixed-axis" : "single-coupling") << where;
+      if (K == 1) continue;
+      EXPECT_EQ(r.checked_at, ans.during) << where;
       EXPECT_EQ(r.simulated->a, run.collision->a) << where;
       EXPECT_EQ(r.simulated->b, run.collision->b) << where;
       EXPECT_EQ(inst.num_nodes(), diagonal_sweep_instance(K, b).num_nodes() + b + 3) << where;

@@ -86,16 +86,17 @@ NAMED_YES = {  # one coupling: (the .grid text, the algorithm, checked_at, the f
     "one-axis": ("p grid 5 4 2 1\nn 0 0\nn 2 0\nn 0 1\nn 1 1\nn 2 1\ne 0 0 0 1\ne 0 1 1 1\n"
                  "e 1 1 2 1\ne 2 1 2 0\no g1 grow 0 0 +x\no g2 grow 2 0 -x\nq G g1 g2\n",
                  "single-coupling-one-axis", Fraction(3, 4), Fraction(1, 2)),
-    "sweep": ("p grid 5 4 2 1\nn -1 0\nn 0 0\nn 1 0\nn 1 1\nn 0 1\ne -1 0 0 0\ne 0 0 1 0\ne 1 0 1 1\n"
-              "e 1 1 0 1\no x expand -1 0 +x\no c contract 1 0 +y\nq Q x c\n",
-              "single-coupling", Fraction(1, 2), Fraction(0)),
+    "fixed-axis": ("p grid 5 4 2 1\nn -1 0\nn 0 0\nn 1 0\nn 1 1\nn 0 1\ne -1 0 0 0\ne 0 0 1 0\ne 1 0 1 1\n"
+                   "e 1 1 0 1\no x expand -1 0 +x\no c contract 1 0 +y\nq Q x c\n",
+                   "single-coupling-fixed-axis", Fraction(1, 2), Fraction(0)),
 }
 
 
 @pytest.mark.parametrize("model", ["discrete", "continuous"])
 @pytest.mark.parametrize("case", sorted(NAMED_YES))
 def test_collide_one_coupling_yes_checked_at_one_moment(tmp_path, model, case):
-    """One coupling (one axis: the row groups; both axes: the sweep): the
+    """One coupling (one axis: the row groups; both axes, x keeping its
+    order: one sweep along x, bisecting for the first moment): the
     first collision comes from the proof and is confirmed at one moment;
     it is the simulator's, and equals the CLI."""
     text, algorithm, checked_at, time = NAMED_YES[case]
