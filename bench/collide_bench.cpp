@@ -233,12 +233,16 @@ void BM_OneAxisCouplings(benchmark::State& state) {
 }
 
 // collide's NO certificate on BM_OneAxisCouplings' NO families (range(1):
-// 0 the row, 1 the square comb). range(2): 0 the one-axis kind (the row
-// groups' pairs), 1 every pair (what a one-axis NO got before). range(3):
-// 0 times writing it, 1 checking it (certify, the certificate written
-// once outside the loop).
+// 0 the row, 1 the square comb) and on the mixed comb of
+// BM_CombSingleCoupling (2: one coupling, both axes, the x order kept).
+// range(2): 0 the kind Auto writes (one-axis: the row groups' pairs;
+// kept-order: the fixed-axis sweep's pairs), 1 every pair (what these NOs
+// got before). range(3): 0 times writing it, 1 checking it (certify, the
+// certificate written once outside the loop).
 void BM_OneAxisCertificate(benchmark::State& state) {
-  const Instance inst = one_axis_family(state.range(0), state.range(1));
+  const Instance inst = state.range(1) == 2
+                            ? bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7)
+                            : one_axis_family(state.range(0), state.range(1));
   const bool every_pair = state.range(2) == 1;
   CollideCertificate cert = collide_no_certificate(inst, nullptr, false, {}, every_pair);
   if (cert.text.empty()) state.SkipWithError("no certificate");
@@ -254,7 +258,7 @@ void BM_OneAxisCertificate(benchmark::State& state) {
   state.counters["bytes"] = static_cast<double>(cert.text.size());
 }
 BENCHMARK(BM_OneAxisCertificate)
-    ->ArgsProduct({{1024, 4096, 16384}, {0, 1}, {0, 1}, {0, 1}})
+    ->ArgsProduct({{1024, 4096, 16384}, {0, 1, 2}, {0, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 // The diagonal sweep (collide/adversarial.hpp): quadratic candidate pairs
@@ -498,8 +502,8 @@ void register_large_one_axis() {
           ->Args({n, family, 0})
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
-  for (int64_t n : {65536, 262144, 1048576})  // the one-axis certificate: written, checked
-    for (int64_t family : {0, 1})
+  for (int64_t n : {65536, 262144, 1048576})  // the one-axis and kept-order certificates: written, checked
+    for (int64_t family : {0, 1, 2})
       for (int64_t stage : {0, 1})
         benchmark::RegisterBenchmark("BM_OneAxisCertificate", BM_OneAxisCertificate)
             ->Args({n, family, 0, stage})

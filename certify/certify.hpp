@@ -30,8 +30,10 @@ struct CertifyResult {
   uint64_t inequalities = 0;  // gaps: gap inequalities derived from the instance; pairs: x lines checked;
                               // collide: r lines checked
   uint64_t lemmas = 0;        // gaps: lemma lines checked; pairs: o and l lines; collide: pairs one form rules out
-  uint64_t axioms = 0;        // gaps: order-closure clauses derived; collide, one-axis: row group pairs
+  uint64_t axioms = 0;        // gaps: order-closure clauses derived; collide, one-axis: row group pairs;
+                              // collide, kept-order: the sweep's pairs
   bool one_axis = false;      // collide: the one-axis kind (only the row groups' pairs covered)
+  int kept_axis = -1;         // collide: the kept-order kind's axis (0 x, 1 y; only the sweep's pairs covered)
 };
 
 // Checks `text` as a NO certificate of inst in the model `model`

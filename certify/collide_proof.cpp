@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct PairLine {
 struct CollideText {
   bool header = false, couplings = false;
   bool one_axis = false;  // p line ends in one-axis: only the row groups' pairs need cover
+  int kept_axis = -1;     // p line ends in kept-order x (0) or y (1): only the kept-order sweep's pairs
   size_t header_line = 0;
   std::map<std::pair<uint32_t, uint32_t>, PairLine> pairs;  // by (smaller, larger) region
 };
@@ -82,11 +84,14 @@ std::optional<std::string> read_collide_text(const Instance& inst, const Regions
   auto one = [&](size_t line, const std::vector<std::string_view>& w) -> std::optional<std::string> {
     if (w[0] == "p") {
       if (out.header) return at(line, "a second p line");
-      if (w.size() < 4 || w.size() > 5 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous" ||
-          (w.size() == 5 && w[4] != "one-axis"))
-        return at(line, std::string("expected 'p ") + kHeader + " 1 continuous', optionally followed by 'one-axis'");
+      const bool kept = w.size() == 6 && w[4] == "kept-order" && (w[5] == "x" || w[5] == "y");
+      if (w.size() < 4 || w.size() > 6 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous" ||
+          (w.size() == 5 && w[4] != "one-axis") || (w.size() == 6 && !kept))
+        return at(line, std::string("expected 'p ") + kHeader +
+                            " 1 continuous', optionally followed by 'one-axis' or 'kept-order x|y'");
       out.header = true;
       out.one_axis = w.size() == 5;
+      if (kept) out.kept_axis = w[5] == "x" ? 0 : 1;
       out.header_line = line;
       return std::nullopt;
     }
@@ -181,7 +186,163 @@ void check_row_groups(const Instance& inst, const CertifyGeometry& geo, const Co
   r.proved = true;
 }
 
+// The kept-order kind: one coupling, the faces of the named axis keep
+// their order, and every pair of certify's own sweep covered.
+void check_kept_order(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
+  const char* name = c.kept_axis == 0 ? "x" : "y";
+  if (inst.couplings().size() != 1)
+    return void(r.reason = at(c.header_line, "kept-order, but the instance has " +
+                                                 std::to_string(inst.couplings().size()) +
+                                                 " couplings (the kind needs exactly one)"));
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  if (auto e = kept_order_pairs_of(inst, geo, c.kept_axis, pairs))
+    return void(r.reason = at(c.header_line, std::string("kept-order ") + name + ", but " + *e));
+  const PathBounds bounds(geo);
+  for (auto [a, b] : pairs) {
+    if (c.pairs.count({a, b})) continue;
+    if (auto e = uncovered(inst, geo, bounds, a, b)) return void(r.reason = *e + " (a pair of the kept-order sweep)");
+    ++r.lemmas;
+  }
+  r.axioms = pairs.size();
+  r.kept_axis = c.kept_axis;
+  r.proved = true;
+}
+
+// A face with one coupling: a + b p at progress p (b: the coupling's net
+// along the face's axis, plus a growth's progress).
+struct FaceLine {
+  int64_t a = 0, b = 0;
+};
+
+// Is a + b p > 0 and c + d p > 0 at some common p in (0, 1)? Each holds
+// on an open interval of (0, 1); they meet iff the larger start is below
+// the smaller end (fractions compared exactly).
+bool both_positive_somewhere(const FaceLine& w, const FaceLine& v) {
+  struct End {
+    i128 num, den;  // num / den, den > 0
+  };
+  End lo{0, 1}, hi{1, 1};
+  auto less = [](const End& x, const End& y) { return x.num * y.den < y.num * x.den; };
+  for (const FaceLine& f : {w, v}) {
+    if (f.b == 0) {
+      if (f.a <= 0) return false;
+    } else if (f.b > 0) {  // p > -a / b
+      const End e{-f.a, f.b};
+      if (less(lo, e)) lo = e;
+    } else {  // p < a / -b
+      const End e{f.a, -f.b};
+      if (less(e, hi)) hi = e;
+    }
+  }
+  return less(lo, hi);
+}
+
+using FaceLines = std::array<FaceLine, 4>;  // xlo, xhi, ylo, yhi
+
+// Every region's faces while the one coupling runs: the tree
+// displacements of its operations (lattice/motion's op_child_vector), all
+// done at progress 1, plus a growth's progress on its far face.
+std::vector<FaceLines> one_coupling_faces(const Instance& inst, const CertifyGeometry& geo) {
+  const Regions& regions = geo.regions();
+  const SpanningTree& tree = geo.tree();
+  std::vector<Vec2> disp(inst.num_nodes(), Vec2{0, 0});
+  for (NodeId w : tree.order)
+    if (tree.parent[w] != kNone) disp[w] = disp[tree.parent[w]] + op_child_vector(inst, tree, w);
+  std::vector<FaceLines> face(regions.size());
+  for (uint32_t r = 0; r < regions.size(); ++r) {
+    const RegionShape& sh = regions.shapes[r];
+    for (size_t f = 0; f < 4; ++f) {
+      const Vec2 d = disp[sh.ref[f]];
+      const int64_t grow = sh.grow_op != kNone && sh.grow_face == static_cast<int>(f) ? sh.grow_sign : 0;
+      face[r][f] = {sh.base[f], (f < 2 ? d.x : d.y) + grow};
+    }
+  }
+  return face;
+}
+
+FaceLine width_of(const FaceLines& f, size_t axis) {
+  const FaceLine &lo = f[2 * axis], &hi = f[2 * axis + 1];
+  return FaceLine{hi.a - lo.a, hi.b - lo.b};
+}
+
+// The faces of axis s of the live regions keep their order: sorted by the
+// order just after 0, their values at 1 never decrease. Else the reason.
+std::optional<std::string> order_changes(const Instance& inst, const Regions& regions,
+                                         const std::vector<FaceLines>& face, const std::vector<uint32_t>& live,
+                                         size_t s) {
+  struct Ordered {
+    FaceLine f;
+    uint32_t r;
+  };
+  std::vector<Ordered> ends;
+  for (uint32_t r : live) ends.push_back({face[r][2 * s], r}), ends.push_back({face[r][2 * s + 1], r});
+  std::ranges::sort(
+      ends, [](const Ordered& x, const Ordered& y) { return std::pair(x.f.a, x.f.b) < std::pair(y.f.a, y.f.b); });
+  for (size_t i = 0; i + 1 < ends.size(); ++i)
+    if (ends[i + 1].f.a + ends[i + 1].f.b < ends[i].f.a + ends[i].f.b)
+      return std::string("the ") + (s == 0 ? "x" : "y") + " faces of " + region_label(inst, regions, ends[i].r) +
+             " and " + region_label(inst, regions, ends[i + 1].r) + " change order";
+  return std::nullopt;
+}
+
+// The sweep along s at progress 1/2 (doubled: 2a + b), the regions on the
+// sweep line kept by their low face across s at 1/2; each entering region
+// is paired with its two neighbours there.
+std::vector<std::pair<uint32_t, uint32_t>> sweep_pairs(const std::vector<FaceLines>& face,
+                                                       const std::vector<uint32_t>& live, size_t s) {
+  const size_t m = 1 - s;
+  struct Event {
+    int64_t x;
+    int kind;  // 0 leaves, before 1 enters at one coordinate
+    uint32_t r;
+  };
+  auto half = [](const FaceLine& f) { return 2 * f.a + f.b; };
+  std::vector<Event> events;
+  for (uint32_t r : live)
+    events.push_back({half(face[r][2 * s + 1]), 0, r}), events.push_back({half(face[r][2 * s]), 1, r});
+  std::ranges::sort(events, [](const Event& x, const Event& y) {
+    return std::tuple(x.x, x.kind, x.r) < std::tuple(y.x, y.kind, y.r);
+  });
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  std::map<int64_t, uint32_t> line;
+  for (const Event& e : events) {
+    const int64_t k = half(face[e.r][2 * m]);
+    if (e.kind == 0) {
+      if (auto it = line.find(k); it != line.end() && it->second == e.r) line.erase(it);
+      continue;
+    }
+    const auto next = line.lower_bound(k);
+    if (next != line.end()) out.emplace_back(std::min(e.r, next->second), std::max(e.r, next->second));
+    if (next != line.begin()) {
+      const uint32_t p = std::prev(next)->second;
+      out.emplace_back(std::min(e.r, p), std::max(e.r, p));
+    }
+    line.emplace_hint(next, k, e.r);  // an equal key overlaps its neighbour at 1/2: that pair cannot be covered
+  }
+  return out;
+}
+
 }  // namespace
+
+std::optional<std::string> kept_order_pairs_of(const Instance& inst, const CertifyGeometry& geo, int axis,
+                                               std::vector<std::pair<uint32_t, uint32_t>>& out) {
+  const std::vector<FaceLines> face = one_coupling_faces(inst, geo);
+  // Live: both widths positive at some common moment of (0, 1); no other
+  // region ever overlaps anything.
+  std::vector<uint32_t> live;
+  for (uint32_t r = 0; r < face.size(); ++r)
+    if (both_positive_somewhere(width_of(face[r], 0), width_of(face[r], 1))) live.push_back(r);
+  const size_t s = axis == 0 ? 0 : 1, m = 1 - s;
+  if (auto e = order_changes(inst, geo.regions(), face, live, s)) return e;
+  // Across s every live width must stay positive on (0, 1).
+  for (uint32_t r : live) {
+    const FaceLine w = width_of(face[r], m);
+    if (w.a < 0 || w.a + w.b < 0 || (w.a == 0 && w.a + w.b == 0))
+      return region_label(inst, geo.regions(), r) + "'s width across the kept axis is not positive all along";
+  }
+  out = sweep_pairs(face, live, s);
+  return std::nullopt;
+}
 
 std::vector<std::pair<uint32_t, uint32_t>> row_group_pairs_of(const Regions& regions, int axis) {
   const int m = 2 * axis, across = 2 - m;  // faces m, m + 1 move; face `across` names the row
@@ -233,6 +394,7 @@ void check_collide_proof(const Instance& inst, std::string_view text, CertifyRes
   if (auto e = geo.cycle_breaker()) return void(r.reason = *e);
   if (!check_lines(geo, c, r)) return;
   if (c.one_axis) check_row_groups(inst, geo, c, r);
+  else if (c.kept_axis >= 0) check_kept_order(inst, geo, c, r);
   else check_every_pair(inst, geo, c, r);
 }
 

@@ -11,6 +11,7 @@
 #include "collide/internal/collide_pairs.hpp"
 #include "collide/internal/pair_system.hpp"
 #include "collide/internal/zonotope.hpp"
+#include "collide/single_coupling.hpp"
 
 namespace gridlock {
 
@@ -148,9 +149,12 @@ std::string region_word(const Instance& inst, const Regions& regions, uint32_t r
 }
 
 // The p and couplings lines (docs/certificates.md, "Format").
-std::string header(const Instance& inst, bool one_axis) {
-  return std::string("p gridlock-collide-no-certificate 1 continuous") + (one_axis ? " one-axis" : "") + "\n" +
-         couplings_line(inst);
+std::string header(const Instance& inst, const CollideCertificate& c) {
+  const std::string kind = c.one_axis         ? " one-axis"
+                           : c.kept_axis == 0 ? " kept-order x"
+                           : c.kept_axis == 1 ? " kept-order y"
+                                              : "";
+  return "p gridlock-collide-no-certificate 1 continuous" + kind + "\n" + couplings_line(inst);
 }
 
 }  // namespace
@@ -179,6 +183,16 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
   std::optional<std::vector<std::pair<uint32_t, uint32_t>>> groups;
   if (!every_pair) groups = one_axis_group_pairs(inst, regions);
   out.one_axis = groups.has_value();
+  // One coupling whose faces keep their order on one axis: only the pairs
+  // the fixed-axis sweep tests (if none overlaps, nothing does).
+  if (!every_pair && !groups && inst.couplings().size() == 1) {
+    if (std::optional<KeptOrderPairs> kept = single_coupling_kept_order_pairs(inst, tree, regions)) {
+      out.kept_axis = kept->axis;
+      groups.emplace();
+      groups->reserve(kept->pairs.size());
+      for (const RegionPair& p : kept->pairs) groups->emplace_back(p.a, p.b);
+    }
+  }
   PairwiseStats stats;
   const std::optional<PairCollision> hit = groups ? listed_pairs_collision(inst, tree, regions, TimeModel::Continuous,
                                                                            *groups, &stats, deadline, on_apart)
@@ -190,11 +204,11 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
     out.why_none = region_label(inst, regions, hit->a) + " and " + region_label(inst, regions, hit->b) +
                    " can collide in continuous time";
     out.meet_a = hit->a, out.meet_b = hit->b;
-    if (partial) out.text = header(inst, out.one_axis) + body;
+    if (partial) out.text = header(inst, out) + body;
     return out;
   }
   if (on_source) on_source(inst.num_nodes(), inst.num_nodes());
-  out.text = header(inst, out.one_axis) + body;
+  out.text = header(inst, out) + body;
   return out;
 }
 

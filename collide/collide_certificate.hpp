@@ -14,7 +14,11 @@
 // When every operation moves along one axis, the first collision is always
 // between two regions of one row group (docs/collide.md, "One axis, any
 // couplings"), so the certificate's p line says `one-axis` and covers only
-// the O(n) group pairs; the checker computes the groups itself.
+// the O(n) group pairs; the checker computes the groups itself. With one
+// coupling whose faces keep their order along one axis, the p line says
+// `kept-order x` (or y) and covers only the pairs of the fixed-axis sweep
+// (collide/single_coupling.hpp, single_coupling_kept_order_pairs): if none
+// of them overlaps, nothing does; the checker runs its own sweep.
 #pragma once
 
 #include <cstdint>
@@ -32,6 +36,7 @@ struct CollideCertificate {
   uint64_t pairs = 0;     // region pairs covered
   uint64_t lines = 0;     // of which with an r line (the others: one form rules them out)
   bool one_axis = false;  // the one-axis kind: pairs are the row groups' pairs only
+  int kept_axis = -1;     // the kept-order kind (0 x, 1 y): the fixed-axis sweep's pairs only
   // Some pair can overlap in continuous time: the first one found (regions).
   uint32_t meet_a = kNone, meet_b = kNone;
 };
@@ -44,7 +49,9 @@ struct CollideCertificate {
 // Kind: when every operation moves along one axis (and every_pair is
 // false), the one-axis kind: the row groups' pairs only, walked as
 // listed_pairs_collision walks them, O(n log n + n sqrt(n)) plus O(nets)
-// per pair found apart; otherwise every pair: the pairwise traversal,
+// per pair found apart; else, with one coupling whose faces keep their
+// order along one axis, the kept-order kind: the sweep's O(n) pairs,
+// walked the same way; otherwise every pair: the pairwise traversal,
 // O(n^2) steps and O(R^2) pair tests, plus O(nets) per pair. Deadline as
 // in find_collision (LimitReached).
 // partial (for tests): when a pair can overlap, text still holds the lines

@@ -432,7 +432,7 @@ struct AxisEvent {
 // neighbours there (docs/collide.md, "One coupling: one axis keeps its
 // order": the proof). The first overlap met is kept in best. O(r log r).
 bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEvent>& events, size_t m, const Frac& T,
-                     Earliest& best, uint64_t& tests) {
+                     Earliest& best, uint64_t& tests, std::vector<RegionPair>* tested = nullptr) {
   if (T.num <= 0) return false;  // (0, T) is empty (a first moment at t = 0)
   // The low m face at T/2, times 2 T.den.
   auto key = [&](uint32_t r) {
@@ -441,6 +441,7 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
   };
   auto meets = [&](uint32_t x, uint32_t y) {
     ++tests;
+    if (tested) tested->push_back(RegionPair{std::min(x, y), std::max(x, y)});
     const Span s = overlap_span(faces[x], faces[y]);
     if (s.empty() || !less(s.lo, T)) return false;
     best.test(faces, x, y);
@@ -461,11 +462,20 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
   return false;
 }
 
-}  // namespace
+// What the fixed-axis sweep needs: the faces, the kept axis s, the other
+// axis m and the sweep's events along s (sorted). nullopt when neither
+// axis keeps its order or some live region's m width is not positive all
+// along (0, 1).
+struct FixedAxisSetup {
+  std::vector<Faces> faces;
+  size_t s = 0, m = 1;
+  std::vector<AxisEvent> events;
+};
 
-std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
-                                                          const Regions& regions, const Deadline* deadline) {
-  const std::vector<Faces> faces = region_faces(inst, t, regions);
+std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+  FixedAxisSetup out;
+  out.faces = region_faces(inst, t, regions);
+  const std::vector<Faces>& faces = out.faces;
   std::vector<uint32_t> live;
   for (uint32_t r = 0; r < faces.size(); ++r)
     if (!alive(faces[r]).empty()) live.push_back(r);
@@ -492,8 +502,21 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
   std::sort(events.begin(), events.end(), [](const AxisEvent& e, const AxisEvent& f) {
     return e.x != f.x ? e.x < f.x : e.kind != f.kind ? e.kind < f.kind : e.r < f.r;
   });
+  out.s = s, out.m = m, out.events = std::move(events);
+  return out;
+}
+
+}  // namespace
+
+std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
+                                                          const Regions& regions, const Deadline* deadline) {
+  const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions);
+  if (!setup) return std::nullopt;
+  const std::vector<Faces>& faces = setup->faces;
+  const std::vector<AxisEvent>& events = setup->events;
+  const size_t m = setup->m;
   FixedAxisAnswer out;
-  out.axis = static_cast<int>(s);
+  out.axis = static_cast<int>(setup->s);
   Earliest best;
   ++out.sweeps;
   if (!collides_before(faces, events, m, Frac{1, 1}, best, out.tests)) return out;
@@ -519,6 +542,18 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
     }
   }
   out.answer = named(best);
+  return out;
+}
+
+std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,
+                                                               const Regions& regions) {
+  const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions);
+  if (!setup) return std::nullopt;
+  KeptOrderPairs out;
+  out.axis = static_cast<int>(setup->s);
+  Earliest best;
+  uint64_t tests = 0;
+  if (collides_before(setup->faces, setup->events, setup->m, Frac{1, 1}, best, tests, &out.pairs)) return std::nullopt;
   return out;
 }
 

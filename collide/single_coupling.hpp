@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "common/limits.hpp"
 #include "lattice/instance.hpp"
@@ -127,6 +128,21 @@ struct FixedAxisAnswer {
 // given) between sweeps.
 std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
                                                           const Regions& regions, const Deadline* deadline = nullptr);
+
+// The pairs a NO of single_coupling_fixed_axis rests on: the pairs its
+// sweep tests (an entering region against its two neighbours, each pair
+// once per entry, as (smaller, larger)), at most 2 per live region. If no
+// listed pair ever overlaps, the sweep answers NO, so no pair overlaps
+// (docs/collide.md, "One coupling: one axis keeps its order"); the
+// kept-order collide certificate covers only these (checked by certify's
+// own sweep). nullopt when single_coupling_fixed_axis returns nullopt or
+// a YES. O(r log r).
+struct KeptOrderPairs {
+  int axis = 0;  // the kept axis (0 x, 1 y)
+  std::vector<RegionPair> pairs;
+};
+std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,
+                                                               const Regions& regions);
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.

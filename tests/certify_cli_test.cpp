@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 #include <string>
 
+#include "bench/bench_families.hpp"
+#include "lattice/grid_format.hpp"
 #include "support/cli.hpp"
 #include "support/instance_io.hpp"
 
@@ -193,6 +196,48 @@ TEST(CertifyCli, CollideOneAxisCertificateEndToEnd) {
                        "row group)"),
             std::string::npos)
       << y.err;
+}
+
+// One coupling whose x faces keep their order (the mixed comb): collide
+// writes the kept-order kind (only the fixed-axis sweep's pairs), certify
+// checks it with its own sweep and says so; the y word is refused (the
+// teeth's y faces change order), and so is the word on an instance of
+// several couplings.
+TEST(CertifyCli, CollideKeptOrderCertificateEndToEnd) {
+  const std::string d = test::temp_dir();
+  std::ostringstream grid;
+  write_instance(grid, bench::comb(64, 3, 64, bench::CombOps::Mixed, 0, 7));
+  const std::string comb = test::write_file(d + "/comb.grid", grid.str()), cert = d + "/comb.cert";
+  const auto w = run_gridlock({"collide", comb, "--certificate", cert, "--json"});
+  ASSERT_EQ(w.exit_code, 20) << w.out << w.err;
+  EXPECT_NE(w.out.find("\"algorithm\":\"single-coupling-fixed-axis\""), std::string::npos) << w.out;
+  EXPECT_NE(w.out.find("\"certificate_kind\":\"kept-order\""), std::string::npos) << w.out;
+  EXPECT_NE(w.out.find("(one coupling, the x order kept: the sweep's pairs)"), std::string::npos) << w.out;
+  const std::string text = test::read_file(cert);
+  EXPECT_EQ(text.rfind("p gridlock-collide-no-certificate 1 continuous kept-order x\n", 0), 0U) << text;
+  for (const char* model : {"continuous", "discrete"}) {
+    const auto c = run_gridlock({"certify", comb, cert, "--model", model, "--json"});
+    EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+    EXPECT_NE(c.out.find("one coupling, the x order kept, "), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find("\"kept_axis\":\"x\""), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find("\"certificate checked\""), std::string::npos) << c.out;
+  }
+  std::string other = text;
+  other.replace(other.find("kept-order x"), 12, "kept-order y");
+  const std::string otherf = test::write_file(d + "/other.cert", other);
+  const auto o = run_gridlock({"certify", comb, otherf});
+  EXPECT_EQ(o.exit_code, 1);
+  EXPECT_NE(o.err.find(otherf + ":1: certificate rejected: kept-order y, but the y faces of "), std::string::npos)
+      << o.err;
+  const std::string row = test::write_file(d + "/row.grid", test::expansion_row_grid(41, 3)), rcert = d + "/row.cert";
+  ASSERT_EQ(run_gridlock({"collide", row, "--certificate", rcert}).exit_code, 20);
+  std::string several = test::read_file(rcert);
+  several.replace(several.find("one-axis"), 8, "kept-order x");
+  const std::string severalf = test::write_file(d + "/several.cert", several);
+  const auto v = run_gridlock({"certify", row, severalf});
+  EXPECT_EQ(v.exit_code, 1);
+  EXPECT_NE(v.err.find(severalf + ":1: certificate rejected: kept-order, but the instance has "), std::string::npos)
+      << v.err;
 }
 
 TEST(CertifyCli, VerifyAndGenInstancesUseIt) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "collide/collide.hpp"
 #include "collide/collide_certificate.hpp"
 #include "collide/internal/collide_pairs.hpp"
+#include "collide/single_coupling.hpp"
 #include "common/random.hpp"
 #include "lattice/motion.hpp"
 #include "lattice/random_instance.hpp"
@@ -429,6 +431,117 @@ TEST(CertifyCollide, OneAxisKindCoversTheRowGroups) {
             << " YES refused a one-axis certificate without lines\n";
   EXPECT_GT(no, test::scaled(300));
   EXPECT_GT(yes_refused, test::scaled(300));
+}
+
+// One coupling whose faces keep their order along one axis: the checker's
+// sweep pairs (kept_order_pairs_of, its own code) are collide's
+// (single_coupling_kept_order_pairs), pair for pair; on a NO the
+// kept-order certificate is accepted in both models, its r lines are among
+// the every-pair certificate's, each line dropped or weakened is refused,
+// and so are the other axis's word where that order changes and the word
+// on an instance of several couplings; on a YES a bare kept-order
+// certificate is refused. Random shapes with every operation in one
+// coupling, some transposed.
+std::string with_kind(const std::string& text, const std::string& kind) {
+  std::vector<std::string> lines = lines_of(text);
+  lines.at(0) = "p gridlock-collide-no-certificate 1 continuous" + kind;
+  return join(lines);
+}
+
+TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
+  int instances = 0, kept = 0, kept_kind = 0, no = 0, lines = 0, other_refused = 0, yes_refused = 0,
+      several_refused = 0, y_axis = 0;
+  uint64_t sweep_pairs = 0, all_pairs = 0;
+  for (int i = 0; i < test::scaled(3000); ++i) {
+    const uint64_t seed = test::base_seed(98000) + static_cast<uint64_t>(i);
+    Rng rng(seed * 8191 + 13);
+    RandomInstanceParams p = cert_params(rng);
+    if (rng.below(3) == 0)
+      p.nodes += static_cast<uint32_t>(rng.below(60)), p.ops += static_cast<uint32_t>(rng.below(30));
+    const Instance made = random_instance(p, seed);
+    const std::string at = where(seed);
+    const FaceNets faces = FaceNets::build(made);
+    if (std::ranges::any_of(faces.coupling_breaks_cycle, [](char b) { return b != 0; })) continue;
+    if (made.couplings().size() > 1 && rng.below(4) == 0) {  // several couplings: the word is refused at line 1
+      const CollideCertificate c = collide_no_certificate(made);
+      if (!c.text.empty()) {
+        EXPECT_EQ(c.kept_axis, -1) << at;
+        const CertifyResult r = certify(made, with_kind(c.text, " kept-order x"), "continuous");
+        EXPECT_TRUE(!r.proved && blames_line(r, 1)) << at << ": " << r.reason;
+        ++several_refused;
+      }
+    }
+    const Instance inst = test::rebuilt(made, rng.below(2) == 0, true);
+    if (std::ranges::any_of(FaceNets::build(inst).coupling_breaks_cycle, [](char b) { return b != 0; })) continue;
+    ++instances;
+    const Regions regions = Regions::build(inst);
+    const SpanningTree tree = SpanningTree::build(inst);
+    const CertifyGeometry geo(inst);
+    const std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, tree, regions);
+    const std::optional<KeptOrderPairs> pairs = single_coupling_kept_order_pairs(inst, tree, regions);
+    ASSERT_EQ(pairs.has_value(), fixed && !fixed->answer.collides) << at;
+    const CollideCertificate cert = collide_no_certificate(inst);
+    if (fixed && fixed->answer.collides) {  // YES: a bare kept-order certificate is refused
+      const std::string bare = "p gridlock-collide-no-certificate 1 continuous kept-order " +
+                               std::string(fixed->axis == 0 ? "x" : "y") + "\n" + couplings_line(inst);
+      EXPECT_FALSE(certify(inst, bare, "continuous").proved) << at;
+      EXPECT_TRUE(cert.text.empty()) << at;
+      ++yes_refused;
+      continue;
+    }
+    if (!pairs) {
+      if (!cert.text.empty() && !cert.one_axis) {
+        EXPECT_EQ(cert.kept_axis, -1) << at;
+      }
+      continue;
+    }
+    ++kept;
+    std::vector<std::pair<uint32_t, uint32_t>> mine;
+    if (const auto e = kept_order_pairs_of(inst, geo, pairs->axis, mine)) FAIL() << at << ": " << *e;
+    std::vector<std::pair<uint32_t, uint32_t>> theirs;
+    for (const RegionPair& q : pairs->pairs) theirs.emplace_back(q.a, q.b);
+    ASSERT_EQ(ordered(mine), ordered(theirs)) << at;
+    ASSERT_EQ(mine.size(), theirs.size()) << at;
+    sweep_pairs += mine.size();
+    all_pairs += regions.size() * (regions.size() - 1) / 2;
+    ASSERT_FALSE(cert.text.empty()) << at << ": " << cert.why_none;
+    ++no;
+    if (cert.one_axis) continue;  // every operation along one axis: that kind comes first
+    ASSERT_EQ(cert.kept_axis, pairs->axis) << at;
+    ++kept_kind;
+    y_axis += pairs->axis == 1;
+    for (const char* model : {"continuous", "discrete"}) {
+      const CertifyResult r = certify(inst, cert.text, model);
+      ASSERT_TRUE(r.proved) << at << ": " << r.reason << "\n" << cert.text;
+      EXPECT_EQ(r.kept_axis, pairs->axis) << at;
+      EXPECT_EQ(r.axioms, mine.size()) << at;
+      EXPECT_EQ(r.inequalities, cert.lines) << at;
+    }
+    const CollideCertificate every = collide_no_certificate(inst, nullptr, false, {}, true);
+    const std::vector<std::string> ours = r_lines(cert.text), all = r_lines(every.text);
+    EXPECT_TRUE(std::ranges::includes(all, ours)) << at << ":\n" << cert.text << "every pair:\n" << every.text;
+    lines += static_cast<int>(ours.size());
+    // The other axis: refused at line 1 where its order changes.
+    const int other = 1 - pairs->axis;
+    std::vector<std::pair<uint32_t, uint32_t>> unused;
+    if (kept_order_pairs_of(inst, geo, other, unused)) {
+      const CertifyResult r = certify(
+          inst, with_kind(cert.text, std::string(" kept-order ") + (other == 0 ? "x" : "y")), "continuous");
+      EXPECT_TRUE(!r.proved && blames_line(r, 1)) << at << ": " << r.reason;
+      ++other_refused;
+    }
+    expect_mutations_refused(inst, cert.text, true, rng, at);
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::cout << "[certify-collide] kept order: " << instances << " one-coupling instances, " << kept
+            << " NOs with a kept order, " << kept_kind << " of them of the kept-order kind (" << y_axis << " along y), "
+            << sweep_pairs << " sweep pairs of " << all_pairs << " pairs; " << no << " certified, " << lines
+            << " r lines; " << other_refused << " refused the other axis, " << yes_refused
+            << " YES refused a bare certificate, " << several_refused << " of several couplings refused the word\n";
+  EXPECT_GT(kept_kind, test::scaled(300));
+  EXPECT_GT(yes_refused, test::scaled(100));
+  EXPECT_GT(other_refused, test::scaled(50));
+  EXPECT_GT(several_refused, test::scaled(50));
 }
 
 }  // namespace

@@ -65,7 +65,11 @@ int run_certify(const std::vector<std::string>& args) {
   if (r.kind == "collide") {
     const std::string groups = r.one_axis ? "one axis, " + std::to_string(r.axioms) +
                                                 " pairs in row groups (a first collision is in one), "
-                                          : "";
+                               : r.kept_axis >= 0
+                                   ? std::string("one coupling, the ") + (r.kept_axis == 0 ? "x" : "y") +
+                                         " order kept, " + std::to_string(r.axioms) +
+                                         " pairs of the sweep along it (if none overlaps, nothing does), "
+                                   : "";
     ans.comment("no schedule collides (gridlock collide's NO, in both models): " + groups +
                 std::to_string(r.inequalities) + " pairs of regions kept apart by their multipliers, " +
                 std::to_string(r.lemmas) + " by one form");
@@ -78,6 +82,8 @@ int run_certify(const std::vector<std::string>& args) {
   ans.data()["model"] = model;
   ans.data()["lemmas"] = r.lemmas;
   if (r.one_axis) ans.data()["row_group_pairs"] = r.axioms;
+  if (r.kept_axis >= 0)
+    ans.data()["kept_order_pairs"] = r.axioms, ans.data()["kept_axis"] = r.kept_axis == 0 ? "x" : "y";
   return ans.finish(Verdict::No);
 }
 

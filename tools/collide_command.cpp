@@ -77,10 +77,13 @@ void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, co
   }
   cli::write_text_file(cert_path, cert.text);
   ans.comment("certificate written to " + cert_path + ": " + std::to_string(cert.pairs) + " pairs of regions" +
-              (cert.one_axis ? " (one axis: the row groups' pairs)" : "") + ", " + std::to_string(cert.lines) +
-              " with multipliers ('gridlock certify' checks it)");
+              (cert.one_axis         ? " (one axis: the row groups' pairs)"
+               : cert.kept_axis >= 0 ? std::string(" (one coupling, the ") + (cert.kept_axis == 0 ? "x" : "y") +
+                                           " order kept: the sweep's pairs)"
+                                     : "") +
+              ", " + std::to_string(cert.lines) + " with multipliers ('gridlock certify' checks it)");
   ans.data()["certificate"] = cert_path;
-  ans.data()["certificate_kind"] = cert.one_axis ? "one-axis" : "every-pair";
+  ans.data()["certificate_kind"] = cert.one_axis ? "one-axis" : cert.kept_axis >= 0 ? "kept-order" : "every-pair";
 }
 
 // A colliding schedule found: what was predicted, the simulator's collision,

@@ -21,14 +21,26 @@
 // group (row_group_pairs_of). The first collision of any schedule is
 // between two regions of one group (docs/collide.md, "One axis, any
 // couplings", a proof), so these pairs apart means no collision at all.
+//
+// The kept-order kind (p line ending in `kept-order x` or `kept-order y`):
+// the instance has one coupling, the faces of that axis (of every live
+// region) keep their order while it runs, and step 2 is required only of
+// the pairs of the checker's own sweep along that axis
+// (kept_order_pairs_of). Then the fixed-axis sweep of gridlock collide,
+// run with the exact test, would find none of its pairs overlapping, so
+// no pair overlaps (docs/collide.md, "One coupling: one axis keeps its
+// order", Lemmas 1 and 2).
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "certify/certify.hpp"
+#include "certify/internal/geometry.hpp"
 #include "lattice/motion.hpp"
 
 namespace gridlock {
@@ -48,6 +60,20 @@ bool is_collide_certificate(std::string_view text);
 // and of each pair those bounds leave (tree paths of length L); O(e L)
 // for the cycles.
 void check_collide_proof(const Instance& inst, std::string_view text, CertifyResult& r);
+
+// The pairs the kept-order kind needs covered, for one coupling and the
+// kept axis s (0: x, 1: y), each once as (smaller, larger). Live regions
+// (both widths positive at some common moment of (0, 1)) only. Their s
+// faces at progress 0 and 1 (sorted by the order just after 0, the values
+// at 1 never decrease) must keep their order, and their widths across s
+// must be positive on all of (0, 1); else the reason. Then a sweep along s
+// at progress 1/2 (a leaving end before an entering one at one
+// coordinate) keeps the regions on the sweep line by their low face across
+// s at 1/2 and pairs each entering region with its two neighbours there.
+// O(R log R + n). The caller checks that there is one coupling and the
+// cycles (CertifyGeometry::cycle_breaker).
+std::optional<std::string> kept_order_pairs_of(const Instance& inst, const CertifyGeometry& geo, int s,
+                                               std::vector<std::pair<uint32_t, uint32_t>>& out);
 
 // The pairs of every row group along axis (0: x, 1: y), each once: the
 // regions of each row (same position across the axis) sorted by (lo, hi,
