@@ -6,6 +6,7 @@
 #include <iterator>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -468,6 +469,7 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
 // along (0, 1).
 struct FixedAxisSetup {
   std::vector<Faces> faces;
+  std::vector<uint32_t> live;
   size_t s = 0, m = 1;
   std::vector<AxisEvent> events;
 };
@@ -502,8 +504,40 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
   std::sort(events.begin(), events.end(), [](const AxisEvent& e, const AxisEvent& f) {
     return e.x != f.x ? e.x < f.x : e.kind != f.kind ? e.kind < f.kind : e.r < f.r;
   });
-  out.s = s, out.m = m, out.events = std::move(events);
+  out.s = s, out.m = m, out.events = std::move(events), out.live = std::move(live);
   return out;
+}
+
+// Ties of the first moment t*: the simulator names the smallest pair that
+// starts to overlap then. Such a pair overlaps just after t*, so its
+// closed boxes meet at t*, and so share a unit cell (each box is entered
+// in every cell it meets, closed). Every pair sharing a cell is tested;
+// best (already at t*, the least start) keeps the smallest pair starting
+// at t*. O(r log r) for boxes of bounded size and a configuration
+// without overlaps at t* (so few regions per cell).
+void smallest_first_pair(const std::vector<Faces>& faces, const std::vector<uint32_t>& live, Earliest& best) {
+  const Frac t = best.span.lo;
+  // (cell, region), the cell packed into one key: x and y as offsets from
+  // their least values (spans below 2^32: coordinates within kMaxCoordinate).
+  std::vector<std::array<int64_t, 4>> box(live.size());
+  int64_t x_min = INT64_MAX, y_min = INT64_MAX;
+  for (size_t i = 0; i < live.size(); ++i) {
+    const Faces& f = faces[live[i]];
+    box[i] = {floor_at(f[0], t), floor_at(f[1], t), floor_at(f[2], t), floor_at(f[3], t)};
+    x_min = std::min(x_min, box[i][0]), y_min = std::min(y_min, box[i][2]);
+  }
+  std::vector<std::pair<uint64_t, uint32_t>> cells;
+  cells.reserve(4 * live.size());
+  for (size_t i = 0; i < live.size(); ++i)
+    for (int64_t x = box[i][0]; x <= box[i][1]; ++x)
+      for (int64_t y = box[i][2]; y <= box[i][3]; ++y)
+        cells.emplace_back(static_cast<uint64_t>(x - x_min) << 32 | static_cast<uint64_t>(y - y_min), live[i]);
+  std::sort(cells.begin(), cells.end());
+  for (size_t b = 0, e = 0; b < cells.size(); b = e) {
+    for (e = b + 1; e < cells.size() && cells[e].first == cells[b].first;) ++e;
+    for (size_t i = b; i < e; ++i)
+      for (size_t j = i + 1; j < e; ++j) best.test(faces, cells[i].second, cells[j].second);
+  }
 }
 
 }  // namespace
@@ -541,6 +575,7 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
       else lo = mid.num;
     }
   }
+  smallest_first_pair(faces, setup->live, best);
   out.answer = named(best);
   return out;
 }

@@ -110,9 +110,8 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
 struct FixedAxisAnswer {
   int axis = 0;  // the axis whose faces keep their order (0 x, 1 y; x when both do)
   // collides; on a YES pair, first (the first collision's moment) and
-  // during, as single_coupling_sweep names them, except that on ties of
-  // the first moment the pair is one of those that start to overlap
-  // then, not necessarily the smallest.
+  // during, as single_coupling_sweep and the simulator name them (the
+  // smallest pair on ties of the first moment).
   SingleCouplingAnswer answer;
   uint64_t sweeps = 0;  // sweeps run: 1 on a NO; a YES bisects for its first moment
   uint64_t tests = 0;   // exact pair tests
@@ -124,7 +123,9 @@ struct FixedAxisAnswer {
 // first). A NO costs one sweep, O(r log r); a YES bisects [0, 1) for the
 // first moment, one or two sweeps per halving, at most about
 // 2 log2(2 max speed) + 2 halvings (distinct starts are fractions with
-// denominators up to twice the largest face speed). Checks deadline (if
+// denominators up to twice the largest face speed), then the pairs whose
+// closed boxes share a unit cell at that moment, for the smallest one
+// starting then (the simulator's pair). Checks deadline (if
 // given) between sweeps.
 std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
                                                           const Regions& regions, const Deadline* deadline = nullptr);

@@ -49,6 +49,7 @@ struct Tally {
   int cases = 0, yes = 0, no = 0, brute = 0, cycles = 0, by_packing = 0, multi_band = 0, first_named = 0, pruned = 0;
   int fixed_no = 0, fixed_yes = 0, fixed_y = 0;  // decided by single_coupling_fixed_axis (y: the kept axis is y)
   uint64_t fixed_sweeps = 0;                     // its sweeps on the YES (bisecting for the first moment)
+  int fixed_named = 0;                           // its YES equal to the simulator's first collision, pair too
   uint64_t max_active = 0;
 };
 
@@ -156,10 +157,15 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
       ++tally.first_named;
       if (inst.couplings().size() == 1) {  // find_collision reports it, checked at one moment
         const CollideResult r = find_collision(inst, TimeModel::Continuous);
-        if (r.algorithm == "single-coupling-fixed-axis") {  // the first moment; one of its pairs
+        if (r.algorithm == "single-coupling-fixed-axis") {  // the simulator's first collision, its pair too
           ASSERT_TRUE(fixed) << where;
+          expect_names_first(inst, fixed->answer, *run.collision, where + ", the fixed-axis sweep");
+          if (::testing::Test::HasFatalFailure()) return;
           ASSERT_EQ(r.checked_at, fixed->answer.during) << where;
           ASSERT_EQ(r.simulated->time, run.collision->time) << where;
+          ASSERT_EQ(r.simulated->a, run.collision->a) << where;
+          ASSERT_EQ(r.simulated->b, run.collision->b) << where;
+          ++tally.fixed_named;
         }
         if (r.algorithm == "single-coupling") {
           ASSERT_EQ(r.checked_at, ans.during) << where;
@@ -203,8 +209,8 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << " first collisions equal to the simulator's; most items present at an entry " << tally.max_active << "; "
             << tally.multi_band << " banded sweeps of several bands, " << tally.pruned
             << " of them keeping fewer items after an overlap; one axis keeping its order: " << tally.fixed_no
-            << " NOs and " << tally.fixed_yes << " YES (" << tally.fixed_sweeps << " sweeps), " << tally.fixed_y
-            << " of them along y)\n";
+            << " NOs and " << tally.fixed_yes << " YES (" << tally.fixed_sweeps << " sweeps, " << tally.fixed_named
+            << " named as the simulator does through find_collision), " << tally.fixed_y << " of them along y)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
@@ -213,6 +219,7 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.no, cases / 10);
   EXPECT_GT(tally.fixed_no, cases / 10);
   EXPECT_GT(tally.fixed_yes, cases / 20);
+  EXPECT_GT(tally.fixed_named, cases / 20);
   EXPECT_GT(tally.fixed_y, cases / 50);
 }
 
@@ -445,11 +452,9 @@ TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
       ASSERT_TRUE(r.collides) << where;
       ASSERT_TRUE(r.simulated) << where;
       EXPECT_EQ(r.simulated->time, run.collision->time) << where;
-      // K = 1: a move of one cell, after which no two x faces have swapped; the
-      // fixed-axis sweep bisects for the first moment, and its pair
-      // overlaps then (find_collision checks it at r.checked_at).
+      // K = 1: a move of one cell, after which no two x faces have swapped;
+      // the fixed-axis sweep bisects for the same first collision.
       EXPECT_EQ(r.algorithm, K == 1 ? "single-coupling-fixed-axis" : "single-coupling") << where;
-      if (K == 1) continue;
       EXPECT_EQ(r.checked_at, ans.during) << where;
       EXPECT_EQ(r.simulated->a, run.collision->a) << where;
       EXPECT_EQ(r.simulated->b, run.collision->b) << where;
