@@ -543,7 +543,11 @@ void prove_clamped_no(GeneralRun& run, const Component& comp, const ConstraintSy
                           (got.verdict == Verdict::No ? "found no proof" : "has a model") + ", so no proof";
     return;
   }
-  run.proof->why_none = none + ", which writes no proof";
+  // The relaxation does not take the component either: say what stops it
+  // (a pair of more than kMaxGapCouplings couplings), not only why the
+  // learning engine declined the component in the first place.
+  run.proof->why_none = none + ", which writes no proof, and the learning engine's relaxation cannot take it (" +
+                        *continuous_sat_unsupported(sys, comp.pairs, true) + ")";
 }
 
 // Decides one component that the cheap tests did not settle: the discrete

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
@@ -525,6 +526,26 @@ TEST(CertifyBounds, CommandLineEndToEnd) {
   // Checked as discrete: refused.
   const auto v = run_gridlock({"certify", grid, cert});
   EXPECT_EQ(v.exit_code, 1);
+}
+
+// A continuous NO with no certificate says what stops the proof: here Z3
+// decides on the clamped encoding and a pair of more than 8 couplings
+// keeps the learning engine's relaxation out (docs/certificates.md, "Not
+// certified"); the NO stands, no file is written.
+TEST(CertifyBounds, UncertifiedNoSaysWhatStopsTheRelaxation) {
+  using test::run_gridlock;
+  const std::string d = test::temp_dir(), grid = d + "/p.grid", cert = d + "/p.nocert";
+  ASSERT_EQ(run_gridlock({"random", "--family", "path", "--couplings", "10", "--max-coupling", "4", "--seed", "5059",
+                          "-o", grid})
+                .exit_code,
+            0);
+  const auto s = run_gridlock({"solve", grid, "--model", "continuous", "--certificate", cert});
+  ASSERT_EQ(s.exit_code, 20) << s.out << s.err;
+  EXPECT_NE(s.out.find("c no certificate written: decided by Z3 on the clamped encoding"), std::string::npos) << s.out;
+  EXPECT_NE(s.out.find("the learning engine's relaxation cannot take it (a pair of more than 8 couplings)"),
+            std::string::npos)
+      << s.out;
+  EXPECT_FALSE(std::filesystem::exists(cert));
 }
 
 }  // namespace
