@@ -188,9 +188,7 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
   if (!every_pair && !groups && inst.couplings().size() == 1) {
     if (std::optional<KeptOrderPairs> kept = single_coupling_kept_order_pairs(inst, tree, regions)) {
       out.kept_axis = kept->axis;
-      groups.emplace();
-      groups->reserve(kept->pairs.size());
-      for (const RegionPair& p : kept->pairs) groups->emplace_back(p.a, p.b);
+      groups = std::move(kept->pairs);
     }
   }
   PairwiseStats stats;

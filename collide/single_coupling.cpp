@@ -234,8 +234,10 @@ struct Earliest {
   // that it can no longer matter)?
   bool passed(const Frac& start) const { return found && less(span.lo, start); }
   // The exact test on regions x and y; their overlap is kept if earlier.
-  void test(const std::vector<Faces>& faces, uint32_t x, uint32_t y) {
-    const Span s = overlap_span(faces[x], faces[y]);
+  void test(const std::vector<Faces>& faces, uint32_t x, uint32_t y) { keep(x, y, overlap_span(faces[x], faces[y])); }
+  // x and y overlap during s (when not empty): kept if earlier, or as
+  // early and a smaller pair.
+  void keep(uint32_t x, uint32_t y, const Span& s) {
     if (s.empty()) return;
     const RegionPair p{std::min(x, y), std::max(x, y)};
     if (found && (less(span.lo, s.lo) || (!less(s.lo, span.lo) && std::pair(pair.a, pair.b) < std::pair(p.a, p.b))))
@@ -433,7 +435,7 @@ struct AxisEvent {
 // neighbours there (docs/collide.md, "One coupling: one axis keeps its
 // order": the proof). The first overlap met is kept in best. O(r log r).
 bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEvent>& events, size_t m, const Frac& T,
-                     Earliest& best, uint64_t& tests, std::vector<RegionPair>* tested = nullptr) {
+                     Earliest& best, uint64_t& tests, std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
   if (T.num <= 0) return false;  // (0, T) is empty (a first moment at t = 0)
   // The low m face at T/2, times 2 T.den.
   auto key = [&](uint32_t r) {
@@ -442,10 +444,10 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
   };
   auto meets = [&](uint32_t x, uint32_t y) {
     ++tests;
-    if (tested) tested->push_back(RegionPair{std::min(x, y), std::max(x, y)});
+    if (tested) tested->emplace_back(std::min(x, y), std::max(x, y));
     const Span s = overlap_span(faces[x], faces[y]);
     if (s.empty() || !less(s.lo, T)) return false;
-    best.test(faces, x, y);
+    best.keep(x, y, s);
     return true;
   };
   std::map<__int128, uint32_t> active;  // distinct keys: equal ones overlap at T/2
@@ -555,8 +557,8 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
   ++out.sweeps;
   if (!collides_before(faces, events, m, Frac{1, 1}, best, out.tests)) return out;
   // A YES: the first moment t* is the least start of an overlapping pair.
-  // [lo, hi) holds t* (dyadic, den 2^k); best's start c >= t*. Each round
-  // asks for an overlap before c (none: c = t*), then halves [lo, hi).
+  // lo <= t* <= c <= hi (dyadic, den 2^k), c best's start. Each round asks
+  // for an overlap before c (none: c = t*), then halves [lo, hi].
   // Distinct starts differ by more than the interval once it is short
   // enough, so the rounds end; O(log) rounds for bounded speeds.
   int64_t lo = 0, hi = 1, den = 1;

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "common/limits.hpp"
@@ -120,7 +121,7 @@ struct FixedAxisAnswer {
 // nullopt when the faces of both axes change order, or when some live
 // region's width along the other axis is not positive all along (0, 1)
 // (only when the coupling breaks a cycle: find_collision settles that
-// first). A NO costs one sweep, O(r log r); a YES bisects [0, 1) for the
+// first). A NO costs one sweep, O(r log r); a YES bisects [0, 1] for the
 // first moment, one or two sweeps per halving, at most about
 // 2 log2(2 max speed) + 2 halvings (distinct starts are fractions with
 // denominators up to twice the largest face speed), then the pairs whose
@@ -140,7 +141,7 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
 // a YES. O(r log r).
 struct KeptOrderPairs {
   int axis = 0;  // the kept axis (0 x, 1 y)
-  std::vector<RegionPair> pairs;
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
 };
 std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,
                                                                const Regions& regions);
