@@ -14,7 +14,13 @@ namespace gridlock {
 
 namespace {
 
+// Lines are bounded so that a binary or runaway file is refused before it
+// fills memory. Before the header the bound is kMaxLine; after it, a q line
+// naming every declared operation (names of at most 64 bytes and a space
+// each) must still fit, or write_instance would write files this reader
+// refuses: one coupling of 10^5 operations is longer than 1 MiB.
 constexpr size_t kMaxLine = 1 << 20;
+constexpr size_t kBytesPerOpName = 65;
 
 class Reader {
  public:
@@ -52,6 +58,7 @@ class Reader {
   int64_t seen_[4] = {0, 0, 0, 0};
   static constexpr const char* kWhat[4] = {"nodes", "edges", "operations", "couplings"};
   std::vector<long> node_line_;  // for "not connected" messages
+  size_t max_line_ = kMaxLine;   // raised by the header (kMaxLine's comment)
 };
 
 bool Reader::next_line() {
@@ -62,9 +69,9 @@ bool Reader::next_line() {
   while ((ch = in_.get()) != EOF) {
     any = true;
     if (ch == '\n') break;
-    if (line_.size() >= kMaxLine) {
+    if (line_.size() >= max_line_) {
       ++line_no_;
-      err_ = error("line longer than " + std::to_string(kMaxLine) + " bytes");
+      err_ = error("line longer than " + std::to_string(max_line_) + " bytes");
       return false;
     }
     line_.push_back(static_cast<char>(ch));
@@ -146,6 +153,7 @@ MaybeError Reader::header_line(const std::vector<std::string_view>& t) {
   for (int k = 0; k < 4; ++k)
     if (!integer(t[2 + static_cast<size_t>(k)], 0, 2 * kMaxNodes, "count", expect_[k])) return err_;
   header_ = true;
+  max_line_ = kMaxLine + kBytesPerOpName * static_cast<size_t>(expect_[2]);
   return std::nullopt;
 }
 

@@ -170,6 +170,45 @@ TEST(GridFormat, OverlongLineIsReportedNotCrashed) {
   EXPECT_EQ(error_of(text), "bad.grid:2: line longer than 1048576 bytes");
 }
 
+// A coupling of 10^5 operations is a q line longer than 1 MiB; what
+// write_instance writes must read back (the bound grows with the header's
+// operations), while a runaway line is still refused.
+TEST(GridFormat, OneCouplingLongerThanAMebibyteReadsBack) {
+  // A row of 34 000 nodes, the edges (2i, 2i+1) expanding, all in one
+  // coupling; names of 64 bytes make the q line 1.1 MB.
+  const int n = 17000;
+  auto name = [](int i) {
+    std::string s = std::to_string(i);
+    return std::string(64 - s.size(), 'o') + s;
+  };
+  std::ostringstream text;
+  text << "p grid " << 2 * n << ' ' << 2 * n - 1 << ' ' << n << " 1\n";
+  for (int i = 0; i < 2 * n; ++i) text << "n " << i << " 0\n";
+  for (int i = 0; i + 1 < 2 * n; ++i) text << "e " << i << " 0 " << i + 1 << " 0\n";
+  for (int i = 0; i < n; ++i) text << "o " << name(i) << " expand " << 2 * i << " 0 +x\n";
+  text << "q Q";
+  for (int i = 0; i < n; ++i) text << ' ' << name(i);
+  text << '\n';
+  Instance inst;
+  std::istringstream first(text.str());
+  auto first_err = read_instance(first, "long.grid", inst);
+  ASSERT_FALSE(first_err) << first_err->str();
+  ASSERT_EQ(inst.couplings().size(), 1u);
+  const std::string once = written(inst);
+  const size_t q = once.find("\nq ");
+  ASSERT_NE(q, std::string::npos);
+  ASSERT_GT(once.find('\n', q + 1) - q, size_t{1} << 20) << "the q line must be longer than 1 MiB";
+  Instance back;
+  std::istringstream in(once);
+  auto err = read_instance(in, "long.grid", back);
+  ASSERT_FALSE(err) << err->str();
+  EXPECT_EQ(back.couplings()[0].ops.size(), inst.couplings()[0].ops.size());
+  EXPECT_EQ(written(back), once);
+  // The bound is 1 MiB plus 65 bytes per declared operation.
+  EXPECT_EQ(error_of("p grid 1 0 2 0\nc " + std::string((1 << 20) + 200, 'x') + "\n"),
+            "bad.grid:2: line longer than 1048706 bytes");
+}
+
 TEST(GridFormat, MissingFileIsADiagnostic) {
   Instance inst;
   auto err = read_instance_file("/nonexistent/x.grid", inst);
