@@ -149,9 +149,11 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
   }
   if (how == 0 && algorithm == "single-coupling")
     (void)single_coupling_sweep(inst, sim.tree(), sim.regions(), &st);  // the counters
-  if (how == 0 && algorithm == "single-coupling-fixed-axis")            // the counters: sweeps run, exact tests
-    if (const std::optional<FixedAxisAnswer> f = single_coupling_fixed_axis(inst, sim.tree(), sim.regions()))
-      state.counters["sweeps"] = static_cast<double>(f->sweeps), st.tests = f->tests;
+  if (how == 0 && (algorithm == "single-coupling-fixed-axis" || algorithm == "single-coupling-separated"))
+    if (const std::optional<FixedAxisAnswer> f = single_coupling_fixed_axis(inst, sim.tree(), sim.regions())) {
+      state.counters["sweeps"] = static_cast<double>(f->sweeps), st.tests = f->tests;  // sweeps run, exact tests
+      state.counters["groups"] = static_cast<double>(f->groups);
+    }
   if (!algorithm.empty()) state.SetLabel(algorithm);
   state.counters["n"] = static_cast<double>(inst.num_nodes());
   state.counters["yes"] = yes;
@@ -177,8 +179,10 @@ void BM_CombSingleCoupling(benchmark::State& state) {
 
 // The mixed comb under a lid (bench_families.hpp, comb with lid = true;
 // n/4 spine nodes, teeth of height 3, n/4 expansions, about 3n/2 nodes):
-// NO, total motion Theta(n^2), and the faces of both axes change order:
-// the case Auto leaves to the cell sweep.
+// NO, total motion Theta(n^2), and the faces of both axes change order.
+// Auto cuts it into separated groups (the lid's row above, its column to
+// the left, the comb keeping its x order) and sweeps each; range(1) = 5
+// is the cell sweep it took before, 2 the simulation.
 void BM_LiddedCombSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state,
                         bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7, true));
@@ -234,15 +238,16 @@ void BM_OneAxisCouplings(benchmark::State& state) {
 
 // collide's NO certificate on BM_OneAxisCouplings' NO families (range(1):
 // 0 the row, 1 the square comb) and on the mixed comb of
-// BM_CombSingleCoupling (2: one coupling, both axes, the x order kept).
+// BM_CombSingleCoupling (2: one coupling, both axes, the x order kept)
+// and the lidded comb of BM_LiddedCombSingleCoupling (3: separated groups).
 // range(2): 0 the kind Auto writes (one-axis: the row groups' pairs;
 // kept-order: the fixed-axis sweep's pairs), 1 every pair (what these NOs
 // got before). range(3): 0 times writing it, 1 checking it (certify, the
 // certificate written once outside the loop).
 void BM_OneAxisCertificate(benchmark::State& state) {
-  const Instance inst = state.range(1) == 2
-                            ? bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7)
-                            : one_axis_family(state.range(0), state.range(1));
+  const Instance inst = state.range(1) >= 2 ? bench::comb(state.range(0) / 4, 3, state.range(0) / 4,
+                                                          bench::CombOps::Mixed, 0, 7, state.range(1) == 3)
+                                            : one_axis_family(state.range(0), state.range(1));
   const bool every_pair = state.range(2) == 1;
   CollideCertificate cert = collide_no_certificate(inst, nullptr, false, {}, every_pair);
   if (cert.text.empty()) state.SkipWithError("no certificate");
@@ -258,7 +263,7 @@ void BM_OneAxisCertificate(benchmark::State& state) {
   state.counters["bytes"] = static_cast<double>(cert.text.size());
 }
 BENCHMARK(BM_OneAxisCertificate)
-    ->ArgsProduct({{1024, 4096, 16384}, {0, 1, 2}, {0, 1}, {0, 1}})
+    ->ArgsProduct({{1024, 4096, 16384}, {0, 1, 2, 3}, {0, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 // The diagonal sweep (collide/adversarial.hpp): quadratic candidate pairs
@@ -372,7 +377,7 @@ BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2,
 BENCHMARK(BM_SerpentineSingleCoupling)->ArgsProduct({{256, 1024}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {1, 2}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AwningCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
@@ -478,6 +483,11 @@ void register_large_one_axis() {
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }
+  for (int64_t n : {65536, 262144, 1048576})  // separated groups, each keeping an order
+    benchmark::RegisterBenchmark("BM_LiddedCombSingleCoupling", BM_LiddedCombSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_AwningCombSingleCoupling", BM_AwningCombSingleCoupling)
       ->Args({65536, 5})  // the cell sweep, for the ratio
       ->Iterations(1)
@@ -503,7 +513,7 @@ void register_large_one_axis() {
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
   for (int64_t n : {65536, 262144, 1048576})  // the one-axis and kept-order certificates: written, checked
-    for (int64_t family : {0, 1, 2})
+    for (int64_t family : {0, 1, 2, 3})
       for (int64_t stage : {0, 1})
         benchmark::RegisterBenchmark("BM_OneAxisCertificate", BM_OneAxisCertificate)
             ->Args({n, family, 0, stage})

@@ -33,7 +33,8 @@ struct CertifyResult {
   uint64_t axioms = 0;        // gaps: order-closure clauses derived; collide, one-axis: row group pairs;
                               // collide, kept-order: the sweep's pairs
   bool one_axis = false;      // collide: the one-axis kind (only the row groups' pairs covered)
-  int kept_axis = -1;         // collide: the kept-order kind's axis (0 x, 1 y; only the sweep's pairs covered)
+  int kept_axis =
+      -1;  // collide: the kept-order kind's axis (0 x, 1 y, 2 separated groups; only the sweep's pairs covered)
 };
 
 // Checks `text` as a NO certificate of inst in the model `model`

@@ -84,14 +84,14 @@ std::optional<std::string> read_collide_text(const Instance& inst, const Regions
   auto one = [&](size_t line, const std::vector<std::string_view>& w) -> std::optional<std::string> {
     if (w[0] == "p") {
       if (out.header) return at(line, "a second p line");
-      const bool kept = w.size() == 6 && w[4] == "kept-order" && (w[5] == "x" || w[5] == "y");
+      const bool kept = w.size() == 6 && w[4] == "kept-order" && (w[5] == "x" || w[5] == "y" || w[5] == "separated");
       if (w.size() < 4 || w.size() > 6 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous" ||
           (w.size() == 5 && w[4] != "one-axis") || (w.size() == 6 && !kept))
         return at(line, std::string("expected 'p ") + kHeader +
-                            " 1 continuous', optionally followed by 'one-axis' or 'kept-order x|y'");
+                            " 1 continuous', optionally followed by 'one-axis' or 'kept-order x|y|separated'");
       out.header = true;
       out.one_axis = w.size() == 5;
-      if (kept) out.kept_axis = w[5] == "x" ? 0 : 1;
+      if (kept) out.kept_axis = w[5] == "x" ? 0 : w[5] == "y" ? 1 : 2;
       out.header_line = line;
       return std::nullopt;
     }
@@ -189,7 +189,7 @@ void check_row_groups(const Instance& inst, const CertifyGeometry& geo, const Co
 // The kept-order kind: one coupling, the faces of the named axis keep
 // their order, and every pair of certify's own sweep covered.
 void check_kept_order(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
-  const char* name = c.kept_axis == 0 ? "x" : "y";
+  const char* name = c.kept_axis == 0 ? "x" : c.kept_axis == 1 ? "y" : "separated";
   if (inst.couplings().size() != 1)
     return void(r.reason = at(c.header_line, "kept-order, but the instance has " +
                                                  std::to_string(inst.couplings().size()) +
@@ -322,6 +322,75 @@ std::vector<std::pair<uint32_t, uint32_t>> sweep_pairs(const std::vector<FaceLin
   return out;
 }
 
+// An affine width positive on all of (0, 1): >= 0 at both ends, not 0 at both.
+bool positive_all_along(const FaceLine& w) { return w.a >= 0 && w.a + w.b >= 0 && (w.a != 0 || w.a + w.b != 0); }
+
+// The pieces of `members` cut along s: sorted by (low face at 0, high
+// face at 0, region), a cut falls after position i when the greatest high
+// face of the regions up to i is at most the least low face of the rest,
+// at progress 0 and at 1. Then every region before the cut lies at or
+// below every region after it at 0 and at 1, so (faces linear in the
+// progress) all along: no pair across a cut ever overlaps.
+std::vector<std::vector<uint32_t>> cut_along(const std::vector<FaceLines>& face, std::vector<uint32_t> members,
+                                             size_t s) {
+  const size_t lo = 2 * s, hi = lo + 1;
+  std::ranges::sort(members, [&](uint32_t x, uint32_t y) {
+    return std::tuple(face[x][lo].a, face[x][hi].a, x) < std::tuple(face[y][lo].a, face[y][hi].a, y);
+  });
+  const size_t k = members.size();
+  // rest[i]: the least low face at 0 and at 1 of members i, i + 1, ...
+  std::vector<std::pair<int64_t, int64_t>> rest(k + 1, {INT64_MAX, INT64_MAX});
+  for (size_t i = k; i-- > 0;) {
+    const FaceLine& f = face[members[i]][lo];
+    rest[i] = {std::min(rest[i + 1].first, f.a), std::min(rest[i + 1].second, f.a + f.b)};
+  }
+  std::vector<std::vector<uint32_t>> pieces(1);
+  int64_t hi0 = INT64_MIN, hi1 = INT64_MIN;  // the greatest high face at 0 and at 1 so far
+  for (size_t i = 0; i < k; ++i) {
+    const FaceLine& f = face[members[i]][hi];
+    hi0 = std::max(hi0, f.a), hi1 = std::max(hi1, f.a + f.b);
+    pieces.back().push_back(members[i]);
+    if (i + 1 < k && hi0 <= rest[i + 1].first && hi1 <= rest[i + 1].second) pieces.emplace_back();
+  }
+  return pieces;
+}
+
+// The separated kind: the live regions cut (cut_along x, else y,
+// recursively, at most 64 levels) until every piece keeps the order of
+// one axis (x first) with its widths across it positive all along; the
+// pairs of each piece's sweep. Else the reason.
+std::optional<std::string> separated_pairs(const Instance& inst, const Regions& regions,
+                                           const std::vector<FaceLines>& face, std::vector<uint32_t> live,
+                                           std::vector<std::pair<uint32_t, uint32_t>>& out) {
+  std::vector<std::pair<std::vector<uint32_t>, int>> todo{{std::move(live), 0}};
+  while (!todo.empty()) {
+    auto [members, depth] = std::move(todo.back());
+    todo.pop_back();
+    size_t s = 2;
+    for (size_t axis : {size_t{0}, size_t{1}})
+      if (s == 2 && !order_changes(inst, regions, face, members, axis)) s = axis;
+    if (s != 2 &&
+        std::ranges::all_of(members, [&](uint32_t r) { return positive_all_along(width_of(face[r], 1 - s)); })) {
+      std::vector<std::pair<uint32_t, uint32_t>> pairs = sweep_pairs(face, members, s);
+      out.insert(out.end(), pairs.begin(), pairs.end());
+      continue;
+    }
+    const std::string group = "the group of " + std::to_string(members.size()) + " regions with " +
+                              region_label(inst, regions, members.front());
+    if (depth >= 64) return group + " is cut more than 64 levels deep";
+    bool cut = false;
+    for (size_t axis : {size_t{0}, size_t{1}}) {
+      std::vector<std::vector<uint32_t>> pieces = cut_along(face, members, axis);
+      if (pieces.size() == 1) continue;
+      for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
+      cut = true;
+      break;
+    }
+    if (!cut) return group + " keeps neither order and no cut along x or y separates it";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> kept_order_pairs_of(const Instance& inst, const CertifyGeometry& geo, int axis,
@@ -332,14 +401,13 @@ std::optional<std::string> kept_order_pairs_of(const Instance& inst, const Certi
   std::vector<uint32_t> live;
   for (uint32_t r = 0; r < face.size(); ++r)
     if (both_positive_somewhere(width_of(face[r], 0), width_of(face[r], 1))) live.push_back(r);
+  if (axis == 2) return separated_pairs(inst, geo.regions(), face, std::move(live), out);
   const size_t s = axis == 0 ? 0 : 1, m = 1 - s;
   if (auto e = order_changes(inst, geo.regions(), face, live, s)) return e;
   // Across s every live width must stay positive on (0, 1).
-  for (uint32_t r : live) {
-    const FaceLine w = width_of(face[r], m);
-    if (w.a < 0 || w.a + w.b < 0 || (w.a == 0 && w.a + w.b == 0))
+  for (uint32_t r : live)
+    if (!positive_all_along(width_of(face[r], m)))
       return region_label(inst, geo.regions(), r) + "'s width across the kept axis is not positive all along";
-  }
   out = sweep_pairs(face, live, s);
   return std::nullopt;
 }

@@ -265,6 +265,22 @@ CollideResult discrete_by_continuous_step(const Instance& inst, Simulator& sim, 
   return finish_discrete(res, sim, inst, *dc);
 }
 
+// The algorithm and bound of a fixed-axis answer: one group keeping an
+// order, or several separated groups.
+void name_fixed_axis(const FixedAxisAnswer& fixed, CollideResult& res) {
+  if (fixed.groups == 1) {
+    res.algorithm = "single-coupling-fixed-axis";
+    res.complexity =
+        "O(n log n) (the faces of one axis keep their order: one sweep along it; a YES bisects for its first "
+        "moment)";
+    return;
+  }
+  res.algorithm = "single-coupling-separated";
+  res.complexity = "O(n log n) per level of cuts (" + std::to_string(fixed.groups) +
+                   " groups that never meet, each keeping the order of one axis: one sweep each; a YES bisects "
+                   "for its first moment)";
+}
+
 }  // namespace
 
 CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method, const Deadline* deadline,
@@ -314,10 +330,7 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
       res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
     } else if (std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions(),
                                                                                  deadline)) {
-      res.algorithm = "single-coupling-fixed-axis";
-      res.complexity =
-          "O(n log n) (the faces of one axis keep their order: one sweep along it; a YES bisects for its first "
-          "moment)";
+      name_fixed_axis(*fixed, res);
       res.stats.pair_tests = fixed->tests;
       answer = fixed->answer;
     } else {

@@ -153,6 +153,7 @@ std::string header(const Instance& inst, const CollideCertificate& c) {
   const std::string kind = c.one_axis         ? " one-axis"
                            : c.kept_axis == 0 ? " kept-order x"
                            : c.kept_axis == 1 ? " kept-order y"
+                           : c.kept_axis == 2 ? " kept-order separated"
                                               : "";
   return "p gridlock-collide-no-certificate 1 continuous" + kind + "\n" + couplings_line(inst);
 }

@@ -18,7 +18,10 @@
 // coupling whose faces keep their order along one axis, the p line says
 // `kept-order x` (or y) and covers only the pairs of the fixed-axis sweep
 // (collide/single_coupling.hpp, single_coupling_kept_order_pairs): if none
-// of them overlaps, nothing does; the checker runs its own sweep.
+// of them overlaps, nothing does; the checker runs its own sweep. When
+// the regions are cut into separated groups, each keeping one order, the
+// p line says `kept-order separated` and covers every group's sweep pairs;
+// the checker cuts the groups itself.
 #pragma once
 
 #include <cstdint>
@@ -36,7 +39,7 @@ struct CollideCertificate {
   uint64_t pairs = 0;     // region pairs covered
   uint64_t lines = 0;     // of which with an r line (the others: one form rules them out)
   bool one_axis = false;  // the one-axis kind: pairs are the row groups' pairs only
-  int kept_axis = -1;     // the kept-order kind (0 x, 1 y): the fixed-axis sweep's pairs only
+  int kept_axis = -1;     // the kept-order kind (0 x, 1 y, 2 separated groups): the fixed-axis sweep's pairs only
   // Some pair can overlap in continuous time: the first one found (regions).
   uint32_t meet_a = kNone, meet_b = kNone;
 };

@@ -465,27 +465,20 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
   return false;
 }
 
-// What the fixed-axis sweep needs: the faces, the kept axis s, the other
-// axis m and the sweep's events along s (sorted). nullopt when neither
-// axis keeps its order or some live region's m width is not positive all
-// along (0, 1).
-struct FixedAxisSetup {
-  std::vector<Faces> faces;
-  std::vector<uint32_t> live;
+// One group of the fixed-axis sweep: its kept axis s, the other axis m
+// and its events along s (sorted).
+struct KeptGroup {
   size_t s = 0, m = 1;
   std::vector<AxisEvent> events;
 };
 
-std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions) {
-  FixedAxisSetup out;
-  out.faces = region_faces(inst, t, regions);
-  const std::vector<Faces>& faces = out.faces;
-  std::vector<uint32_t> live;
-  for (uint32_t r = 0; r < faces.size(); ++r)
-    if (!alive(faces[r]).empty()) live.push_back(r);
+// The group of `members` if the faces of one of its axes keep their order
+// (x first) and every member's width along the other is positive all
+// along (0, 1); else nullopt.
+std::optional<KeptGroup> kept_group(const std::vector<Faces>& faces, const std::vector<uint32_t>& members) {
   size_t s = 2;
   for (size_t axis : {size_t{0}, size_t{1}}) {
-    if (order_fixed(faces, live, axis)) {
+    if (order_fixed(faces, members, axis)) {
       s = axis;
       break;
     }
@@ -494,20 +487,109 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
   const size_t m = 1 - s;
   // A live region's width along s keeps its sign on (0, 1) (two faces of
   // s in order), so it is positive there; along m it must be too.
-  for (uint32_t r : live)
+  for (uint32_t r : members)
     if (!width_positive(faces[r], m)) return std::nullopt;
-  std::vector<AxisEvent> events;
-  events.reserve(2 * live.size());
-  for (uint32_t r : live) {
+  KeptGroup g;
+  g.s = s, g.m = m;
+  g.events.reserve(2 * members.size());
+  for (uint32_t r : members) {
     const Faces& f = faces[r];
-    events.push_back({2 * f[2 * s + 1].a + f[2 * s + 1].b, 0, r});
-    events.push_back({2 * f[2 * s].a + f[2 * s].b, 1, r});
+    g.events.push_back({2 * f[2 * s + 1].a + f[2 * s + 1].b, 0, r});
+    g.events.push_back({2 * f[2 * s].a + f[2 * s].b, 1, r});
   }
-  std::sort(events.begin(), events.end(), [](const AxisEvent& e, const AxisEvent& f) {
+  std::sort(g.events.begin(), g.events.end(), [](const AxisEvent& e, const AxisEvent& f) {
     return e.x != f.x ? e.x < f.x : e.kind != f.kind ? e.kind < f.kind : e.r < f.r;
   });
-  out.s = s, out.m = m, out.events = std::move(events), out.live = std::move(live);
+  return g;
+}
+
+// Cuts `members` along `axis` wherever every member before the cut lies
+// at or below every member after it at t = 0 and at t = 1 (in the order
+// of the low face at 0, then the high face at 0): the prefix maximum of
+// the high faces at most the suffix minimum of the low faces, at both
+// ends. For a before and b after a cut, hi_a(t) <= lo_b(t) then holds at
+// 0 and at 1, so, both linear, on all of [0, 1]: no pair across a cut
+// ever overlaps. Returns the pieces (one when there is no cut). O(k log k).
+std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& faces, std::vector<uint32_t> members,
+                                                    size_t axis) {
+  const size_t lo = 2 * axis, hi = 2 * axis + 1;
+  std::sort(members.begin(), members.end(), [&](uint32_t x, uint32_t y) {
+    const Faces &f = faces[x], &g = faces[y];
+    if (f[lo].a != g[lo].a) return f[lo].a < g[lo].a;
+    if (f[hi].a != g[hi].a) return f[hi].a < g[hi].a;
+    return x < y;
+  });
+  const size_t k = members.size();
+  // Suffix minima of the low face at 0 and at 1.
+  std::vector<std::array<int64_t, 2>> low(k + 1, {INT64_MAX, INT64_MAX});
+  for (size_t i = k; i-- > 0;) {
+    const Lin& f = faces[members[i]][lo];
+    low[i] = {std::min(low[i + 1][0], f.a), std::min(low[i + 1][1], f.a + f.b)};
+  }
+  std::vector<std::vector<uint32_t>> pieces(1);
+  int64_t high0 = INT64_MIN, high1 = INT64_MIN;  // prefix maxima of the high face at 0 and at 1
+  for (size_t i = 0; i < k; ++i) {
+    const Lin& f = faces[members[i]][hi];
+    high0 = std::max(high0, f.a), high1 = std::max(high1, f.a + f.b);
+    pieces.back().push_back(members[i]);
+    if (i + 1 < k && high0 <= low[i + 1][0] && high1 <= low[i + 1][1]) pieces.emplace_back();
+  }
+  return pieces;
+}
+
+// Cuts past this depth are not followed (the cell sweep decides): the
+// cost stays O(r log r) per level, 64 levels at most.
+constexpr int kMaxCutDepth = 64;
+
+// What the fixed-axis sweep needs: the faces, the live regions and their
+// groups. The live regions are cut into pieces that never overlap one
+// another (separated_pieces, along x, then along y, recursively) until
+// every piece keeps the order of one axis (kept_group); a single group
+// when all of them do. nullopt when some piece keeps neither order and
+// has no cut, or the cuts nest deeper than kMaxCutDepth.
+struct FixedAxisSetup {
+  std::vector<Faces> faces;
+  std::vector<uint32_t> live;
+  std::vector<KeptGroup> groups;
+};
+
+std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+  FixedAxisSetup out;
+  out.faces = region_faces(inst, t, regions);
+  const std::vector<Faces>& faces = out.faces;
+  for (uint32_t r = 0; r < faces.size(); ++r)
+    if (!alive(faces[r]).empty()) out.live.push_back(r);
+  // Pieces to place, with their depth of cuts.
+  std::vector<std::pair<std::vector<uint32_t>, int>> todo;
+  todo.emplace_back(out.live, 0);
+  while (!todo.empty()) {
+    auto [members, depth] = std::move(todo.back());
+    todo.pop_back();
+    if (std::optional<KeptGroup> g = kept_group(faces, members)) {
+      out.groups.push_back(std::move(*g));
+      continue;
+    }
+    if (depth >= kMaxCutDepth) return std::nullopt;
+    bool cut = false;
+    for (size_t axis : {size_t{0}, size_t{1}}) {
+      std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, axis);
+      if (pieces.size() == 1) continue;
+      for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
+      cut = true;
+      break;
+    }
+    if (!cut) return std::nullopt;
+  }
   return out;
+}
+
+// Is there an overlap at some t in (0, T) within some group? Groups never
+// overlap one another, so this is the question for every live pair.
+bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& best, uint64_t& tests,
+                         std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
+  for (const KeptGroup& g : setup.groups)
+    if (collides_before(setup.faces, g.events, g.m, T, best, tests, tested)) return true;
+  return false;
 }
 
 // Ties of the first moment t*: the simulator names the smallest pair that
@@ -548,14 +630,12 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
                                                           const Regions& regions, const Deadline* deadline) {
   const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions);
   if (!setup) return std::nullopt;
-  const std::vector<Faces>& faces = setup->faces;
-  const std::vector<AxisEvent>& events = setup->events;
-  const size_t m = setup->m;
   FixedAxisAnswer out;
-  out.axis = static_cast<int>(setup->s);
+  out.groups = setup->groups.size();
+  out.axis = out.groups == 1 ? static_cast<int>(setup->groups[0].s) : -1;
   Earliest best;
   ++out.sweeps;
-  if (!collides_before(faces, events, m, Frac{1, 1}, best, out.tests)) return out;
+  if (!any_collides_before(*setup, Frac{1, 1}, best, out.tests)) return out;
   // A YES: the first moment t* is the least start of an overlapping pair.
   // lo <= t* <= c <= hi (dyadic, den 2^k), c best's start. Each round asks
   // for an overlap before c (none: c = t*), then halves [lo, hi].
@@ -565,7 +645,7 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
   for (;;) {
     if (deadline) deadline->check();
     ++out.sweeps;
-    if (!collides_before(faces, events, m, best.span.lo, best, out.tests)) break;
+    if (!any_collides_before(*setup, best.span.lo, best, out.tests)) break;
     if (den >= (int64_t{1} << 60)) continue;  // the interval is as fine as int64 allows: shrink by starts alone
     lo *= 2, hi *= 2, den *= 2;
     const Frac mid{lo + (hi - lo) / 2, den};
@@ -573,11 +653,11 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
       hi = mid.num;  // t* <= c <= mid
     } else {
       ++out.sweeps;
-      if (collides_before(faces, events, m, mid, best, out.tests)) hi = mid.num;  // best now starts before mid
+      if (any_collides_before(*setup, mid, best, out.tests)) hi = mid.num;  // best now starts before mid
       else lo = mid.num;
     }
   }
-  smallest_first_pair(faces, setup->live, best);
+  smallest_first_pair(setup->faces, setup->live, best);
   out.answer = named(best);
   return out;
 }
@@ -587,10 +667,10 @@ std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& i
   const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions);
   if (!setup) return std::nullopt;
   KeptOrderPairs out;
-  out.axis = static_cast<int>(setup->s);
+  out.axis = setup->groups.size() == 1 ? static_cast<int>(setup->groups[0].s) : 2;
   Earliest best;
   uint64_t tests = 0;
-  if (collides_before(setup->faces, setup->events, setup->m, Frac{1, 1}, best, tests, &out.pairs)) return std::nullopt;
+  if (any_collides_before(*setup, Frac{1, 1}, best, tests, &out.pairs)) return std::nullopt;
   return out;
 }
 

@@ -108,8 +108,15 @@ std::optional<SingleCouplingAnswer> single_coupling_one_axis(const Instance& ins
 // s with the active regions ordered along the other axis at one moment
 // finds such a pair or proves there is none: only neighbours are tested
 // (docs/collide.md, "One coupling: one axis keeps its order").
+// When neither axis keeps its order, the live regions are first cut into
+// groups that never overlap one another: along an axis, where every
+// region on one side lies at or below every region on the other at t = 0
+// and at t = 1 (hence, linear, at every t), recursively along x and y
+// until each group keeps the order of one axis; each group is swept on
+// its own (docs/collide.md, "Separated groups").
 struct FixedAxisAnswer {
-  int axis = 0;  // the axis whose faces keep their order (0 x, 1 y; x when both do)
+  int axis = 0;       // the axis whose faces keep their order (0 x, 1 y; x when both do); -1 with several groups
+  size_t groups = 1;  // separated groups swept (1: the whole instance keeps the order of `axis`)
   // collides; on a YES pair, first (the first collision's moment) and
   // during, as single_coupling_sweep and the simulator name them (the
   // smallest pair on ties of the first moment).
@@ -118,10 +125,12 @@ struct FixedAxisAnswer {
   uint64_t tests = 0;   // exact pair tests
 };
 
-// nullopt when the faces of both axes change order, or when some live
-// region's width along the other axis is not positive all along (0, 1)
-// (only when the coupling breaks a cycle: find_collision settles that
-// first). A NO costs one sweep, O(r log r); a YES bisects [0, 1] for the
+// nullopt when a group that keeps neither order cannot be cut (or the
+// cuts nest more than 64 deep), or when some live region's width along
+// its group's other axis is not positive all along (0, 1) (only when the
+// coupling breaks a cycle: find_collision settles that first). The cuts
+// cost O(r log r) per level of nesting. A NO costs one sweep of every
+// group, O(r log r); a YES bisects [0, 1] for the
 // first moment, one or two sweeps per halving, at most about
 // 2 log2(2 max speed) + 2 halvings (distinct starts are fractions with
 // denominators up to twice the largest face speed), then the pairs whose
@@ -137,10 +146,12 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
 // listed pair ever overlaps, the sweep answers NO, so no pair overlaps
 // (docs/collide.md, "One coupling: one axis keeps its order"); the
 // kept-order collide certificate covers only these (checked by certify's
-// own sweep). nullopt when single_coupling_fixed_axis returns nullopt or
-// a YES. O(r log r).
+// own sweep). With several separated groups, the pairs of every group's
+// sweep (axis 2: the certificate's `kept-order separated`; the checker
+// cuts the groups itself). nullopt when single_coupling_fixed_axis
+// returns nullopt or a YES. O(r log r) per level of cuts.
 struct KeptOrderPairs {
-  int axis = 0;  // the kept axis (0 x, 1 y)
+  int axis = 0;  // the kept axis (0 x, 1 y), or 2: several separated groups, each keeping one
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
 };
 std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,

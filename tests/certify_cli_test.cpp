@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bench/bench_families.hpp"
+#include "collide/adversarial.hpp"
 #include "lattice/grid_format.hpp"
 #include "support/cli.hpp"
 #include "support/instance_io.hpp"
@@ -238,6 +239,53 @@ TEST(CertifyCli, CollideKeptOrderCertificateEndToEnd) {
   EXPECT_EQ(v.exit_code, 1);
   EXPECT_NE(v.err.find(severalf + ":1: certificate rejected: kept-order, but the instance has "), std::string::npos)
       << v.err;
+}
+
+// The lidded comb (bench_families.hpp): neither axis keeps its order,
+// but cuts split it into groups that do. collide writes `kept-order
+// separated` with every group's sweep pairs; certify cuts the groups
+// itself and accepts it in both models. The word is refused at line 1 on
+// the diagonal sweep, which no cut separates, and `kept-order x` on the
+// comb, whose x order the lid changes.
+TEST(CertifyCli, CollideSeparatedCertificateEndToEnd) {
+  const std::string d = test::temp_dir();
+  std::ostringstream grid;
+  write_instance(grid, bench::comb(256, 3, 256, bench::CombOps::Mixed, 0, 7, true));
+  const std::string comb = test::write_file(d + "/lidded.grid", grid.str()), cert = d + "/lidded.cert";
+  const auto w = run_gridlock({"collide", comb, "--certificate", cert, "--json"});
+  ASSERT_EQ(w.exit_code, 20) << w.out << w.err;
+  EXPECT_NE(w.out.find("\"algorithm\":\"single-coupling-separated\""), std::string::npos) << w.out;
+  EXPECT_NE(w.out.find("\"certificate_kind\":\"kept-order\""), std::string::npos) << w.out;
+  EXPECT_NE(w.out.find("(one coupling, separated groups each keeping an order: their sweeps' pairs)"), std::string::npos)
+      << w.out;
+  const std::string text = test::read_file(cert);
+  EXPECT_EQ(text.rfind("p gridlock-collide-no-certificate 1 continuous kept-order separated\n", 0), 0U) << text;
+  for (const char* model : {"continuous", "discrete"}) {
+    const auto c = run_gridlock({"certify", comb, cert, "--model", model, "--json"});
+    EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+    EXPECT_NE(c.out.find("one coupling, separated groups each keeping an order, "), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find("\"kept_axis\":\"separated\""), std::string::npos) << c.out;
+  }
+  std::string one = text;
+  one.replace(one.find("kept-order separated"), 20, "kept-order x");
+  const std::string onef = test::write_file(d + "/one.cert", one);
+  const auto o = run_gridlock({"certify", comb, onef});
+  EXPECT_EQ(o.exit_code, 1);
+  EXPECT_NE(o.err.find(onef + ":1: certificate rejected: kept-order x, but the x faces of "), std::string::npos)
+      << o.err;
+  std::ostringstream diag;
+  write_instance(diag, diagonal_sweep_instance(5, 4));
+  const std::string diagonal = test::write_file(d + "/diagonal.grid", diag.str()), dcert = d + "/diagonal.cert";
+  ASSERT_EQ(run_gridlock({"collide", diagonal, "--certificate", dcert}).exit_code, 20);
+  std::string forged = test::read_file(dcert);
+  const size_t end = forged.find('\n');
+  forged.replace(0, end, "p gridlock-collide-no-certificate 1 continuous kept-order separated");
+  const std::string forgedf = test::write_file(d + "/forged.cert", forged);
+  const auto f = run_gridlock({"certify", diagonal, forgedf});
+  EXPECT_EQ(f.exit_code, 1);
+  EXPECT_NE(f.err.find(forgedf + ":1: certificate rejected: kept-order separated, but the group of "), std::string::npos)
+      << f.err;
+  EXPECT_NE(f.err.find("keeps neither order and no cut along x or y separates it"), std::string::npos) << f.err;
 }
 
 TEST(CertifyCli, VerifyAndGenInstancesUseIt) {

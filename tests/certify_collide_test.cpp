@@ -450,7 +450,7 @@ std::string with_kind(const std::string& text, const std::string& kind) {
 
 TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
   int instances = 0, kept = 0, kept_kind = 0, no = 0, lines = 0, other_refused = 0, yes_refused = 0,
-      several_refused = 0, y_axis = 0;
+      several_refused = 0, y_axis = 0, separated = 0;
   uint64_t sweep_pairs = 0, all_pairs = 0;
   for (int i = 0; i < test::scaled(3000); ++i) {
     const uint64_t seed = test::base_seed(98000) + static_cast<uint64_t>(i);
@@ -483,7 +483,10 @@ TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
     const CollideCertificate cert = collide_no_certificate(inst);
     if (fixed && fixed->answer.collides) {  // YES: a bare kept-order certificate is refused
       const std::string bare = "p gridlock-collide-no-certificate 1 continuous kept-order " +
-                               std::string(fixed->axis == 0 ? "x" : "y") + "\n" + couplings_line(inst);
+                               std::string(fixed->axis == 0   ? "x"
+                                           : fixed->axis == 1 ? "y"
+                                                              : "separated") +
+                               "\n" + couplings_line(inst);
       EXPECT_FALSE(certify(inst, bare, "continuous").proved) << at;
       EXPECT_TRUE(cert.text.empty()) << at;
       ++yes_refused;
@@ -508,6 +511,7 @@ TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
     ASSERT_EQ(cert.kept_axis, pairs->axis) << at;
     ++kept_kind;
     y_axis += pairs->axis == 1;
+    separated += pairs->axis == 2;
     for (const char* model : {"continuous", "discrete"}) {
       const CertifyResult r = certify(inst, cert.text, model);
       ASSERT_TRUE(r.proved) << at << ": " << r.reason << "\n" << cert.text;
@@ -520,7 +524,7 @@ TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
     EXPECT_TRUE(std::ranges::includes(all, ours)) << at << ":\n" << cert.text << "every pair:\n" << every.text;
     lines += static_cast<int>(ours.size());
     // The other axis: refused at line 1 where its order changes.
-    const int other = 1 - pairs->axis;
+    const int other = pairs->axis == 2 ? 0 : 1 - pairs->axis;  // separated: x alone does not hold
     std::vector<std::pair<uint32_t, uint32_t>> unused;
     if (kept_order_pairs_of(inst, geo, other, unused)) {
       const CertifyResult r = certify(
@@ -532,14 +536,15 @@ TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
     if (::testing::Test::HasFailure()) return;
   }
   std::cout << "[certify-collide] kept order: " << instances << " one-coupling instances, " << kept
-            << " NOs with a kept order, " << kept_kind << " of them of the kept-order kind (" << y_axis << " along y), "
-            << sweep_pairs << " sweep pairs of " << all_pairs << " pairs; " << no << " certified, " << lines
-            << " r lines; " << other_refused << " refused the other axis, " << yes_refused
+            << " NOs with a kept order, " << kept_kind << " of them of the kept-order kind (" << y_axis << " along y, "
+            << separated << " separated), " << sweep_pairs << " sweep pairs of " << all_pairs << " pairs; " << no
+            << " certified, " << lines << " r lines; " << other_refused << " refused the other axis, " << yes_refused
             << " YES refused a bare certificate, " << several_refused << " of several couplings refused the word\n";
   EXPECT_GT(kept_kind, test::scaled(300));
   EXPECT_GT(yes_refused, test::scaled(100));
   EXPECT_GT(other_refused, test::scaled(50));
   EXPECT_GT(several_refused, test::scaled(50));
+  EXPECT_GT(separated, test::scaled(5));
 }
 
 }  // namespace

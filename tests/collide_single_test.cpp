@@ -50,6 +50,7 @@ struct Tally {
   int fixed_no = 0, fixed_yes = 0, fixed_y = 0;  // decided by single_coupling_fixed_axis (y: the kept axis is y)
   uint64_t fixed_sweeps = 0;                     // its sweeps on the YES (bisecting for the first moment)
   int fixed_named = 0;                           // its YES equal to the simulator's first collision, pair too
+  int separated_no = 0, separated_yes = 0;       // of those, decided in several separated groups
   uint64_t max_active = 0;
 };
 
@@ -111,6 +112,7 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
       ++tally.fixed_no;
     }
     tally.fixed_y += fixed->axis == 1;
+    if (fixed->groups > 1) (sweep ? tally.separated_yes : tally.separated_no)++;
   }
   tally.max_active = std::max<uint64_t>(tally.max_active, st.max_active);
   // Bounded memory: sweeping in column bands of a few items gives the
@@ -157,7 +159,8 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
       ++tally.first_named;
       if (inst.couplings().size() == 1) {  // find_collision reports it, checked at one moment
         const CollideResult r = find_collision(inst, TimeModel::Continuous);
-        if (r.algorithm == "single-coupling-fixed-axis") {  // the simulator's first collision, its pair too
+        // The simulator's first collision, its pair too.
+        if (r.algorithm == "single-coupling-fixed-axis" || r.algorithm == "single-coupling-separated") {
           ASSERT_TRUE(fixed) << where;
           expect_names_first(inst, fixed->answer, *run.collision, where + ", the fixed-axis sweep");
           if (::testing::Test::HasFatalFailure()) return;
@@ -210,7 +213,8 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << tally.multi_band << " banded sweeps of several bands, " << tally.pruned
             << " of them keeping fewer items after an overlap; one axis keeping its order: " << tally.fixed_no
             << " NOs and " << tally.fixed_yes << " YES (" << tally.fixed_sweeps << " sweeps, " << tally.fixed_named
-            << " named as the simulator does through find_collision), " << tally.fixed_y << " of them along y)\n";
+            << " named as the simulator does through find_collision), " << tally.fixed_y << " of them along y; "
+            << tally.separated_no << " NOs and " << tally.separated_yes << " YES in several separated groups)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
@@ -221,6 +225,8 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.fixed_yes, cases / 20);
   EXPECT_GT(tally.fixed_named, cases / 20);
   EXPECT_GT(tally.fixed_y, cases / 50);
+  EXPECT_GT(tally.separated_no, cases / 300);
+  EXPECT_GT(tally.separated_yes, cases / 100);
 }
 
 // Larger shapes, long paths: more motion, more items per cell.
@@ -397,6 +403,37 @@ TEST(SingleCouplingSweep, KeptOrderIsDecidedByOneSweep) {
   Simulator sim(diagonal);
   EXPECT_FALSE(single_coupling_fixed_axis(diagonal, sim.tree(), sim.regions()));
   EXPECT_EQ(find_collision(diagonal, TimeModel::Continuous).algorithm, "single-coupling");
+}
+
+// The lidded comb (bench/bench_families.hpp): both axes change order (the
+// teeth pass the lid's x faces and each other's y faces), but the lid's
+// row lies above everything else at t = 0 and 1, and its column left of
+// the comb: cut there, the comb keeps its x order and the lid is static.
+// One sweep per group decides the NO that the cell sweep took n^2 for.
+TEST(SingleCouplingSweep, LiddedCombIsCutIntoSeparatedGroups) {
+  for (int64_t n : {256, 1024, 4096}) {
+    const Instance inst = bench::comb(n / 4, 3, n / 4, bench::CombOps::Mixed, 0, 7, true);
+    const std::string where = "lidded comb of " + std::to_string(n);
+    ASSERT_EQ(inst.couplings().size(), 1u) << where;
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_FALSE(r.collides) << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-separated") << where;
+    Simulator sim(inst);
+    const std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(fixed) << where;
+    EXPECT_GE(fixed->groups, 3u) << where;
+    EXPECT_EQ(fixed->axis, -1) << where;
+    EXPECT_FALSE(fixed->answer.collides) << where;
+    EXPECT_EQ(fixed->sweeps, 1u) << where;
+    EXPECT_LE(fixed->tests, 2 * sim.regions().size()) << where;
+    EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
+    EXPECT_FALSE(sim.run_order({0}).collision) << where;
+    // The certificate's pairs: every group's sweep pairs, as many as tested.
+    const std::optional<KeptOrderPairs> pairs = single_coupling_kept_order_pairs(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(pairs) << where;
+    EXPECT_EQ(pairs->axis, 2) << where;
+    EXPECT_EQ(pairs->pairs.size(), fixed->tests) << where;
+  }
 }
 
 // The awning comb (bench/bench_families.hpp): the x faces keep their

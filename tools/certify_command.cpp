@@ -65,6 +65,9 @@ int run_certify(const std::vector<std::string>& args) {
   if (r.kind == "collide") {
     const std::string groups = r.one_axis ? "one axis, " + std::to_string(r.axioms) +
                                                 " pairs in row groups (a first collision is in one), "
+                               : r.kept_axis == 2 ? "one coupling, separated groups each keeping an order, " +
+                                                        std::to_string(r.axioms) +
+                                                        " pairs of their sweeps (if none overlaps, nothing does), "
                                : r.kept_axis >= 0
                                    ? std::string("one coupling, the ") + (r.kept_axis == 0 ? "x" : "y") +
                                          " order kept, " + std::to_string(r.axioms) +
@@ -83,7 +86,9 @@ int run_certify(const std::vector<std::string>& args) {
   ans.data()["lemmas"] = r.lemmas;
   if (r.one_axis) ans.data()["row_group_pairs"] = r.axioms;
   if (r.kept_axis >= 0)
-    ans.data()["kept_order_pairs"] = r.axioms, ans.data()["kept_axis"] = r.kept_axis == 0 ? "x" : "y";
+    ans.data()["kept_order_pairs"] = r.axioms, ans.data()["kept_axis"] = r.kept_axis == 0   ? "x"
+                                                                         : r.kept_axis == 1 ? "y"
+                                                                                            : "separated";
   return ans.finish(Verdict::No);
 }
 

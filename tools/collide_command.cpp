@@ -78,6 +78,8 @@ void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, co
   cli::write_text_file(cert_path, cert.text);
   ans.comment("certificate written to " + cert_path + ": " + std::to_string(cert.pairs) + " pairs of regions" +
               (cert.one_axis         ? " (one axis: the row groups' pairs)"
+               : cert.kept_axis == 2 ? std::string(" (one coupling, separated groups each keeping an order: their "
+                                                   "sweeps' pairs)")
                : cert.kept_axis >= 0 ? std::string(" (one coupling, the ") + (cert.kept_axis == 0 ? "x" : "y") +
                                            " order kept: the sweep's pairs)"
                                      : "") +
