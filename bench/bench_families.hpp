@@ -21,6 +21,21 @@
 // YES at the first moment 1 / (number of expansions)). group > 0 couples
 // consecutive expansions into couplings of `group` instead (still YES).
 //
+// stalactite_comb: teeth that pass under static stalactites, then grow
+// past their tips. A spine of L nodes along y = 0 with teeth of nodes
+// y = 1 .. 4; k = 4L + 2 expansions (+x) on every other edge of a tail
+// of 2k nodes left of it carry all teeth right by k, rigidly. Every even
+// tooth has two expansions (+y, edges y = 1-2 and 3-4): its top rises
+// from 5 to 7, past 6 at t = 1/2. A static column at x = -2k - 1 joined
+// to the tail's end carries a row at y = 8 over everything, and m = L
+// stalactites of nodes y = 6, 7 hang from it at x = L .. 2L - 1, just
+// right of the teeth. Each tooth passes under every stalactite before
+// t = 1/2 (its top below 6) and rises past their tips after it: NO.
+// Both axes change order, no cut separates the teeth from the
+// stalactites (they meet along x while passing and along y after), and
+// the total motion is Theta(n^2): the case left to the cell sweep.
+// About 24 L nodes.
+//
 // awning_comb: a comb that collides late while its x faces keep their
 // order. A spine of L nodes along y = 0 (L >= 3); even x carries a tooth of
 // nodes y = 1 .. 9 and an awning node (x + 1, 9) joined to its top; odd x
@@ -166,6 +181,42 @@ inline Instance awning_comb(int64_t L, uint64_t seed) {
         must(b.add_op(names.back(), OpKind::Expand, {x, static_cast<int64_t>(2 * i + 1)}, Dir::PosY));
       }
     }
+  }
+  couple_consecutive(b, names, 0);
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
+  return inst;
+}
+
+inline Instance stalactite_comb(int64_t L) {
+  if (L < 1) throw std::invalid_argument("stalactite_comb: L >= 1");
+  InstanceBuilder b;
+  auto must = [](std::optional<std::string> e) {
+    if (e) throw std::runtime_error(*e);
+  };
+  const int64_t m = L, k = 2 * (L + m) + 2, left = -2 * k - 1, right = L + k + 1;
+  std::vector<std::string> names;
+  for (int64_t x = -2 * k; x < L; ++x) must(b.add_node({x, 0}));
+  for (int64_t x = -2 * k; x + 1 < L; ++x) must(b.add_edge({x, 0}, {x + 1, 0}));
+  for (int64_t i = 0; i < k; ++i) {
+    names.push_back("s" + std::to_string(i));
+    must(b.add_op(names.back(), OpKind::Expand, {-2 * k + 2 * i, 0}, Dir::PosX));
+  }
+  for (int64_t x = 0; x < L; ++x) {
+    for (int64_t y = 1; y <= 4; ++y) must(b.add_node({x, y})), must(b.add_edge({x, y - 1}, {x, y}));
+    if (x % 2 == 0)
+      for (int64_t y : {1, 3}) {
+        names.push_back("t" + std::to_string(x) + "_" + std::to_string(y));
+        must(b.add_op(names.back(), OpKind::Expand, {x, y}, Dir::PosY));
+      }
+  }
+  for (int64_t y = 0; y <= 8; ++y) must(b.add_node({left, y}));
+  for (int64_t y = 0; y < 8; ++y) must(b.add_edge({left, y}, {left, y + 1}));
+  must(b.add_edge({left, 0}, {left + 1, 0}));
+  for (int64_t x = left + 1; x <= right; ++x) must(b.add_node({x, 8})), must(b.add_edge({x - 1, 8}, {x, 8}));
+  for (int64_t x = L; x < L + m; ++x) {
+    must(b.add_node({x, 7})), must(b.add_node({x, 6}));
+    must(b.add_edge({x, 8}, {x, 7})), must(b.add_edge({x, 7}, {x, 6}));
   }
   couple_consecutive(b, names, 0);
   Instance inst;

@@ -188,6 +188,14 @@ void BM_LiddedCombSingleCoupling(benchmark::State& state) {
                         bench::comb(state.range(0) / 4, 3, state.range(0) / 4, bench::CombOps::Mixed, 0, 7, true));
 }
 
+// The stalactite comb of about n nodes (bench_families.hpp): NO, total
+// motion Theta(n^2), both axes changing order and no cut between the
+// teeth and the stalactites they pass: Auto keeps the cell sweep
+// (range(1) = 0); 2 is the simulation.
+void BM_StalactiteCombSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24));
+}
+
 // The awning comb of about n nodes (bench_families.hpp): both axes, x
 // faces keeping their order, total motion Theta(n^2), YES at t = 2/3.
 // Auto sweeps along x and bisects for the first moment.
@@ -379,6 +387,7 @@ BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Un
 BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteCombSingleCoupling)->ArgsProduct({{1536, 6144, 24576}, {0, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AwningCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);

@@ -436,6 +436,25 @@ TEST(SingleCouplingSweep, LiddedCombIsCutIntoSeparatedGroups) {
   }
 }
 
+// The stalactite comb (bench/bench_families.hpp): the teeth pass under
+// the stalactites, then rise past their tips. Both axes change order and
+// no cut separates teeth from stalactites, so it is the cell sweep's (the
+// case docs/collide.md lists as not done); every method says NO.
+TEST(SingleCouplingSweep, StalactiteCombIsLeftToTheCellSweep) {
+  for (int64_t L : {1, 2, 5, 16, 40}) {
+    const Instance inst = bench::stalactite_comb(L);
+    const std::string where = "stalactite comb of " + std::to_string(L);
+    ASSERT_EQ(inst.couplings().size(), 1u) << where;
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_FALSE(r.collides) << where;
+    EXPECT_EQ(r.algorithm, "single-coupling") << where;
+    Simulator sim(inst);
+    EXPECT_FALSE(single_coupling_fixed_axis(inst, sim.tree(), sim.regions())) << where;
+    EXPECT_FALSE(single_coupling_pairwise(inst, sim.tree(), sim.regions())) << where;
+    EXPECT_FALSE(sim.run_order({0}).collision) << where;
+  }
+}
+
 // The awning comb (bench/bench_families.hpp): the x faces keep their
 // order, and the middle short tooth reaches its awning at t = 2/3. The
 // fixed-axis sweep bisects for that moment and names that pair; the cell
