@@ -31,7 +31,7 @@ std::optional<std::string> for_each_certificate_line(std::string_view text, cons
     const std::vector<std::string_view> w = certificate_words(text.substr(pos, end - pos));
     pos = end + 1;
     ++line;
-    if (w.empty() || w[0] == "c") continue;
+    if (w.empty() || w[0] == "c" || w[0].front() == '#') continue;  // comments, as in .grid files
     if (auto e = f(line, w)) return e;
   }
   return std::nullopt;

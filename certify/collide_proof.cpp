@@ -448,8 +448,9 @@ std::vector<std::pair<uint32_t, uint32_t>> row_group_pairs_of(const Regions& reg
 bool is_collide_certificate(std::string_view text) {
   bool collide = false;
   for_each_certificate_line(text, [&](size_t, const std::vector<std::string_view>& w) -> std::optional<std::string> {
-    collide = w.size() >= 2 && w[0] == "p" && w[1] == kHeader;
-    return "";  // the first line decides
+    if (w[0] != "p") return std::nullopt;
+    collide = w.size() >= 2 && w[1] == kHeader;
+    return "";  // the first p line decides
   });
   return collide;
 }

@@ -143,6 +143,19 @@ TEST(CertifyCli, CollideCertificateEndToEnd) {
   EXPECT_EQ(b.exit_code, 1);
   EXPECT_NE(b.err.find(badf + ":3: certificate rejected: the combination of the forms is positive"), std::string::npos)
       << b.err;
+  // '#' lines are comments; a p line after the couplings line is named
+  // by the collide reader, not taken for a solve certificate.
+  const std::string noted = test::write_file(d + "/noted.cert", "# checked by hand\n" + text);
+  EXPECT_EQ(run_gridlock({"certify", diag, noted}).exit_code, 20);
+  const size_t p_end = text.find('\n') + 1, q_end = text.find('\n', p_end) + 1;
+  const std::string swapped = test::write_file(
+      d + "/swapped.cert", text.substr(p_end, q_end - p_end) + text.substr(0, p_end) + text.substr(q_end));
+  const auto sw = run_gridlock({"certify", diag, swapped});
+  EXPECT_EQ(sw.exit_code, 1);
+  EXPECT_NE(sw.err.find(swapped + ":1: certificate rejected: expected 'p gridlock-collide-no-certificate 1 "
+                                  "continuous' first"),
+            std::string::npos)
+      << sw.err;
   const std::string push = test::write_file(d + "/push.grid", kPush);
   const auto other = run_gridlock({"certify", push, cert});
   EXPECT_EQ(other.exit_code, 1);

@@ -45,8 +45,9 @@
 
 namespace gridlock {
 
-// True iff the first line that is not empty and not a comment is the p line
-// of a collide certificate.
+// True iff the first p line is that of a collide certificate (so that a
+// collide certificate whose p line is not first is refused by the collide
+// reader, which names what it expected first).
 bool is_collide_certificate(std::string_view text);
 
 // Checks text as a collide certificate of inst; sets r.kind ("collide"),
