@@ -89,6 +89,13 @@ NAMED_YES = {  # one coupling: (the .grid text, the algorithm, checked_at, the f
     "fixed-axis": ("p grid 5 4 2 1\nn -1 0\nn 0 0\nn 1 0\nn 1 1\nn 0 1\ne -1 0 0 0\ne 0 0 1 0\ne 1 0 1 1\n"
                    "e 1 1 0 1\no x expand -1 0 +x\no c contract 1 0 +y\nq Q x c\n",
                    "single-coupling-fixed-axis", Fraction(1, 2), Fraction(0)),
+    "separated": ("p grid 15 14 5 1\nn 0 0\nn 0 1\nn 1 1\nn 0 2\nn -1 2\nn -1 0\nn -1 1\nn -2 2\nn 0 3\n"
+                  "n -1 -1\nn 2 1\nn -2 -1\nn -1 3\nn -2 3\nn -2 -2\ne 0 0 0 1\ne 0 1 1 1\ne 0 1 0 2\n"
+                  "e 0 2 -1 2\ne 0 0 -1 0\ne 0 1 -1 1\ne -1 2 -2 2\ne 0 2 0 3\ne -1 0 -1 -1\ne 1 1 2 1\n"
+                  "e -1 -1 -2 -1\ne 0 3 -1 3\ne -1 3 -2 3\ne -2 -1 -2 -2\no o1 expand -2 -1 +x\n"
+                  "o o2 contract 0 1 -y\no o3 expand -1 2 +x\no o4 grow 2 1 -y\no o5 contract -1 3 +x\n"
+                  "q Q1 o3 o4 o5 o1 o2\n",  # gridlock random --couplings 1 --max-coupling 8 --seed 20
+                  "single-coupling-separated", Fraction(1, 2), Fraction(0)),
 }
 
 
@@ -96,7 +103,8 @@ NAMED_YES = {  # one coupling: (the .grid text, the algorithm, checked_at, the f
 @pytest.mark.parametrize("case", sorted(NAMED_YES))
 def test_collide_one_coupling_yes_checked_at_one_moment(tmp_path, model, case):
     """One coupling (one axis: the row groups; both axes, x keeping its
-    order: one sweep along x, bisecting for the first moment): the
+    order: one sweep along x, bisecting for the first moment; groups cut
+    apart, each keeping an order: one sweep each): the
     first collision comes from the proof and is confirmed at one moment;
     it is the simulator's, and equals the CLI."""
     text, algorithm, checked_at, time = NAMED_YES[case]
