@@ -2,6 +2,8 @@
 // random_family_instance) and `gridlock random`, the real binary.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -101,6 +103,31 @@ TEST(RandomCommand, WritesTheLibraryInstanceAndReplays) {
   f.couplings = 40;
   EXPECT_EQ(text_of(inst), text_of(random_family_instance(f, 9)));
   EXPECT_NE(r.out.find("gridlock random --family cycles --couplings 40 --max-coupling 3"), std::string::npos);
+}
+
+// A set is never written over someone else's files unasked: a folder that
+// is not empty (here another set's manifest) is refused before any work,
+// and --force writes into it.
+TEST(RandomCommand, RefusesAFolderThatIsNotEmpty) {
+  const std::string dir = test::temp_dir() + "/set";
+  std::filesystem::create_directories(dir);
+  const std::string theirs = test::write_file(dir + "/manifest.json", "{\"generator\": \"gridlock gen-instances\"}\n");
+  auto r = test::run_gridlock({"random", "--couplings", "5", "--count", "2", "-o", dir});
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.err.find("gridlock: error: " + dir + ": folder is not empty (give --force to write the set into it)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(test::read_file(theirs), "{\"generator\": \"gridlock gen-instances\"}\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/tree-k5-s1.grid"));
+  r = test::run_gridlock({"random", "--couplings", "5", "--count", "2", "--force", "-o", dir});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(test::read_file(theirs))["generator"], "gridlock random");
+  EXPECT_TRUE(std::filesystem::exists(dir + "/tree-k5-s2.grid"));
+  // A file where the folder should be is named as such.
+  const std::string file = test::write_file(test::temp_dir() + "/plain", "x\n");
+  r = test::run_gridlock({"random", "--couplings", "5", "--count", "2", "-o", file});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(file + ": exists and is not a folder"), std::string::npos) << r.err;
 }
 
 TEST(RandomCommand, FolderWithLabelledManifest) {

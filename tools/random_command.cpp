@@ -15,6 +15,7 @@
 #include "tools/cli_common.hpp"
 #include "tools/command.hpp"
 #include "tools/options.hpp"
+#include "tools/set_folder.hpp"
 #include "tools/user_error.hpp"
 
 namespace gridlock {
@@ -38,8 +39,20 @@ po::options_description random_options() {
       "count", po::value<std::string>()->default_value("1"), "instances to make (more than 1: --output is a folder)")(
       "label", po::value<std::string>(),
       "solve each instance (discrete, default engine) for at most S seconds and record the answer")(
-      "output,o", po::value<std::string>()->default_value("-"), "file (or folder with --count > 1); - = stdout");
+      "output,o", po::value<std::string>()->default_value("-"), "file (or folder with --count > 1); - = stdout")(
+      "force", "with --count > 1: write the set into a folder that is not empty (files of the same names replaced)");
   return opts;
+}
+
+// Before any work (--label solves): the set's folder can be made and is
+// empty, or force; a set never lands on someone else's files unasked.
+void check_set_folder(const std::string& out, bool force) {
+  if (out == "-") throw UserError("--count above 1 needs a folder: -o FOLDER");
+  cli::check_folder_can_be_made(out);
+  std::error_code ec;
+  if (std::filesystem::is_directory(out, ec) &&
+      std::filesystem::directory_iterator(out, ec) != std::filesystem::directory_iterator() && !force)
+    throw UserError(Diagnostic{out, 0, "folder is not empty (give --force to write the set into it)"});
 }
 
 RandomFamilyParams family_args(const po::variables_map& vm) {
@@ -77,21 +90,22 @@ int run_random(const std::vector<std::string>& args) {
   po::positional_options_description none;
   if (!cli::parse_args(args, random_options(), none, vm,
                        "random [--family F] [--couplings K] [--max-coupling M] [--kinds LIST] [--horizontal] "
-                       "[--planted] [--seed S] [--count N] [--label SECONDS] [-o OUT]",
+                       "[--planted] [--seed S] [--count N] [--label SECONDS] [--force] [-o OUT]",
                        "Seeded random instances of Collision-free Schedule: connected shapes (trees, shapes with\n"
                        "cycles, sparse or dense), operations of the chosen kinds in all four directions (or only\n"
                        "horizontal), grouped into K couplings of 1 to M operations. The same options and seed give\n"
                        "the same instance on every machine; each file names the command that makes it again.\n"
-                       "--count N > 1 writes NAME.grid files and manifest.json into the folder -o; --label S\n"
-                       "solves each one (discrete model) and records YES / NO / UNKNOWN (and the order of a YES).\n"
-                       "--planted makes YES instances: a random order, kept collision-free, is recorded."))
+                       "--count N > 1 writes NAME.grid files and manifest.json into the folder -o (empty, or\n"
+                       "with --force); --label S solves each one (discrete model) and records YES / NO / UNKNOWN\n"
+                       "(and the order of a YES). --planted makes YES instances: a random order, kept\n"
+                       "collision-free, is recorded."))
     return 0;
   const RandomFamilyParams f = family_args(vm);
   const uint64_t seed0 = cli::seed_arg(vm, "seed");
   const int count = cli::int_arg(vm, "count", 1, 1'000'000);
   const std::string out = vm["output"].as<std::string>();
   const double label = vm.count("label") ? cli::seconds_arg(vm, "label") : -1;
-  if (count > 1 && out == "-") throw UserError("--count above 1 needs a folder: -o FOLDER");
+  if (count > 1) check_set_folder(out, vm.count("force") > 0);
   std::vector<std::pair<std::string, std::string>> files;
   nlohmann::json entries = nlohmann::json::array();
   for (int i = 0; i < count; ++i) {
