@@ -6,6 +6,7 @@ set -euo pipefail
 PACKAGES=(
   cmake g++ make clang libclang-rt-14-dev   # build; clang for libFuzzer targets
   libcadical-dev                            # the SAT solver, linked as a library
+  libjemalloc-dev                           # the command line's allocator (campaigns allocate per formula)
   libboost-program-options-dev              # the command line
   nlohmann-json3-dev                        # --json output, manifests
   libgtest-dev                              # tests
