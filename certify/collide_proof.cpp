@@ -375,9 +375,11 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
       out.insert(out.end(), pairs.begin(), pairs.end());
       continue;
     }
-    const std::string group = "the group of " + std::to_string(members.size()) + " regions with " +
-                              region_label(inst, regions, members.front());
-    if (depth >= 64) return group + " is cut more than 64 levels deep";
+    auto group = [&, &piece = members] {  // named only when refused (a binding is captured by name)
+      return "the group of " + std::to_string(piece.size()) + " regions with " +
+             region_label(inst, regions, piece.front());
+    };
+    if (depth >= 64) return group() + " is cut more than 64 levels deep";
     bool cut = false;
     for (size_t axis : {size_t{0}, size_t{1}}) {
       std::vector<std::vector<uint32_t>> pieces = cut_along(face, members, axis);
@@ -386,7 +388,7 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
       cut = true;
       break;
     }
-    if (!cut) return group + " keeps neither order and no cut along x or y separates it";
+    if (!cut) return group() + " keeps neither order and no cut along x or y separates it";
   }
   return std::nullopt;
 }

@@ -465,10 +465,10 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
   return false;
 }
 
-// One group of the fixed-axis sweep: its kept axis s, the other axis m
-// and its events along s (sorted).
+// One group of the fixed-axis sweep: its kept axis s (the sweep orders
+// along 1 - s) and its events along s (sorted).
 struct KeptGroup {
-  size_t s = 0, m = 1;
+  size_t s = 0;
   std::vector<AxisEvent> events;
 };
 
@@ -490,7 +490,7 @@ std::optional<KeptGroup> kept_group(const std::vector<Faces>& faces, const std::
   for (uint32_t r : members)
     if (!width_positive(faces[r], m)) return std::nullopt;
   KeptGroup g;
-  g.s = s, g.m = m;
+  g.s = s;
   g.events.reserve(2 * members.size());
   for (uint32_t r : members) {
     const Faces& f = faces[r];
@@ -546,14 +546,16 @@ constexpr int kMaxCutDepth = 64;
 // another (separated_pieces, along x, then along y, recursively) until
 // every piece keeps the order of one axis (kept_group); a single group
 // when all of them do. nullopt when some piece keeps neither order and
-// has no cut, or the cuts nest deeper than kMaxCutDepth.
+// has no cut, or the cuts nest deeper than kMaxCutDepth. Checks deadline
+// (if given) once per piece.
 struct FixedAxisSetup {
   std::vector<Faces> faces;
   std::vector<uint32_t> live;
   std::vector<KeptGroup> groups;
 };
 
-std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions,
+                                               const Deadline* deadline = nullptr) {
   FixedAxisSetup out;
   out.faces = region_faces(inst, t, regions);
   const std::vector<Faces>& faces = out.faces;
@@ -563,6 +565,7 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
   std::vector<std::pair<std::vector<uint32_t>, int>> todo;
   todo.emplace_back(out.live, 0);
   while (!todo.empty()) {
+    if (deadline) deadline->check();
     auto [members, depth] = std::move(todo.back());
     todo.pop_back();
     if (std::optional<KeptGroup> g = kept_group(faces, members)) {
@@ -588,7 +591,7 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
 bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& best, uint64_t& tests,
                          std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
   for (const KeptGroup& g : setup.groups)
-    if (collides_before(setup.faces, g.events, g.m, T, best, tests, tested)) return true;
+    if (collides_before(setup.faces, g.events, 1 - g.s, T, best, tests, tested)) return true;
   return false;
 }
 
@@ -628,7 +631,7 @@ void smallest_first_pair(const std::vector<Faces>& faces, const std::vector<uint
 
 std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
                                                           const Regions& regions, const Deadline* deadline) {
-  const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions);
+  const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions, deadline);
   if (!setup) return std::nullopt;
   FixedAxisAnswer out;
   out.groups = setup->groups.size();

@@ -136,7 +136,7 @@ struct FixedAxisAnswer {
 // denominators up to twice the largest face speed), then the pairs whose
 // closed boxes share a unit cell at that moment, for the smallest one
 // starting then (the simulator's pair). Checks deadline (if
-// given) between sweeps.
+// given) once per piece of the cuts and between sweeps.
 std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
                                                           const Regions& regions, const Deadline* deadline = nullptr);
 

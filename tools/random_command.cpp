@@ -49,9 +49,7 @@ po::options_description random_options() {
 void check_set_folder(const std::string& out, bool force) {
   if (out == "-") throw UserError("--count above 1 needs a folder: -o FOLDER");
   cli::check_folder_can_be_made(out);
-  std::error_code ec;
-  if (std::filesystem::is_directory(out, ec) &&
-      std::filesystem::directory_iterator(out, ec) != std::filesystem::directory_iterator() && !force)
+  if (!cli::folder_empty(out) && !force)
     throw UserError(Diagnostic{out, 0, "folder is not empty (give --force to write the set into it)"});
 }
 

@@ -131,12 +131,12 @@ void claim_folder(const SetFolder& f) {
                                    "; options, seed or inputs differ): give another folder"});
 }
 
-bool folder_empty(const fs::path& dir) {
+}  // namespace
+
+bool folder_empty(const std::string& dir) {
   std::error_code ec;
   return fs::directory_iterator(dir, ec) == fs::directory_iterator();
 }
-
-}  // namespace
 
 void check_writable_folder(const std::string& dir) {
   std::error_code ec;

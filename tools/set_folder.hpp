@@ -38,6 +38,9 @@ void prepare_set_folder(const SetFolder& f, const std::string& manifest_name, bo
 // there (not written by this run) is refused, never overwritten.
 void write_set_file(const SetFolder& f, const std::string& name, const std::string& text);
 
+// True iff dir holds nothing (or cannot be listed, e.g. it does not exist).
+bool folder_empty(const std::string& dir);
+
 // Throws UserError("DIR: cannot write in folder: REASON") unless a file can
 // be created in dir (created first, with its parents).
 void check_writable_folder(const std::string& dir);
