@@ -147,13 +147,17 @@ FaceNets FaceNets::build(const Instance& inst) {
   // (the outer one above all, about 2n steps) have no non-zero net and are
   // dropped, so they are built in place and copied only when kept.
   Face face;
-  std::vector<std::pair<CouplingId, Vec2>> net;  // (coupling, step) per operation edge, then summed
+  // The steps of a walk summed per coupling in a dense table: the outer
+  // face crosses every operation edge twice, so sorting its steps cost
+  // O(e log e); only the couplings a walk touches are visited and reset.
+  std::vector<Vec2> sum(inst.couplings().size(), Vec2{0, 0});
+  std::vector<CouplingId> touched;
   for (NodeId w0 = 0; w0 < n; ++w0) {
     for (int d0 = 0; d0 < 4; ++d0) {
       if (used[4 * w0 + d0] || inst.neighbour(w0, static_cast<Dir>(d0)) == kNone) continue;
       face.walk.clear();
       face.nets.clear();
-      net.clear();
+      touched.clear();
       NodeId w = w0;
       int d = d0;
       while (!used[4 * w + d]) {
@@ -166,7 +170,9 @@ FaceNets FaceNets::build(const Instance& inst) {
           const Operation& op = inst.ops()[k];
           Vec2 step = unit(dir);  // relative motion of x w.r.t. w at full progress
           if (op.kind == OpKind::Contract) step = Vec2{-step.x, -step.y};
-          net.push_back({op.coupling, step});
+          Vec2& acc = sum[op.coupling];
+          if (acc.is_zero()) touched.push_back(op.coupling);  // may repeat after a sum returns to zero
+          acc += step;
         }
         // At x, turn: the first edge clockwise from the way back.
         int back = (d + 2) % 4, nd = back;
@@ -180,14 +186,13 @@ FaceNets FaceNets::build(const Instance& inst) {
         w = x;
         d = nd;
       }
-      // Sum the steps per coupling, in increasing coupling order.
-      std::sort(net.begin(), net.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-      for (size_t i = 0; i < net.size();) {
-        const CouplingId q = net[i].first;
-        Vec2 v{0, 0};
-        for (; i < net.size() && net[i].first == q; ++i) v += net[i].second;
-        if (!v.is_zero()) face.nets.push_back({q, v}), F.coupling_breaks_cycle[q] = 1;
+      // The non-zero sums, in increasing coupling order (a coupling can be
+      // in touched twice: its sum is read and reset the first time).
+      for (CouplingId q : touched) {
+        if (!sum[q].is_zero()) face.nets.push_back({q, sum[q]}), F.coupling_breaks_cycle[q] = 1;
+        sum[q] = Vec2{0, 0};
       }
+      std::sort(face.nets.begin(), face.nets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       if (!face.nets.empty()) F.faces.push_back(face);
     }
   }

@@ -75,7 +75,7 @@ std::string region_label(const Instance& inst, const Regions& regions, uint32_t 
 // every cycle stays zero iff it does around every face walk. For each face
 // walk we keep, per coupling with a non-zero sum, that coupling's net vector:
 // the mismatch around the face at time t is sum_q p_q(t) * net_q.
-// Built in O(n + e log e); total size O(e).
+// Built in O(n + e + couplings) plus a sort of each kept face's nets; total size O(e).
 struct FaceNets {
   struct Face {
     std::vector<NodeId> walk;                       // the nodes in walk order
