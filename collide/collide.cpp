@@ -281,6 +281,51 @@ void name_fixed_axis(const FixedAxisAnswer& fixed, CollideResult& res) {
                    "for its first moment)";
 }
 
+// 2. One coupling (Auto): the one schedule, decided as find_collision's
+// comment says; res is filled and returned.
+CollideResult single_coupling_step(const Instance& inst, Simulator& sim, CollideResult& res, const Deadline* deadline,
+                                   Reporter& progress) {
+  std::optional<SingleCouplingAnswer> answer = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
+                                                                        &res.stats.pair_tests);
+  SingleCouplingStats st;
+  if (answer) {
+    res.algorithm = "single-coupling-one-axis";
+    res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
+  } else if (std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions(),
+                                                                               deadline)) {
+    name_fixed_axis(*fixed, res);
+    res.stats.pair_tests = fixed->tests;
+    answer = fixed->answer;
+  } else if (std::optional<MotionClassAnswer> classes = single_coupling_motion_classes(inst, sim.tree(), sim.regions(),
+                                                                                       deadline);
+             classes && !classes->answer.collides) {
+    // A NO; a YES is left to the cell sweep, which names the first
+    // collision (the classes' cost is at most the motion, the sweep's).
+    res.algorithm = "single-coupling-motion-classes";
+    res.complexity = "O(k n log n) (a piece no cut separates, in k motion classes: " +
+                     std::to_string(classes->classes) + "; one strip query per class pair and strip)";
+    answer = classes->answer;
+  } else {
+    res.algorithm = "single-coupling";
+    res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
+    answer = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline, kSingleCouplingBandItems,
+                                   progress.step(res.algorithm));
+    res.stats.cell_items = st.items;
+    res.stats.pair_tests = st.tests;
+  }
+  const SingleCouplingAnswer& ans = *answer;
+  if (!ans.collides) {
+    if (st.bands) progress.report(res.algorithm, st.bands, st.bands);
+    return res;
+  }
+  if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
+  if (ans.first) return finish_named(res, inst, ans);
+  finish_with(res, sim, schedule_from_order({0}));
+  if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
+    res.region_a = res.simulated->a, res.region_b = res.simulated->b;
+  return res;
+}
+
 }  // namespace
 
 CollideResult find_collision(const Instance& inst, TimeModel model, CollideMethod method, const Deadline* deadline,
@@ -318,41 +363,12 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   // row when every operation is on one axis (O(n log n)), by one sweep
   // along an axis whose faces keep their order (O(n log n) for a NO; a
   // YES bisects for its first moment), else by the space-time cell sweep
-  // (single_coupling.hpp). All name the first collision, checked at one
-  // moment; a YES of the cell sweep's packing bound names none and is
-  // simulated.
-  if (method == CollideMethod::Auto && nq == 1) {
-    std::optional<SingleCouplingAnswer> answer = single_coupling_one_axis(inst, sim.tree(), sim.regions(),
-                                                                          &res.stats.pair_tests);
-    SingleCouplingStats st;
-    if (answer) {
-      res.algorithm = "single-coupling-one-axis";
-      res.complexity = "O(n log n) (one axis: neighbours in each row at t = 0)";
-    } else if (std::optional<FixedAxisAnswer> fixed = single_coupling_fixed_axis(inst, sim.tree(), sim.regions(),
-                                                                                 deadline)) {
-      name_fixed_axis(*fixed, res);
-      res.stats.pair_tests = fixed->tests;
-      answer = fixed->answer;
-    } else {
-      res.algorithm = "single-coupling";
-      res.complexity = "O(n + mu log mu), mu = total motion (sum of |speeds|)";
-      answer = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, deadline, kSingleCouplingBandItems,
-                                     progress.step(res.algorithm));
-      res.stats.cell_items = st.items;
-      res.stats.pair_tests = st.tests;
-    }
-    const SingleCouplingAnswer& ans = *answer;
-    if (!ans.collides) {
-      if (st.bands) progress.report(res.algorithm, st.bands, st.bands);
-      return res;
-    }
-    if (ans.pair) res.region_a = ans.pair->a, res.region_b = ans.pair->b;
-    if (ans.first) return finish_named(res, inst, ans);
-    finish_with(res, sim, schedule_from_order({0}));
-    if (!ans.pair && res.simulated->kind == Collision::Kind::Node)  // decided by packing: the simulator names the pair
-      res.region_a = res.simulated->a, res.region_b = res.simulated->b;
-    return res;
-  }
+  // (single_coupling.hpp); a piece that keeps neither order and has no
+  // cut is decided by motion classes when they cost no more than the
+  // motion (a NO; a YES goes on to the cell sweep). All YES name the first
+  // collision, checked at one moment; a YES of the cell sweep's packing
+  // bound names none and is simulated.
+  if (method == CollideMethod::Auto && nq == 1) return single_coupling_step(inst, sim, res, deadline, progress);
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).
   bool tree_ok = all_singletons(inst);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "collide/internal/row_groups.hpp"
+#include "collide/internal/strip_pairs.hpp"
 #include "common/int_math.hpp"
 
 namespace gridlock {
@@ -554,8 +555,11 @@ struct FixedAxisSetup {
   std::vector<KeptGroup> groups;
 };
 
+// uncut (optional): the pieces that keep neither order and have no cut
+// are appended there instead of failing (the motion-class test's).
 std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions,
-                                               const Deadline* deadline = nullptr) {
+                                               const Deadline* deadline = nullptr,
+                                               std::vector<std::vector<uint32_t>>* uncut = nullptr) {
   FixedAxisSetup out;
   out.faces = region_faces(inst, t, regions);
   const std::vector<Faces>& faces = out.faces;
@@ -572,16 +576,18 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
       out.groups.push_back(std::move(*g));
       continue;
     }
-    if (depth >= kMaxCutDepth) return std::nullopt;
     bool cut = false;
     for (size_t axis : {size_t{0}, size_t{1}}) {
+      if (depth >= kMaxCutDepth) break;
       std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, axis);
       if (pieces.size() == 1) continue;
       for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
       cut = true;
       break;
     }
-    if (!cut) return std::nullopt;
+    if (cut) continue;
+    if (!uncut) return std::nullopt;
+    uncut->push_back(std::move(members));
   }
   return out;
 }
@@ -674,6 +680,181 @@ std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& i
   Earliest best;
   uint64_t tests = 0;
   if (any_collides_before(*setup, Frac{1, 1}, best, tests, &out.pairs)) return std::nullopt;
+  return out;
+}
+
+namespace {
+
+// A motion class: regions whose four faces move at the same speeds and
+// whose widths at t = 0 agree. Two regions of classes P and Q then
+// overlap at some t iff the difference of their low corners lies in one
+// open convex polygon that depends on P and Q alone.
+struct MotionClass {
+  std::array<int64_t, 6> key{};  // the speeds of xlo, xhi, ylo, yhi; the widths at 0
+  std::vector<uint32_t> members;
+};
+
+std::array<int64_t, 6> class_key(const Faces& f) {
+  return {f[0].b, f[1].b, f[2].b, f[3].b, f[1].a - f[0].a, f[3].a - f[2].a};
+}
+
+struct Point {
+  int64_t x, y;
+};
+__int128 cross(const Point& o, const Point& a, const Point& b) {
+  return static_cast<__int128>(a.x - o.x) * (b.y - o.y) - static_cast<__int128>(a.y - o.y) * (b.x - o.x);
+}
+
+// A in P, B in Q (the same class allowed), d = A's low corner - B's at
+// t = 0. Along x they overlap at t iff -wA - s1 t < dx < wB + s2 t
+// (s1 = A's xhi speed - B's xlo speed, s2 = B's xhi speed - A's xlo
+// speed), along y likewise: d in an open box B(t) whose sides move
+// linearly. With both widths of every member positive on (0, 1) (so
+// nonnegative at 0 and 1), B(t) = (1 - t) B(0) + t B(1) (Minkowski), and
+// the d for which some t in (0, 1) works form an open convex set whose
+// closure is the union of the closed B(t), conv(B(0) u B(1)): the set is
+// the interior of that hull (an open convex set is the interior of its
+// closure), a polygon with integer vertices. Cut by the verticals through
+// its vertices, it is a union of strips: an integer dx in [x_i, x_i+1]
+// strictly inside the hull's x range, d strictly above the strip's lower
+// edge and below its upper edge. Each strip is one strip_pair query.
+// Returns an overlapping pair (A's region first), or nullopt. queries
+// counts the strips asked.
+std::optional<std::pair<uint32_t, uint32_t>> classes_meet(const std::vector<Faces>& faces, const MotionClass& P,
+                                                          const MotionClass& Q, uint64_t& queries) {
+  const Faces &fa = faces[P.members.front()], &fb = faces[Q.members.front()];
+  const int64_t wA = fa[1].a - fa[0].a, wB = fb[1].a - fb[0].a, hA = fa[3].a - fa[2].a, hB = fb[3].a - fb[2].a;
+  const int64_t s1 = fa[1].b - fb[0].b, s2 = fb[1].b - fa[0].b, s3 = fa[3].b - fb[2].b, s4 = fb[3].b - fa[2].b;
+  std::vector<Point> pts;
+  for (const auto& [x0, x1, y0, y1] :
+       {std::array<int64_t, 4>{-wA, wB, -hA, hB}, std::array<int64_t, 4>{-wA - s1, wB + s2, -hA - s3, hB + s4}})
+    for (int64_t x : {x0, x1})
+      for (int64_t y : {y0, y1}) pts.push_back({x, y});
+  std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  // Andrew's monotone chains, left to right: lower (turning left) and
+  // upper (turning right); collinear points dropped.
+  std::vector<Point> lower, upper;
+  for (const Point& p : pts) {
+    while (lower.size() >= 2 && cross(lower[lower.size() - 2], lower.back(), p) <= 0) lower.pop_back();
+    lower.push_back(p);
+    while (upper.size() >= 2 && cross(upper[upper.size() - 2], upper.back(), p) >= 0) upper.pop_back();
+    upper.push_back(p);
+  }
+  const int64_t x_min = pts.front().x, x_max = pts.back().x;
+  if (x_max - x_min < 2) return std::nullopt;  // no integer dx strictly inside
+  // Non-vertical edges only (vertical ones lie at x_min or x_max).
+  auto edges = [](const std::vector<Point>& chain) {
+    std::vector<std::pair<Point, Point>> out;
+    for (size_t i = 0; i + 1 < chain.size(); ++i)
+      if (chain[i].x < chain[i + 1].x) out.emplace_back(chain[i], chain[i + 1]);
+    return out;
+  };
+  const auto lo_edges = edges(lower), hi_edges = edges(upper);
+  const bool same = &P == &Q;
+  std::vector<StripPoint> A(P.members.size()), B;
+  if (!same) B.resize(Q.members.size());
+  size_t i = 0, j = 0;
+  for (int64_t x = x_min; x < x_max;) {
+    const auto& [l1, l2] = lo_edges[i];
+    const auto& [h1, h2] = hi_edges[j];
+    const int64_t end = std::min(l2.x, h2.x);
+    const int64_t X1 = std::max(x, x_min + 1), X2 = std::min(end, x_max - 1);
+    if (X1 <= X2) {
+      // Strictly above the lower edge: ex dy - ey dx > ex y1 - ey x1; with
+      // d = a - b, u(a) - u(b) > c for u(p) = ex p.y - ey p.x. Strictly
+      // below the upper edge: v(a) - v(b) < c' likewise.
+      const int64_t ex = l2.x - l1.x, ey = l2.y - l1.y, fx = h2.x - h1.x, fy = h2.y - h1.y;
+      const __int128 cu = static_cast<__int128>(ex) * l1.y - static_cast<__int128>(ey) * l1.x;
+      const __int128 cv = static_cast<__int128>(fx) * h1.y - static_cast<__int128>(fy) * h1.x;
+      auto fill = [&](const MotionClass& C, std::vector<StripPoint>& out) {
+        for (size_t k = 0; k < C.members.size(); ++k) {
+          const Faces& f = faces[C.members[k]];
+          out[k] = {f[0].a, static_cast<__int128>(ex) * f[2].a - static_cast<__int128>(ey) * f[0].a,
+                    static_cast<__int128>(fx) * f[2].a - static_cast<__int128>(fy) * f[0].a, C.members[k]};
+        }
+      };
+      fill(P, A);
+      if (!same) fill(Q, B);
+      ++queries;
+      if (auto pair = strip_pair(A, same ? A : B, X1, X2, cu, cv)) return pair;
+    }
+    if (l2.x == end) ++i;
+    if (h2.x == end) ++j;
+    x = end;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& inst, const SpanningTree& t,
+                                                                const Regions& regions, const Deadline* deadline,
+                                                                bool whole, bool any_cost) {
+  std::vector<std::vector<uint32_t>> uncut;
+  std::optional<FixedAxisSetup> setup;
+  if (whole) {
+    setup.emplace();
+    setup->faces = region_faces(inst, t, regions);
+    for (uint32_t r = 0; r < setup->faces.size(); ++r)
+      if (!alive(setup->faces[r]).empty()) setup->live.push_back(r);
+    uncut.push_back(setup->live);
+  } else {
+    setup = fixed_axis_setup(inst, t, regions, deadline, &uncut);
+    if (!setup) return std::nullopt;
+  }
+  const std::vector<Faces>& faces = setup->faces;
+  MotionClassAnswer out;
+  out.groups = setup->groups.size() + uncut.size();
+  out.class_groups = uncut.size();
+  // Every class group: widths positive on (0, 1), and (unless any_cost)
+  // k r no more than its motion (the cell sweep's cost), k classes and r
+  // regions.
+  std::vector<std::vector<MotionClass>> grouped;
+  for (const std::vector<uint32_t>& members : uncut) {
+    std::map<std::array<int64_t, 6>, size_t> index;
+    std::vector<MotionClass> classes;
+    uint64_t motion = 0;
+    for (uint32_t r : members) {
+      const Faces& f = faces[r];
+      if (!width_positive(f, 0) || !width_positive(f, 1)) return std::nullopt;
+      motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
+                static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
+      const auto [it, fresh] = index.emplace(class_key(f), classes.size());
+      if (fresh) classes.emplace_back().key = it->first;
+      classes[it->second].members.push_back(r);
+    }
+    if (!any_cost && classes.size() * members.size() > motion) return std::nullopt;
+    out.classes = std::max(out.classes, classes.size());
+    grouped.push_back(std::move(classes));
+  }
+  Earliest best;
+  uint64_t tests = 0;
+  if (!setup->groups.empty() && any_collides_before(*setup, Frac{1, 1}, best, tests)) {
+    out.answer.collides = true;
+    out.answer.pair = best.pair;
+  }
+  for (size_t g = 0; g < grouped.size() && !out.answer.collides; ++g) {
+    const std::vector<MotionClass>& classes = grouped[g];
+    for (size_t p = 0; p < classes.size() && !out.answer.collides; ++p)
+      for (size_t q = p; q < classes.size(); ++q) {
+        if (deadline) deadline->check();
+        ++out.class_pairs;
+        const auto pair = classes_meet(faces, classes[p], classes[q], out.queries);
+        if (!pair) continue;
+        // Checked by the exact pair test (a disagreement would be a bug).
+        if (!overlap(faces[pair->first], faces[pair->second]))
+          throw std::logic_error("single_coupling_motion_classes: a pair found apart by the exact test");
+        out.answer.collides = true;
+        out.answer.pair = RegionPair{std::min(pair->first, pair->second), std::max(pair->first, pair->second)};
+        break;
+      }
+  }
+  if (out.answer.collides) {
+    const Span s = overlap_span(faces[out.answer.pair->a], faces[out.answer.pair->b]);
+    // A moment of overlap: the middle of the open span.
+    out.answer.during = Rational(s.lo.num, s.lo.den) +
+                        (Rational(s.hi.num, s.hi.den) - Rational(s.lo.num, s.lo.den)) / Rational(2);
+  }
   return out;
 }
 

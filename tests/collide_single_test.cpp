@@ -51,6 +51,8 @@ struct Tally {
   uint64_t fixed_sweeps = 0;                     // its sweeps on the YES (bisecting for the first moment)
   int fixed_named = 0;                           // its YES equal to the simulator's first collision, pair too
   int separated_no = 0, separated_yes = 0;       // of those, decided in several separated groups
+  int classes_no = 0, classes_yes = 0;           // decided by motion classes, the whole set one class group
+  int class_groups = 0;                          // with the cuts: some piece left to motion classes
   uint64_t max_active = 0;
 };
 
@@ -61,6 +63,19 @@ void expect_overlaps_during(const Instance& inst, const SingleCouplingAnswer& an
   ASSERT_LT(ans.pair->a, ans.pair->b) << where;
   ASSERT_LE(Rational(0), *ans.first) << where;
   ASSERT_LT(*ans.first, *ans.during) << where;
+  ASSERT_LT(*ans.during, Rational(1)) << where;
+  const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *ans.during);
+  const RectQ &A = at[ans.pair->a], &B = at[ans.pair->b];
+  ASSERT_LT(std::max(A.xlo, B.xlo), std::min(A.xhi, B.xhi)) << where;
+  ASSERT_LT(std::max(A.ylo, B.ylo), std::min(A.yhi, B.yhi)) << where;
+}
+
+// A YES of the motion classes: its pair overlaps at `during`, a moment in
+// (0, 1), in the simulator's own configuration.
+void expect_pair_overlaps(const Instance& inst, const SingleCouplingAnswer& ans, const std::string& where) {
+  ASSERT_TRUE(ans.pair && ans.during) << where;
+  ASSERT_LT(ans.pair->a, ans.pair->b) << where;
+  ASSERT_LT(Rational(0), *ans.during) << where;
   ASSERT_LT(*ans.during, Rational(1)) << where;
   const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *ans.during);
   const RectQ &A = at[ans.pair->a], &B = at[ans.pair->b];
@@ -113,6 +128,22 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     }
     tally.fixed_y += fixed->axis == 1;
     if (fixed->groups > 1) (sweep ? tally.separated_yes : tally.separated_no)++;
+  }
+  // Motion classes: with the whole live set as one class group (every
+  // class pair asked, whatever the cost), and with the cuts and kept-order
+  // sweeps first. The same verdict; a YES's pair overlaps.
+  for (bool whole : {true, false}) {
+    const std::string how = where + (whole ? ", motion classes (one group)" : ", motion classes");
+    const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions(), nullptr,
+                                                                               whole, true);
+    if (!mc) continue;
+    ASSERT_EQ(mc->answer.collides, sweep) << how;
+    if (sweep) {
+      expect_pair_overlaps(inst, mc->answer, how);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+    if (whole) (sweep ? tally.classes_yes : tally.classes_no)++;
+    if (!whole) tally.class_groups += mc->class_groups > 0;
   }
   tally.max_active = std::max<uint64_t>(tally.max_active, st.max_active);
   // Bounded memory: sweeping in column bands of a few items gives the
@@ -214,7 +245,10 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << " of them keeping fewer items after an overlap; one axis keeping its order: " << tally.fixed_no
             << " NOs and " << tally.fixed_yes << " YES (" << tally.fixed_sweeps << " sweeps, " << tally.fixed_named
             << " named as the simulator does through find_collision), " << tally.fixed_y << " of them along y; "
-            << tally.separated_no << " NOs and " << tally.separated_yes << " YES in several separated groups)\n";
+            << tally.separated_no << " NOs and " << tally.separated_yes
+            << " YES in several separated groups; motion classes on the whole set: " << tally.classes_no << " NOs and "
+            << tally.classes_yes << " YES, " << tally.class_groups
+            << " instances with a piece left to them after the cuts)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
@@ -227,6 +261,9 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.fixed_y, cases / 50);
   EXPECT_GT(tally.separated_no, cases / 300);
   EXPECT_GT(tally.separated_yes, cases / 100);
+  EXPECT_GT(tally.classes_no, cases / 10);
+  EXPECT_GT(tally.classes_yes, cases / 10);
+  EXPECT_GT(tally.class_groups, cases / 100);
 }
 
 // Larger shapes, long paths: more motion, more items per cell.
@@ -438,18 +475,26 @@ TEST(SingleCouplingSweep, LiddedCombIsCutIntoSeparatedGroups) {
 
 // The stalactite comb (bench/bench_families.hpp): the teeth pass under
 // the stalactites, then rise past their tips. Both axes change order and
-// no cut separates teeth from stalactites, so it is the cell sweep's (the
-// case docs/collide.md lists as not done); every method says NO.
-TEST(SingleCouplingSweep, StalactiteCombIsLeftToTheCellSweep) {
+// no cut separates teeth from stalactites, so the fixed-axis sweep gives
+// up; that piece has six motion classes (the stalactites, teeth rising by
+// 0, 1 and 2, the two inserted regions' kinds), which decide the NO. The
+// cell sweep, all pairs and the simulator agree.
+TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
   for (int64_t L : {1, 2, 5, 16, 40}) {
     const Instance inst = bench::stalactite_comb(L);
     const std::string where = "stalactite comb of " + std::to_string(L);
     ASSERT_EQ(inst.couplings().size(), 1u) << where;
     const CollideResult r = find_collision(inst, TimeModel::Continuous);
     EXPECT_FALSE(r.collides) << where;
-    EXPECT_EQ(r.algorithm, "single-coupling") << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-motion-classes") << where;
     Simulator sim(inst);
     EXPECT_FALSE(single_coupling_fixed_axis(inst, sim.tree(), sim.regions())) << where;
+    const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(mc) << where;
+    EXPECT_FALSE(mc->answer.collides) << where;
+    EXPECT_EQ(mc->class_groups, 1u) << where;
+    EXPECT_LE(mc->classes, 6u) << where;
+    EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
     EXPECT_FALSE(single_coupling_pairwise(inst, sim.tree(), sim.regions())) << where;
     EXPECT_FALSE(sim.run_order({0}).collision) << where;
   }
