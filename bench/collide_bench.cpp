@@ -154,6 +154,13 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
       state.counters["sweeps"] = static_cast<double>(f->sweeps), st.tests = f->tests;  // sweeps run, exact tests
       state.counters["groups"] = static_cast<double>(f->groups);
     }
+  if (how == 0 && algorithm == "single-coupling-motion-classes")
+    if (const std::optional<MotionClassAnswer> c = single_coupling_motion_classes(inst, sim.tree(), sim.regions())) {
+      state.counters["classes"] = static_cast<double>(c->classes);
+      state.counters["class_pairs"] = static_cast<double>(c->class_pairs);
+      state.counters["queries"] = static_cast<double>(c->queries);
+      state.counters["groups"] = static_cast<double>(c->groups);
+    }
   if (!algorithm.empty()) state.SetLabel(algorithm);
   state.counters["n"] = static_cast<double>(inst.num_nodes());
   state.counters["yes"] = yes;
@@ -190,8 +197,9 @@ void BM_LiddedCombSingleCoupling(benchmark::State& state) {
 
 // The stalactite comb of about n nodes (bench_families.hpp): NO, total
 // motion Theta(n^2), both axes changing order and no cut between the
-// teeth and the stalactites they pass: Auto keeps the cell sweep
-// (range(1) = 0); 2 is the simulation.
+// teeth and the stalactites they pass: Auto cuts off the rest, then
+// decides that piece by its six motion classes (range(1) = 0); 5 is the
+// cell sweep it took before, 2 the simulation.
 void BM_StalactiteCombSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24));
 }
@@ -387,7 +395,10 @@ BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Un
 BENCHMARK(BM_CombSingleCoupling)->ArgsProduct({{1024, 4096}, {1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LiddedCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_StalactiteCombSingleCoupling)->ArgsProduct({{1536, 6144, 24576}, {0, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteCombSingleCoupling)
+    ->ArgsProduct({{1536, 6144, 24576, 98304}, {0}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteCombSingleCoupling)->ArgsProduct({{1536, 6144}, {2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AwningCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
@@ -497,6 +508,15 @@ void register_large_one_axis() {
         ->Args({n, 0})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {393216, 1572864})  // one piece no cut separates: motion classes
+    benchmark::RegisterBenchmark("BM_StalactiteCombSingleCoupling", BM_StalactiteCombSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_StalactiteCombSingleCoupling", BM_StalactiteCombSingleCoupling)
+      ->Args({24576, 5})  // the cell sweep, for the ratio
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_AwningCombSingleCoupling", BM_AwningCombSingleCoupling)
       ->Args({65536, 5})  // the cell sweep, for the ratio
       ->Iterations(1)
