@@ -297,13 +297,12 @@ CollideResult single_coupling_step(const Instance& inst, Simulator& sim, Collide
     res.stats.pair_tests = fixed->tests;
     answer = fixed->answer;
   } else if (std::optional<MotionClassAnswer> classes = single_coupling_motion_classes(inst, sim.tree(), sim.regions(),
-                                                                                       deadline);
-             classes && !classes->answer.collides) {
-    // A NO; a YES is left to the cell sweep, which names the first
-    // collision (the classes' cost is at most the motion, the sweep's).
+                                                                                       deadline)) {
     res.algorithm = "single-coupling-motion-classes";
     res.complexity = "O(k n log n) (a piece no cut separates, in k motion classes: " +
-                     std::to_string(classes->classes) + "; one strip query per class pair and strip)";
+                     std::to_string(classes->classes) +
+                     "; one strip query per class pair and strip; a YES bisects for its first moment)";
+    res.stats.pair_tests = classes->tests;
     answer = classes->answer;
   } else {
     res.algorithm = "single-coupling";
@@ -365,9 +364,8 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   // YES bisects for its first moment), else by the space-time cell sweep
   // (single_coupling.hpp); a piece that keeps neither order and has no
   // cut is decided by motion classes when they cost no more than the
-  // motion (a NO; a YES goes on to the cell sweep). All YES name the first
-  // collision, checked at one moment; a YES of the cell sweep's packing
-  // bound names none and is simulated.
+  // motion. All YES name the first collision, checked at one moment; a
+  // YES of the cell sweep's packing bound names none and is simulated.
   if (method == CollideMethod::Auto && nq == 1) return single_coupling_step(inst, sim, res, deadline, progress);
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).

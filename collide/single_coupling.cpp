@@ -542,6 +542,140 @@ std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& fa
 // cost stays O(r log r) per level, 64 levels at most.
 constexpr int kMaxCutDepth = 64;
 
+// A motion class: regions whose four faces move at the same speeds and
+// whose widths at t = 0 agree. Two regions of classes P and Q then
+// overlap at some t iff the difference of their low corners lies in one
+// open convex polygon that depends on P and Q alone.
+struct MotionClass {
+  std::array<int64_t, 6> key{};  // the speeds of xlo, xhi, ylo, yhi; the widths at 0
+  std::vector<uint32_t> members;
+};
+
+std::array<int64_t, 6> class_key(const Faces& f) {
+  return {f[0].b, f[1].b, f[2].b, f[3].b, f[1].a - f[0].a, f[3].a - f[2].a};
+}
+
+// Face speeds of a class group at most this (and T's denominator at most
+// 2^21, see below) keep every product in classes_meet within 128 bits.
+constexpr int64_t kMaxClassSpeed = int64_t{1} << 20;
+constexpr int64_t kMaxClassDen = int64_t{1} << 21;
+
+struct Point {
+  int64_t x, y;
+};
+__int128 cross(const Point& o, const Point& a, const Point& b) {
+  return static_cast<__int128>(a.x - o.x) * (b.y - o.y) - static_cast<__int128>(a.y - o.y) * (b.x - o.x);
+}
+
+// A in P, B in Q (the same class allowed), d = A's low corner - B's at
+// t = 0. Along x they overlap at t iff -wA - s1 t < dx < wB + s2 t
+// (s1 = A's xhi speed - B's xlo speed, s2 = B's xhi speed - A's xlo
+// speed), along y likewise: d in an open box B(t) whose sides move
+// linearly. With both widths of every member positive on (0, 1) (so
+// nonnegative at 0 and 1), B(t) = (1 - t/T) B(0) + (t/T) B(T)
+// (Minkowski), and the d for which some t in (0, T) works form an open
+// convex set whose closure is the union of the closed B(t) over [0, T],
+// conv(B(0) u B(T)): the set is the interior of that hull (an open
+// convex set is the interior of its closure). With T = p/q, q times the
+// hull has integer vertices: q B(0) and q B(T). Cut by the verticals
+// through its vertices, it is a union of strips: q dx in [x_i, x_i+1]
+// strictly inside the hull's x range, q d strictly above the strip's
+// lower edge and below its upper edge; for integer d, "e_x q dy - e_y q dx
+// > c" is "e_x dy - e_y dx > floor(c / q)" (and "< c'" is "< ceil(c' / q)").
+// Each strip is one strip_pair query. Returns an overlapping pair (A's
+// region first), or nullopt. queries counts the strips asked. Requires
+// face speeds within kMaxClassSpeed and 0 < T <= 1 with T.den within
+// kMaxClassDen.
+std::optional<std::pair<uint32_t, uint32_t>> classes_meet(const std::vector<Faces>& faces, const MotionClass& P,
+                                                          const MotionClass& Q, const Frac& T, uint64_t& queries) {
+  const Faces &fa = faces[P.members.front()], &fb = faces[Q.members.front()];
+  const int64_t wA = fa[1].a - fa[0].a, wB = fb[1].a - fb[0].a, hA = fa[3].a - fa[2].a, hB = fb[3].a - fb[2].a;
+  const int64_t s1 = fa[1].b - fb[0].b, s2 = fb[1].b - fa[0].b, s3 = fa[3].b - fb[2].b, s4 = fb[3].b - fa[2].b;
+  const int64_t p = T.num, q = T.den;
+  std::vector<Point> pts;
+  for (const auto& [x0, x1, y0, y1] :
+       {std::array<int64_t, 4>{-wA * q, wB * q, -hA * q, hB * q},
+        std::array<int64_t, 4>{-wA * q - s1 * p, wB * q + s2 * p, -hA * q - s3 * p, hB * q + s4 * p}})
+    for (int64_t x : {x0, x1})
+      for (int64_t y : {y0, y1}) pts.push_back({x, y});
+  std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  // Andrew's monotone chains, left to right: lower (turning left) and
+  // upper (turning right); collinear points dropped.
+  std::vector<Point> lower, upper;
+  for (const Point& pt : pts) {
+    while (lower.size() >= 2 && cross(lower[lower.size() - 2], lower.back(), pt) <= 0) lower.pop_back();
+    lower.push_back(pt);
+    while (upper.size() >= 2 && cross(upper[upper.size() - 2], upper.back(), pt) >= 0) upper.pop_back();
+    upper.push_back(pt);
+  }
+  const int64_t x_min = pts.front().x, x_max = pts.back().x;
+  // Integer dx with x_min < q dx < x_max.
+  const int64_t dx_min = floor_div<int64_t>(x_min, q) + 1, dx_max = ceil_div<int64_t>(x_max, q) - 1;
+  if (dx_min > dx_max) return std::nullopt;
+  // Non-vertical edges only (vertical ones lie at x_min or x_max).
+  auto edges = [](const std::vector<Point>& chain) {
+    std::vector<std::pair<Point, Point>> out;
+    for (size_t i = 0; i + 1 < chain.size(); ++i)
+      if (chain[i].x < chain[i + 1].x) out.emplace_back(chain[i], chain[i + 1]);
+    return out;
+  };
+  const auto lo_edges = edges(lower), hi_edges = edges(upper);
+  const bool same = &P == &Q;
+  std::vector<StripPoint> A(P.members.size()), B;
+  if (!same) B.resize(Q.members.size());
+  size_t i = 0, j = 0;
+  for (int64_t x = x_min; x < x_max;) {
+    const auto& [l1, l2] = lo_edges[i];
+    const auto& [h1, h2] = hi_edges[j];
+    const int64_t end = std::min(l2.x, h2.x);
+    const int64_t X1 = std::max(ceil_div<int64_t>(x, q), dx_min), X2 = std::min(floor_div<int64_t>(end, q), dx_max);
+    if (X1 <= X2) {
+      // Strictly above the lower edge: ex q dy - ey q dx > ex y1 - ey x1;
+      // with d = a - b, u(a) - u(b) > floor(c / q) for u(p) = ex p.y -
+      // ey p.x. Strictly below the upper edge: v(a) - v(b) < ceil(c' / q).
+      const int64_t ex = l2.x - l1.x, ey = l2.y - l1.y, fx = h2.x - h1.x, fy = h2.y - h1.y;
+      const __int128 cu = floor_div<__int128>(static_cast<__int128>(ex) * l1.y - static_cast<__int128>(ey) * l1.x, q);
+      const __int128 cv = ceil_div<__int128>(static_cast<__int128>(fx) * h1.y - static_cast<__int128>(fy) * h1.x, q);
+      auto fill = [&](const MotionClass& C, std::vector<StripPoint>& out) {
+        for (size_t k = 0; k < C.members.size(); ++k) {
+          const Faces& f = faces[C.members[k]];
+          out[k] = {f[0].a, static_cast<__int128>(ex) * f[2].a - static_cast<__int128>(ey) * f[0].a,
+                    static_cast<__int128>(fx) * f[2].a - static_cast<__int128>(fy) * f[0].a, C.members[k]};
+        }
+      };
+      fill(P, A);
+      if (!same) fill(Q, B);
+      ++queries;
+      if (auto pair = strip_pair(A, same ? A : B, X1, X2, cu, cv)) return pair;
+    }
+    if (l2.x == end) ++i;
+    if (h2.x == end) ++j;
+    x = end;
+  }
+  return std::nullopt;
+}
+
+// The motion classes of `members` and their total motion (sum of 1 +
+// |speed_x| + |speed_y|); nullopt when some width is not positive all
+// along (0, 1) or some face speed exceeds kMaxClassSpeed. O(r log k).
+std::optional<std::vector<MotionClass>> motion_classes_of(const std::vector<Faces>& faces,
+                                                          const std::vector<uint32_t>& members, uint64_t& motion) {
+  std::map<std::array<int64_t, 6>, size_t> index;
+  std::vector<MotionClass> classes;
+  for (uint32_t r : members) {
+    const Faces& f = faces[r];
+    if (!width_positive(f, 0) || !width_positive(f, 1)) return std::nullopt;
+    for (const Lin& l : f)
+      if (l.b > kMaxClassSpeed || l.b < -kMaxClassSpeed) return std::nullopt;
+    motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
+              static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
+    const auto [it, fresh] = index.emplace(class_key(f), classes.size());
+    if (fresh) classes.emplace_back().key = it->first;
+    classes[it->second].members.push_back(r);
+  }
+  return classes;
+}
+
 // What the fixed-axis sweep needs: the faces, the live regions and their
 // groups. The live regions are cut into pieces that never overlap one
 // another (separated_pieces, along x, then along y, recursively) until
@@ -549,10 +683,14 @@ constexpr int kMaxCutDepth = 64;
 // when all of them do. nullopt when some piece keeps neither order and
 // has no cut, or the cuts nest deeper than kMaxCutDepth. Checks deadline
 // (if given) once per piece.
+// With class groups (single_coupling_motion_classes), the pieces that
+// no cut separates are decided by motion classes instead.
 struct FixedAxisSetup {
   std::vector<Faces> faces;
   std::vector<uint32_t> live;
   std::vector<KeptGroup> groups;
+  std::vector<std::vector<MotionClass>> class_groups;
+  mutable uint64_t class_pairs = 0, queries = 0;  // asked of the class groups
 };
 
 // uncut (optional): the pieces that keep neither order and have no cut
@@ -592,15 +730,6 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
   return out;
 }
 
-// Is there an overlap at some t in (0, T) within some group? Groups never
-// overlap one another, so this is the question for every live pair.
-bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& best, uint64_t& tests,
-                         std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
-  for (const KeptGroup& g : setup.groups)
-    if (collides_before(setup.faces, g.events, 1 - g.s, T, best, tests, tested)) return true;
-  return false;
-}
-
 // Ties of the first moment t*: the simulator names the smallest pair that
 // starts to overlap then. Such a pair overlaps just after t*, so its
 // closed boxes meet at t*, and so share a unit cell (each box is entered
@@ -633,6 +762,57 @@ void smallest_first_pair(const std::vector<Faces>& faces, const std::vector<uint
   }
 }
 
+// Is there an overlap at some t in (0, T) within some group? Groups never
+// overlap one another, so this is the question for every live pair.
+bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& best, uint64_t& tests,
+                         std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
+  for (const KeptGroup& g : setup.groups)
+    if (collides_before(setup.faces, g.events, 1 - g.s, T, best, tests, tested)) return true;
+  if (T.num <= 0) return false;
+  for (const std::vector<MotionClass>& classes : setup.class_groups)
+    for (size_t p = 0; p < classes.size(); ++p)
+      for (size_t q = p; q < classes.size(); ++q) {
+        ++setup.class_pairs;
+        const auto pair = classes_meet(setup.faces, classes[p], classes[q], T, setup.queries);
+        if (!pair) continue;
+        // Checked by the exact pair test (a disagreement would be a bug).
+        const Span s = overlap_span(setup.faces[pair->first], setup.faces[pair->second]);
+        if (s.empty() || !less(s.lo, T))
+          throw std::logic_error("single_coupling_motion_classes: a pair found apart by the exact test");
+        best.keep(pair->first, pair->second, s);
+        return true;
+      }
+  return false;
+}
+
+// A YES (best holds an overlapping pair): finds the first moment t*, the
+// least start of an overlapping pair, and the smallest pair starting
+// then. lo <= t* <= c <= hi (dyadic, den 2^k), c best's start. Each round
+// asks for an overlap before c (none: c = t*), then halves [lo, hi].
+// Distinct starts differ by more than the interval once it is short
+// enough, so the rounds end; O(log) rounds for bounded speeds. The
+// halving stops at denominator max_den (then starts alone shrink c).
+void first_collision(const FixedAxisSetup& setup, Earliest& best, uint64_t& tests, uint64_t& sweeps,
+                     const Deadline* deadline, int64_t max_den) {
+  int64_t lo = 0, hi = 1, den = 1;
+  for (;;) {
+    if (deadline) deadline->check();
+    ++sweeps;
+    if (!any_collides_before(setup, best.span.lo, best, tests)) break;
+    if (den >= max_den) continue;  // the interval is as fine as allowed: shrink by starts alone
+    lo *= 2, hi *= 2, den *= 2;
+    const Frac mid{lo + (hi - lo) / 2, den};
+    if (!less(mid, best.span.lo)) {
+      hi = mid.num;  // t* <= c <= mid
+    } else {
+      ++sweeps;
+      if (any_collides_before(setup, mid, best, tests)) hi = mid.num;  // best now starts before mid
+      else lo = mid.num;
+    }
+  }
+  smallest_first_pair(setup.faces, setup.live, best);
+}
+
 }  // namespace
 
 std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
@@ -645,28 +825,7 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
   Earliest best;
   ++out.sweeps;
   if (!any_collides_before(*setup, Frac{1, 1}, best, out.tests)) return out;
-  // A YES: the first moment t* is the least start of an overlapping pair.
-  // lo <= t* <= c <= hi (dyadic, den 2^k), c best's start. Each round asks
-  // for an overlap before c (none: c = t*), then halves [lo, hi].
-  // Distinct starts differ by more than the interval once it is short
-  // enough, so the rounds end; O(log) rounds for bounded speeds.
-  int64_t lo = 0, hi = 1, den = 1;
-  for (;;) {
-    if (deadline) deadline->check();
-    ++out.sweeps;
-    if (!any_collides_before(*setup, best.span.lo, best, out.tests)) break;
-    if (den >= (int64_t{1} << 60)) continue;  // the interval is as fine as int64 allows: shrink by starts alone
-    lo *= 2, hi *= 2, den *= 2;
-    const Frac mid{lo + (hi - lo) / 2, den};
-    if (!less(mid, best.span.lo)) {
-      hi = mid.num;  // t* <= c <= mid
-    } else {
-      ++out.sweeps;
-      if (any_collides_before(*setup, mid, best, out.tests)) hi = mid.num;  // best now starts before mid
-      else lo = mid.num;
-    }
-  }
-  smallest_first_pair(setup->faces, setup->live, best);
+  first_collision(*setup, best, out.tests, out.sweeps, deadline, int64_t{1} << 60);
   out.answer = named(best);
   return out;
 }
@@ -682,110 +841,6 @@ std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& i
   if (any_collides_before(*setup, Frac{1, 1}, best, tests, &out.pairs)) return std::nullopt;
   return out;
 }
-
-namespace {
-
-// A motion class: regions whose four faces move at the same speeds and
-// whose widths at t = 0 agree. Two regions of classes P and Q then
-// overlap at some t iff the difference of their low corners lies in one
-// open convex polygon that depends on P and Q alone.
-struct MotionClass {
-  std::array<int64_t, 6> key{};  // the speeds of xlo, xhi, ylo, yhi; the widths at 0
-  std::vector<uint32_t> members;
-};
-
-std::array<int64_t, 6> class_key(const Faces& f) {
-  return {f[0].b, f[1].b, f[2].b, f[3].b, f[1].a - f[0].a, f[3].a - f[2].a};
-}
-
-struct Point {
-  int64_t x, y;
-};
-__int128 cross(const Point& o, const Point& a, const Point& b) {
-  return static_cast<__int128>(a.x - o.x) * (b.y - o.y) - static_cast<__int128>(a.y - o.y) * (b.x - o.x);
-}
-
-// A in P, B in Q (the same class allowed), d = A's low corner - B's at
-// t = 0. Along x they overlap at t iff -wA - s1 t < dx < wB + s2 t
-// (s1 = A's xhi speed - B's xlo speed, s2 = B's xhi speed - A's xlo
-// speed), along y likewise: d in an open box B(t) whose sides move
-// linearly. With both widths of every member positive on (0, 1) (so
-// nonnegative at 0 and 1), B(t) = (1 - t) B(0) + t B(1) (Minkowski), and
-// the d for which some t in (0, 1) works form an open convex set whose
-// closure is the union of the closed B(t), conv(B(0) u B(1)): the set is
-// the interior of that hull (an open convex set is the interior of its
-// closure), a polygon with integer vertices. Cut by the verticals through
-// its vertices, it is a union of strips: an integer dx in [x_i, x_i+1]
-// strictly inside the hull's x range, d strictly above the strip's lower
-// edge and below its upper edge. Each strip is one strip_pair query.
-// Returns an overlapping pair (A's region first), or nullopt. queries
-// counts the strips asked.
-std::optional<std::pair<uint32_t, uint32_t>> classes_meet(const std::vector<Faces>& faces, const MotionClass& P,
-                                                          const MotionClass& Q, uint64_t& queries) {
-  const Faces &fa = faces[P.members.front()], &fb = faces[Q.members.front()];
-  const int64_t wA = fa[1].a - fa[0].a, wB = fb[1].a - fb[0].a, hA = fa[3].a - fa[2].a, hB = fb[3].a - fb[2].a;
-  const int64_t s1 = fa[1].b - fb[0].b, s2 = fb[1].b - fa[0].b, s3 = fa[3].b - fb[2].b, s4 = fb[3].b - fa[2].b;
-  std::vector<Point> pts;
-  for (const auto& [x0, x1, y0, y1] :
-       {std::array<int64_t, 4>{-wA, wB, -hA, hB}, std::array<int64_t, 4>{-wA - s1, wB + s2, -hA - s3, hB + s4}})
-    for (int64_t x : {x0, x1})
-      for (int64_t y : {y0, y1}) pts.push_back({x, y});
-  std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-  // Andrew's monotone chains, left to right: lower (turning left) and
-  // upper (turning right); collinear points dropped.
-  std::vector<Point> lower, upper;
-  for (const Point& p : pts) {
-    while (lower.size() >= 2 && cross(lower[lower.size() - 2], lower.back(), p) <= 0) lower.pop_back();
-    lower.push_back(p);
-    while (upper.size() >= 2 && cross(upper[upper.size() - 2], upper.back(), p) >= 0) upper.pop_back();
-    upper.push_back(p);
-  }
-  const int64_t x_min = pts.front().x, x_max = pts.back().x;
-  if (x_max - x_min < 2) return std::nullopt;  // no integer dx strictly inside
-  // Non-vertical edges only (vertical ones lie at x_min or x_max).
-  auto edges = [](const std::vector<Point>& chain) {
-    std::vector<std::pair<Point, Point>> out;
-    for (size_t i = 0; i + 1 < chain.size(); ++i)
-      if (chain[i].x < chain[i + 1].x) out.emplace_back(chain[i], chain[i + 1]);
-    return out;
-  };
-  const auto lo_edges = edges(lower), hi_edges = edges(upper);
-  const bool same = &P == &Q;
-  std::vector<StripPoint> A(P.members.size()), B;
-  if (!same) B.resize(Q.members.size());
-  size_t i = 0, j = 0;
-  for (int64_t x = x_min; x < x_max;) {
-    const auto& [l1, l2] = lo_edges[i];
-    const auto& [h1, h2] = hi_edges[j];
-    const int64_t end = std::min(l2.x, h2.x);
-    const int64_t X1 = std::max(x, x_min + 1), X2 = std::min(end, x_max - 1);
-    if (X1 <= X2) {
-      // Strictly above the lower edge: ex dy - ey dx > ex y1 - ey x1; with
-      // d = a - b, u(a) - u(b) > c for u(p) = ex p.y - ey p.x. Strictly
-      // below the upper edge: v(a) - v(b) < c' likewise.
-      const int64_t ex = l2.x - l1.x, ey = l2.y - l1.y, fx = h2.x - h1.x, fy = h2.y - h1.y;
-      const __int128 cu = static_cast<__int128>(ex) * l1.y - static_cast<__int128>(ey) * l1.x;
-      const __int128 cv = static_cast<__int128>(fx) * h1.y - static_cast<__int128>(fy) * h1.x;
-      auto fill = [&](const MotionClass& C, std::vector<StripPoint>& out) {
-        for (size_t k = 0; k < C.members.size(); ++k) {
-          const Faces& f = faces[C.members[k]];
-          out[k] = {f[0].a, static_cast<__int128>(ex) * f[2].a - static_cast<__int128>(ey) * f[0].a,
-                    static_cast<__int128>(fx) * f[2].a - static_cast<__int128>(fy) * f[0].a, C.members[k]};
-        }
-      };
-      fill(P, A);
-      if (!same) fill(Q, B);
-      ++queries;
-      if (auto pair = strip_pair(A, same ? A : B, X1, X2, cu, cv)) return pair;
-    }
-    if (l2.x == end) ++i;
-    if (h2.x == end) ++j;
-    x = end;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& inst, const SpanningTree& t,
                                                                 const Regions& regions, const Deadline* deadline,
@@ -803,59 +858,63 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
     if (!setup) return std::nullopt;
   }
   const std::vector<Faces>& faces = setup->faces;
+  if (!uncut.empty())  // every start then has a denominator of at most kMaxClassDen
+    for (uint32_t r : setup->live)
+      for (const Lin& l : faces[r])
+        if (l.b > kMaxClassSpeed || l.b < -kMaxClassSpeed) return std::nullopt;
   MotionClassAnswer out;
   out.groups = setup->groups.size() + uncut.size();
   out.class_groups = uncut.size();
-  // Every class group: widths positive on (0, 1), and (unless any_cost)
-  // k r no more than its motion (the cell sweep's cost), k classes and r
-  // regions.
-  std::vector<std::vector<MotionClass>> grouped;
+  // Every class group: widths positive on (0, 1), and (unless any_cost) k r no more than its motion (the
+  // cell sweep's cost), k classes and r regions.
   for (const std::vector<uint32_t>& members : uncut) {
-    std::map<std::array<int64_t, 6>, size_t> index;
-    std::vector<MotionClass> classes;
     uint64_t motion = 0;
-    for (uint32_t r : members) {
-      const Faces& f = faces[r];
-      if (!width_positive(f, 0) || !width_positive(f, 1)) return std::nullopt;
-      motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
-                static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
-      const auto [it, fresh] = index.emplace(class_key(f), classes.size());
-      if (fresh) classes.emplace_back().key = it->first;
-      classes[it->second].members.push_back(r);
-    }
-    if (!any_cost && classes.size() * members.size() > motion) return std::nullopt;
-    out.classes = std::max(out.classes, classes.size());
-    grouped.push_back(std::move(classes));
+    std::optional<std::vector<MotionClass>> classes = motion_classes_of(faces, members, motion);
+    if (!classes) return std::nullopt;
+    if (!any_cost && classes->size() * members.size() > motion) return std::nullopt;
+    out.classes = std::max(out.classes, classes->size());
+    setup->class_groups.push_back(std::move(*classes));
   }
   Earliest best;
-  uint64_t tests = 0;
-  if (!setup->groups.empty() && any_collides_before(*setup, Frac{1, 1}, best, tests)) {
-    out.answer.collides = true;
-    out.answer.pair = best.pair;
+  ++out.sweeps;
+  if (any_collides_before(*setup, Frac{1, 1}, best, out.tests)) {
+    // Starts have denominators up to twice a face speed, so at most
+    // kMaxClassDen: halving stops at 2^20, starts stay within bounds.
+    first_collision(*setup, best, out.tests, out.sweeps, deadline, kMaxClassSpeed);
+    out.answer = named(best);
   }
-  for (size_t g = 0; g < grouped.size() && !out.answer.collides; ++g) {
-    const std::vector<MotionClass>& classes = grouped[g];
-    for (size_t p = 0; p < classes.size() && !out.answer.collides; ++p)
-      for (size_t q = p; q < classes.size(); ++q) {
-        if (deadline) deadline->check();
-        ++out.class_pairs;
-        const auto pair = classes_meet(faces, classes[p], classes[q], out.queries);
-        if (!pair) continue;
-        // Checked by the exact pair test (a disagreement would be a bug).
-        if (!overlap(faces[pair->first], faces[pair->second]))
-          throw std::logic_error("single_coupling_motion_classes: a pair found apart by the exact test");
-        out.answer.collides = true;
-        out.answer.pair = RegionPair{std::min(pair->first, pair->second), std::max(pair->first, pair->second)};
-        break;
-      }
-  }
-  if (out.answer.collides) {
-    const Span s = overlap_span(faces[out.answer.pair->a], faces[out.answer.pair->b]);
-    // A moment of overlap: the middle of the open span.
-    out.answer.during = Rational(s.lo.num, s.lo.den) +
-                        (Rational(s.hi.num, s.hi.den) - Rational(s.lo.num, s.lo.den)) / Rational(2);
-  }
+  out.class_pairs = setup->class_pairs;
+  out.queries = setup->queries;
   return out;
+}
+
+std::optional<std::optional<RegionPair>> single_coupling_classes_before(const Instance& inst, const SpanningTree& t,
+                                                                        const Regions& regions, const Rational& T) {
+  if (T <= Rational(0) || T > Rational(1) || T.den() > kMaxClassDen) return std::nullopt;
+  FixedAxisSetup setup;
+  setup.faces = region_faces(inst, t, regions);
+  for (uint32_t r = 0; r < setup.faces.size(); ++r)
+    if (!alive(setup.faces[r]).empty()) setup.live.push_back(r);
+  uint64_t motion = 0;
+  std::optional<std::vector<MotionClass>> classes = motion_classes_of(setup.faces, setup.live, motion);
+  if (!classes) return std::nullopt;
+  setup.class_groups.push_back(std::move(*classes));
+  Earliest best;
+  uint64_t tests = 0;
+  if (!any_collides_before(setup, Frac{T.num(), T.den()}, best, tests)) return std::optional<RegionPair>{};
+  return std::optional<RegionPair>{best.pair};
+}
+
+std::optional<RegionPair> single_coupling_pairwise_before(const Instance& inst, const SpanningTree& t,
+                                                          const Regions& regions, const Rational& T) {
+  const std::vector<Faces> faces = region_faces(inst, t, regions);
+  const Frac end{T.num(), T.den()};
+  for (uint32_t a = 0; a < faces.size(); ++a)
+    for (uint32_t b = a + 1; b < faces.size(); ++b) {
+      const Span s = overlap_span(faces[a], faces[b]);
+      if (!s.empty() && less(s.lo, end)) return RegionPair{a, b};
+    }
+  return std::nullopt;
 }
 
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,

@@ -160,37 +160,57 @@ std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& i
 // Motion classes: when some piece keeps neither order and has no cut
 // (single_coupling_fixed_axis gives up), its regions are grouped by
 // motion: the four face speeds and the two widths at t = 0. Two classes
-// P and Q overlap iff the difference of some pair's low corners at t = 0
-// lies in an open convex polygon with integer vertices (at most 8) that
-// depends on P and Q alone; cut into vertical strips, each strip is one
-// query of a sweep with a segment tree (docs/collide.md, "One coupling:
-// motion classes", the proof). The kept-order groups are swept as
-// single_coupling_fixed_axis sweeps them. O(k r log r) for a piece of r
-// regions in k classes, O(r log r) per level of cuts.
+// P and Q overlap before T iff the difference of some pair's low corners
+// at t = 0 lies in an open convex polygon (at most 8 vertices, integer
+// once scaled by T's denominator) that depends on P, Q and T alone; cut
+// into vertical strips, each strip is one query of a sweep with a
+// segment tree (docs/collide.md, "One coupling: motion classes", the
+// proof). The kept-order groups are swept as single_coupling_fixed_axis
+// sweeps them. A NO costs O(k r log r) for a piece of r regions in k
+// classes, plus O(r log r) per level of cuts; a YES bisects for its first
+// moment as single_coupling_fixed_axis does (at most about
+// 2 log2(2 max speed) + 2 rounds, then the starts alone), and names the
+// first collision as the simulator does.
 struct MotionClassAnswer {
-  // collides; on a YES `pair` (an overlapping pair, checked by the exact
-  // pair test) and `during` (a moment of its overlap), not `first`: the
-  // first collision is then the cell sweep's to name.
+  // collides; on a YES pair, first and during, as single_coupling_sweep
+  // and the simulator name them.
   SingleCouplingAnswer answer;
   size_t groups = 0;         // separated groups, kept-order ones included
   size_t class_groups = 0;   // of which decided by motion classes
   size_t classes = 0;        // most classes in one class group
-  uint64_t class_pairs = 0;  // class pairs asked
+  uint64_t class_pairs = 0;  // class pairs asked (over every round)
   uint64_t queries = 0;      // strip queries asked
+  uint64_t sweeps = 0;       // rounds: 1 on a NO
+  uint64_t tests = 0;        // exact pair tests of the kept-order sweeps
 };
 
 // nullopt when the cuts nest deeper than single_coupling_fixed_axis
 // follows, when some region of a class group has a width that is not
-// positive all along (0, 1) (only when the coupling breaks a cycle), or,
+// positive all along (0, 1) (only when the coupling breaks a cycle), when
+// some face speed exceeds 2^20 (the exact arithmetic's bound), or,
 // unless any_cost, when some class group's k r exceeds its motion (the
 // sum of 1 + |speed_x| + |speed_y| over its regions, the cell sweep's
 // cost): then the cell sweep is the cheaper method. whole (for tests):
 // no cuts and no kept-order sweeps, every live region in one class
-// group. Checks deadline (if given) per piece and per class pair.
+// group. Checks deadline (if given) per piece and per round.
 std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& inst, const SpanningTree& t,
                                                                 const Regions& regions,
                                                                 const Deadline* deadline = nullptr, bool whole = false,
                                                                 bool any_cost = false);
+
+// The question each round of the classes' bisection asks, exposed for its
+// twin test: with every live region in one class group (every class pair
+// asked), some pair that overlaps at some t in (0, T), or none. nullopt
+// when the classes decline (a width not positive all along (0, 1), a face
+// speed above 2^20) or T is not in (0, 1] with a denominator of at most
+// 2^21. O(k r log r) for r regions in k classes.
+std::optional<std::optional<RegionPair>> single_coupling_classes_before(const Instance& inst, const SpanningTree& t,
+                                                                        const Regions& regions, const Rational& T);
+
+// Its twin: the exact pair test on every pair, restricted to (0, T).
+// O(r^2).
+std::optional<RegionPair> single_coupling_pairwise_before(const Instance& inst, const SpanningTree& t,
+                                                          const Regions& regions, const Rational& T);
 
 // The brute-force twin: the same exact test on every pair of regions.
 // O(r^2) for r regions.

@@ -7,6 +7,7 @@
 // (GRIDLOCK_TEST_SEED replays, GRIDLOCK_TEST_SCALE scales the count).
 #include <gtest/gtest.h>
 
+#include <numeric>
 #include <optional>
 #include <string>
 #include <utility>
@@ -53,6 +54,7 @@ struct Tally {
   int separated_no = 0, separated_yes = 0;       // of those, decided in several separated groups
   int classes_no = 0, classes_yes = 0;           // decided by motion classes, the whole set one class group
   int class_groups = 0;                          // with the cuts: some piece left to motion classes
+  uint64_t classes_rounds = 0;                   // rounds of the classes' YES (bisecting for the first moment)
   uint64_t max_active = 0;
 };
 
@@ -63,19 +65,6 @@ void expect_overlaps_during(const Instance& inst, const SingleCouplingAnswer& an
   ASSERT_LT(ans.pair->a, ans.pair->b) << where;
   ASSERT_LE(Rational(0), *ans.first) << where;
   ASSERT_LT(*ans.first, *ans.during) << where;
-  ASSERT_LT(*ans.during, Rational(1)) << where;
-  const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *ans.during);
-  const RectQ &A = at[ans.pair->a], &B = at[ans.pair->b];
-  ASSERT_LT(std::max(A.xlo, B.xlo), std::min(A.xhi, B.xhi)) << where;
-  ASSERT_LT(std::max(A.ylo, B.ylo), std::min(A.yhi, B.yhi)) << where;
-}
-
-// A YES of the motion classes: its pair overlaps at `during`, a moment in
-// (0, 1), in the simulator's own configuration.
-void expect_pair_overlaps(const Instance& inst, const SingleCouplingAnswer& ans, const std::string& where) {
-  ASSERT_TRUE(ans.pair && ans.during) << where;
-  ASSERT_LT(ans.pair->a, ans.pair->b) << where;
-  ASSERT_LT(Rational(0), *ans.during) << where;
   ASSERT_LT(*ans.during, Rational(1)) << where;
   const std::vector<RectQ> at = configuration_at(inst, schedule_from_order({0}), *ans.during);
   const RectQ &A = at[ans.pair->a], &B = at[ans.pair->b];
@@ -139,8 +128,18 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     if (!mc) continue;
     ASSERT_EQ(mc->answer.collides, sweep) << how;
     if (sweep) {
-      expect_pair_overlaps(inst, mc->answer, how);
+      // The first collision, as the cell sweep names it (the simulator's:
+      // checked against it below).
+      expect_overlaps_during(inst, mc->answer, how);
       if (::testing::Test::HasFatalFailure()) return;
+      if (ans.pair) {
+        ASSERT_EQ(*mc->answer.first, *ans.first) << how;
+        ASSERT_EQ(mc->answer.pair->a, ans.pair->a) << how;
+        ASSERT_EQ(mc->answer.pair->b, ans.pair->b) << how;
+      }
+      tally.classes_rounds += mc->sweeps;
+    } else {
+      ASSERT_EQ(mc->sweeps, 1u) << how;
     }
     if (whole) (sweep ? tally.classes_yes : tally.classes_no)++;
     if (!whole) tally.class_groups += mc->class_groups > 0;
@@ -247,7 +246,7 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << " named as the simulator does through find_collision), " << tally.fixed_y << " of them along y; "
             << tally.separated_no << " NOs and " << tally.separated_yes
             << " YES in several separated groups; motion classes on the whole set: " << tally.classes_no << " NOs and "
-            << tally.classes_yes << " YES, " << tally.class_groups
+            << tally.classes_yes << " YES (" << tally.classes_rounds << " rounds), " << tally.class_groups
             << " instances with a piece left to them after the cuts)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
@@ -264,6 +263,61 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.classes_no, cases / 10);
   EXPECT_GT(tally.classes_yes, cases / 10);
   EXPECT_GT(tally.class_groups, cases / 100);
+}
+
+// The question the classes' bisection asks, "some overlap before T?", on
+// every class pair of the whole live set, against the exact test on every
+// pair: at random fractions T and at the first moment of a YES (where
+// nothing may start before it) and just after it, on instances with
+// larger speeds (long paths) too. A failure prints the seed.
+TEST(SingleCouplingMotionClasses, OverlapBeforeTAgreesWithEveryPair) {
+  const uint64_t seed0 = test::base_seed(27000);
+  const int cases = test::scaled(1500);
+  int asked = 0, yes = 0, at_first = 0;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    Rng rng(seed * 104729 + 9);
+    RandomInstanceParams p = single_params(rng);
+    // A third tiny (a question then hinges on one or two pairs), a third
+    // with long paths (larger speeds).
+    const uint64_t kind = rng.below(3);
+    if (kind == 0) p.nodes = 2 + static_cast<uint32_t>(rng.below(4)), p.ops = 1 + static_cast<uint32_t>(rng.below(2));
+    if (kind == 1) p.nodes = 20 + static_cast<uint32_t>(rng.below(100)), p.path_shape = true;
+    const Instance inst = one_coupling(random_instance(p, seed));
+    const std::string where = "seed " + std::to_string(seed) +
+                              "; replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+    Simulator sim(inst);
+    std::vector<Rational> ts;
+    for (int64_t q = 1; q <= 7; ++q)  // every fraction of (0, 1] with a small denominator
+      for (int64_t num = 1; num <= q; ++num)
+        if (std::gcd(num, q) == 1) ts.emplace_back(num, q);
+    for (int k = 0; k < 4; ++k) {
+      const int64_t q = 1 + static_cast<int64_t>(rng.below(40));
+      ts.emplace_back(1 + static_cast<int64_t>(rng.below(static_cast<uint64_t>(q))), q);
+    }
+    const SingleCouplingAnswer swept = single_coupling_sweep(inst, sim.tree(), sim.regions());
+    if (swept.first && *swept.first > Rational(0)) {
+      ts.push_back(*swept.first);
+      ts.push_back(*swept.first + (Rational(1) - *swept.first) / Rational(1000));
+    }
+    for (const Rational& T : ts) {
+      const auto classes = single_coupling_classes_before(inst, sim.tree(), sim.regions(), T);
+      if (!classes) continue;
+      const auto pairs = single_coupling_pairwise_before(inst, sim.tree(), sim.regions(), T);
+      ASSERT_EQ(classes->has_value(), pairs.has_value()) << where << ", T = " << T.str();
+      ++asked;
+      yes += pairs.has_value();
+      if (swept.first && T == *swept.first) {
+        ASSERT_FALSE(classes->has_value()) << where << ": something before the first moment";
+        ++at_first;
+      }
+    }
+  }
+  std::cout << "[ info ] " << asked << " questions (" << yes << " with an overlap before T), " << at_first
+            << " at a first moment\n";
+  EXPECT_GT(yes, asked / 10);
+  EXPECT_LT(yes, asked - asked / 10);
+  EXPECT_GT(at_first, cases / 150);  // most first moments are 0
 }
 
 // Larger shapes, long paths: more motion, more items per cell.
@@ -498,6 +552,43 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
     EXPECT_FALSE(single_coupling_pairwise(inst, sim.tree(), sim.regions())) << where;
     EXPECT_FALSE(sim.run_order({0}).collision) << where;
   }
+  // The middle stalactite reaching into the teeth's path: a YES found by
+  // the classes, its first moment by bisection, named as the simulator
+  // names it and as the cell sweep does.
+  for (int64_t L : {1, 2, 5, 16, 40}) {
+    const Instance inst = bench::stalactite_comb(L, false, true);
+    const std::string where = "stalactite comb with a hit, " + std::to_string(L);
+    Simulator sim(inst);
+    const SimResult run = sim.run_order({0});
+    ASSERT_TRUE(run.collision) << where;
+    const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(mc) << where;
+    expect_names_first(inst, mc->answer, *run.collision, where);
+    if (::testing::Test::HasFatalFailure()) return;
+    const SingleCouplingAnswer swept = single_coupling_sweep(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(swept.first) << where;
+    EXPECT_EQ(*swept.first, *mc->answer.first) << where;
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_EQ(r.algorithm, "single-coupling-motion-classes") << where;
+    ASSERT_TRUE(r.simulated) << where;
+    EXPECT_EQ(r.simulated->time, run.collision->time) << where;
+    EXPECT_EQ(r.checked_at, mc->answer.during) << where;
+  }
+  // Each pair of teeth at its own speed: many classes, the same NO.
+  for (int64_t L : {1, 2, 5, 16, 40}) {
+    const Instance inst = bench::stalactite_comb(L, true);
+    const std::string where = "own-speed stalactite comb of " + std::to_string(L);
+    ASSERT_EQ(inst.couplings().size(), 1u) << where;
+    EXPECT_FALSE(find_collision(inst, TimeModel::Continuous).collides) << where;
+    Simulator sim(inst);
+    const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions(), nullptr,
+                                                                               false, true);
+    ASSERT_TRUE(mc) << where;
+    EXPECT_FALSE(mc->answer.collides) << where;
+    if (L >= 16) EXPECT_GT(mc->classes, static_cast<size_t>(L)) << where;
+    EXPECT_FALSE(single_coupling_pairwise(inst, sim.tree(), sim.regions())) << where;
+    EXPECT_FALSE(sim.run_order({0}).collision) << where;
+  }
 }
 
 // The awning comb (bench/bench_families.hpp): the x faces keep their
@@ -554,8 +645,15 @@ TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
       ASSERT_TRUE(r.simulated) << where;
       EXPECT_EQ(r.simulated->time, run.collision->time) << where;
       // K = 1: a move of one cell, after which no two x faces have swapped;
-      // the fixed-axis sweep bisects for the same first collision.
-      EXPECT_EQ(r.algorithm, K == 1 ? "single-coupling-fixed-axis" : "single-coupling") << where;
+      // the fixed-axis sweep bisects for the same first collision. K > 1:
+      // no cut; motion classes when few enough (small K and b), else the
+      // cell sweep; both name the same first collision.
+      if (K == 1) {
+        EXPECT_EQ(r.algorithm, "single-coupling-fixed-axis") << where;
+      } else {
+        EXPECT_TRUE(r.algorithm == "single-coupling" || r.algorithm == "single-coupling-motion-classes")
+            << where << ": " << r.algorithm;
+      }
       EXPECT_EQ(r.checked_at, ans.during) << where;
       EXPECT_EQ(r.simulated->a, run.collision->a) << where;
       EXPECT_EQ(r.simulated->b, run.collision->b) << where;
