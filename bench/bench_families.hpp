@@ -33,8 +33,14 @@
 // t = 1/2 (its top below 6) and rises past their tips after it: NO.
 // Both axes change order, no cut separates the teeth from the
 // stalactites (they meet along x while passing and along y after), and
-// the total motion is Theta(n^2): the case left to the cell sweep.
-// About 24 L nodes.
+// the total motion is Theta(n^2). About 24 L nodes. With own_speeds,
+// expansions (+x) also on the spine edges from even x carry each pair of
+// teeth at its own speed (k, k + 1, ..., about k + L / 2; the lid's row
+// is longer to match): still NO, with about L / 2 kinds of motion
+// among the teeth instead of 3. With hit, the middle stalactite
+// (x = L + floor(m / 2)) reaches down to y = 4, into the teeth's path:
+// YES: the last tooth (x = L - 1) reaches it first, at
+// t = floor(m / 2) / k (< 1/2).
 //
 // awning_comb: a comb that collides late while its x faces keep their
 // order. A spine of L nodes along y = 0 (L >= 3); even x carries a tooth of
@@ -188,13 +194,13 @@ inline Instance awning_comb(int64_t L, uint64_t seed) {
   return inst;
 }
 
-inline Instance stalactite_comb(int64_t L) {
+inline Instance stalactite_comb(int64_t L, bool own_speeds = false, bool hit = false) {
   if (L < 1) throw std::invalid_argument("stalactite_comb: L >= 1");
   InstanceBuilder b;
   auto must = [](std::optional<std::string> e) {
     if (e) throw std::runtime_error(*e);
   };
-  const int64_t m = L, k = 2 * (L + m) + 2, left = -2 * k - 1, right = L + k + 1;
+  const int64_t m = L, k = 2 * (L + m) + 2, left = -2 * k - 1, right = L + k + 1 + (own_speeds ? L / 2 + 1 : 0);
   std::vector<std::string> names;
   for (int64_t x = -2 * k; x < L; ++x) must(b.add_node({x, 0}));
   for (int64_t x = -2 * k; x + 1 < L; ++x) must(b.add_edge({x, 0}, {x + 1, 0}));
@@ -210,6 +216,10 @@ inline Instance stalactite_comb(int64_t L) {
         must(b.add_op(names.back(), OpKind::Expand, {x, y}, Dir::PosY));
       }
   }
+  for (int64_t x = 0; own_speeds && x + 1 < L; x += 2) {
+    names.push_back("p" + std::to_string(x));
+    must(b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX));
+  }
   for (int64_t y = 0; y <= 8; ++y) must(b.add_node({left, y}));
   for (int64_t y = 0; y < 8; ++y) must(b.add_edge({left, y}, {left, y + 1}));
   must(b.add_edge({left, 0}, {left + 1, 0}));
@@ -217,6 +227,11 @@ inline Instance stalactite_comb(int64_t L) {
   for (int64_t x = L; x < L + m; ++x) {
     must(b.add_node({x, 7})), must(b.add_node({x, 6}));
     must(b.add_edge({x, 8}, {x, 7})), must(b.add_edge({x, 7}, {x, 6}));
+  }
+  if (hit) {
+    const int64_t x = L + m / 2;
+    must(b.add_node({x, 5})), must(b.add_node({x, 4}));
+    must(b.add_edge({x, 6}, {x, 5})), must(b.add_edge({x, 5}, {x, 4}));
   }
   couple_consecutive(b, names, 0);
   Instance inst;

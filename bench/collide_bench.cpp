@@ -156,6 +156,7 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
     }
   if (how == 0 && algorithm == "single-coupling-motion-classes")
     if (const std::optional<MotionClassAnswer> c = single_coupling_motion_classes(inst, sim.tree(), sim.regions())) {
+      state.counters["sweeps"] = static_cast<double>(c->sweeps);
       state.counters["classes"] = static_cast<double>(c->classes);
       state.counters["class_pairs"] = static_cast<double>(c->class_pairs);
       state.counters["queries"] = static_cast<double>(c->queries);
@@ -202,6 +203,33 @@ void BM_LiddedCombSingleCoupling(benchmark::State& state) {
 // cell sweep it took before, 2 the simulation.
 void BM_StalactiteCombSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24));
+}
+
+// The stalactite comb with its middle stalactite reaching into the teeth's
+// path (bench_families.hpp, hit): YES at t = floor(L / 2) / k. Auto finds
+// a pair by motion classes and bisects for the first moment (range(1) =
+// 0); 5 is the cell sweep, 2 the simulation.
+void BM_StalactiteHitSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24, false, true));
+}
+
+// The stalactite comb whose pairs of teeth each move at their own speed
+// (bench_families.hpp, own_speeds): NO, about L / 2 kinds of motion among
+// the teeth (k of order n): Auto still takes motion classes (k r stays
+// below the motion), quadratic here; 5 is the cell sweep, 2 the
+// simulation, 6 forces motion classes whatever the cost.
+void BM_OwnSpeedStalactiteCombSingleCoupling(benchmark::State& state) {
+  const Instance inst = bench::stalactite_comb(state.range(0) / 24, true);
+  if (state.range(1) != 6) return single_coupling_bench(state, inst);
+  Simulator sim(inst);
+  std::optional<MotionClassAnswer> c;
+  for (auto _ : state) c = single_coupling_motion_classes(inst, sim.tree(), sim.regions(), nullptr, false, true);
+  if (!c) return state.SkipWithError("motion classes declined");
+  state.counters["n"] = static_cast<double>(inst.num_nodes());
+  state.counters["yes"] = c->answer.collides;
+  state.counters["classes"] = static_cast<double>(c->classes);
+  state.counters["class_pairs"] = static_cast<double>(c->class_pairs);
+  state.counters["queries"] = static_cast<double>(c->queries);
 }
 
 // The awning comb of about n nodes (bench_families.hpp): both axes, x
@@ -399,6 +427,11 @@ BENCHMARK(BM_StalactiteCombSingleCoupling)
     ->ArgsProduct({{1536, 6144, 24576, 98304}, {0}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StalactiteCombSingleCoupling)->ArgsProduct({{1536, 6144}, {2, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteHitSingleCoupling)->ArgsProduct({{1536, 6144, 24576, 98304}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteHitSingleCoupling)->ArgsProduct({{1536, 6144}, {2, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OwnSpeedStalactiteCombSingleCoupling)
+    ->ArgsProduct({{1536, 3072, 6144}, {0, 2, 5}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AwningCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096}, {2}})->Unit(benchmark::kMillisecond);
