@@ -555,10 +555,14 @@ std::array<int64_t, 6> class_key(const Faces& f) {
   return {f[0].b, f[1].b, f[2].b, f[3].b, f[1].a - f[0].a, f[3].a - f[2].a};
 }
 
-// Face speeds of a class group at most this (and T's denominator at most
-// 2^21, see below) keep every product in classes_meet within 128 bits.
-constexpr int64_t kMaxClassSpeed = int64_t{1} << 20;
-constexpr int64_t kMaxClassDen = int64_t{1} << 21;
+// Face speeds at most kMaxClassSpeed (so each s below at most 2^20) and
+// T's denominator at most kMaxClassDen keep the hull's corners below 2^61
+// and every product in classes_meet below 2^126. Starts then have
+// denominators of at most 2^20, so two distinct ones differ by more than
+// 2^-40: halving to denominator 2^40 separates them (the bisection's
+// O(log) rounds).
+constexpr int64_t kMaxClassSpeed = int64_t{1} << 19;
+constexpr int64_t kMaxClassDen = int64_t{1} << 40;
 
 struct Point {
   int64_t x, y;
@@ -657,7 +661,8 @@ std::optional<std::pair<uint32_t, uint32_t>> classes_meet(const std::vector<Face
 
 // The motion classes of `members` and their total motion (sum of 1 +
 // |speed_x| + |speed_y|); nullopt when some width is not positive all
-// along (0, 1) or some face speed exceeds kMaxClassSpeed. O(r log k).
+// along (0, 1), some width at 0 exceeds 2 or some face speed exceeds
+// kMaxClassSpeed. O(r log k).
 std::optional<std::vector<MotionClass>> motion_classes_of(const std::vector<Faces>& faces,
                                                           const std::vector<uint32_t>& members, uint64_t& motion) {
   std::map<std::array<int64_t, 6>, size_t> index;
@@ -665,6 +670,7 @@ std::optional<std::vector<MotionClass>> motion_classes_of(const std::vector<Face
   for (uint32_t r : members) {
     const Faces& f = faces[r];
     if (!width_positive(f, 0) || !width_positive(f, 1)) return std::nullopt;
+    if (f[1].a - f[0].a > 2 || f[3].a - f[2].a > 2) return std::nullopt;  // widths at 0 are 0 or 1 (bounds above)
     for (const Lin& l : f)
       if (l.b > kMaxClassSpeed || l.b < -kMaxClassSpeed) return std::nullopt;
     motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
@@ -691,6 +697,7 @@ struct FixedAxisSetup {
   std::vector<KeptGroup> groups;
   std::vector<std::vector<MotionClass>> class_groups;
   mutable uint64_t class_pairs = 0, queries = 0;  // asked of the class groups
+  const Deadline* deadline = nullptr;             // checked per class pair
 };
 
 // uncut (optional): the pieces that keep neither order and have no cut
@@ -772,6 +779,7 @@ bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& b
   for (const std::vector<MotionClass>& classes : setup.class_groups)
     for (size_t p = 0; p < classes.size(); ++p)
       for (size_t q = p; q < classes.size(); ++q) {
+        if (setup.deadline) setup.deadline->check();
         ++setup.class_pairs;
         const auto pair = classes_meet(setup.faces, classes[p], classes[q], T, setup.queries);
         if (!pair) continue;
@@ -858,10 +866,11 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
     if (!setup) return std::nullopt;
   }
   const std::vector<Faces>& faces = setup->faces;
-  if (!uncut.empty())  // every start then has a denominator of at most kMaxClassDen
+  if (!uncut.empty())  // every start then has a denominator of at most 2 kMaxClassSpeed
     for (uint32_t r : setup->live)
       for (const Lin& l : faces[r])
         if (l.b > kMaxClassSpeed || l.b < -kMaxClassSpeed) return std::nullopt;
+  setup->deadline = deadline;
   MotionClassAnswer out;
   out.groups = setup->groups.size() + uncut.size();
   out.class_groups = uncut.size();
@@ -878,9 +887,8 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
   Earliest best;
   ++out.sweeps;
   if (any_collides_before(*setup, Frac{1, 1}, best, out.tests)) {
-    // Starts have denominators up to twice a face speed, so at most
-    // kMaxClassDen: halving stops at 2^20, starts stay within bounds.
-    first_collision(*setup, best, out.tests, out.sweeps, deadline, kMaxClassSpeed);
+    // Halving to kMaxClassDen separates the starts (see kMaxClassSpeed).
+    first_collision(*setup, best, out.tests, out.sweeps, deadline, kMaxClassDen);
     out.answer = named(best);
   }
   out.class_pairs = setup->class_pairs;

@@ -187,12 +187,13 @@ struct MotionClassAnswer {
 // nullopt when the cuts nest deeper than single_coupling_fixed_axis
 // follows, when some region of a class group has a width that is not
 // positive all along (0, 1) (only when the coupling breaks a cycle), when
-// some face speed exceeds 2^20 (the exact arithmetic's bound), or,
+// some face speed exceeds 2^19 (the exact arithmetic's bound), or,
 // unless any_cost, when some class group's k r exceeds its motion (the
 // sum of 1 + |speed_x| + |speed_y| over its regions, the cell sweep's
 // cost): then the cell sweep is the cheaper method. whole (for tests):
 // no cuts and no kept-order sweeps, every live region in one class
-// group. Checks deadline (if given) per piece and per round.
+// group. Checks deadline (if given) per piece, per class pair and per
+// round.
 std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& inst, const SpanningTree& t,
                                                                 const Regions& regions,
                                                                 const Deadline* deadline = nullptr, bool whole = false,
@@ -202,8 +203,8 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
 // twin test: with every live region in one class group (every class pair
 // asked), some pair that overlaps at some t in (0, T), or none. nullopt
 // when the classes decline (a width not positive all along (0, 1), a face
-// speed above 2^20) or T is not in (0, 1] with a denominator of at most
-// 2^21. O(k r log r) for r regions in k classes.
+// speed above 2^19) or T is not in (0, 1] with a denominator of at most
+// 2^40. O(k r log r) for r regions in k classes.
 std::optional<std::optional<RegionPair>> single_coupling_classes_before(const Instance& inst, const SpanningTree& t,
                                                                         const Regions& regions, const Rational& T);
 

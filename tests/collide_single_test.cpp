@@ -260,6 +260,7 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.fixed_y, cases / 50);
   EXPECT_GT(tally.separated_no, cases / 300);
   EXPECT_GT(tally.separated_yes, cases / 100);
+  EXPECT_GT(tally.classes_no + tally.classes_yes, cases * 9 / 10);  // whole-set classes seldom decline
   EXPECT_GT(tally.classes_no, cases / 10);
   EXPECT_GT(tally.classes_yes, cases / 10);
   EXPECT_GT(tally.class_groups, cases / 100);
@@ -291,8 +292,8 @@ TEST(SingleCouplingMotionClasses, OverlapBeforeTAgreesWithEveryPair) {
     for (int64_t q = 1; q <= 7; ++q)  // every fraction of (0, 1] with a small denominator
       for (int64_t num = 1; num <= q; ++num)
         if (std::gcd(num, q) == 1) ts.emplace_back(num, q);
-    for (int k = 0; k < 4; ++k) {
-      const int64_t q = 1 + static_cast<int64_t>(rng.below(40));
+    for (int k = 0; k < 8; ++k) {  // random fractions, half with large denominators
+      const int64_t q = 1 + static_cast<int64_t>(rng.below(k < 4 ? 40 : uint64_t{1} << 30));
       ts.emplace_back(1 + static_cast<int64_t>(rng.below(static_cast<uint64_t>(q))), q);
     }
     const SingleCouplingAnswer swept = single_coupling_sweep(inst, sim.tree(), sim.regions());
@@ -555,7 +556,9 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
   // The middle stalactite reaching into the teeth's path: a YES found by
   // the classes, its first moment by bisection, named as the simulator
   // names it and as the cell sweep does.
-  for (int64_t L : {1, 2, 5, 16, 40}) {
+  // L = 200: speeds up to 802, so starts 1 / (4 * 802^2) apart, past
+  // what halving to 2^20 separates.
+  for (int64_t L : {1, 2, 5, 16, 40, 200}) {
     const Instance inst = bench::stalactite_comb(L, false, true);
     const std::string where = "stalactite comb with a hit, " + std::to_string(L);
     Simulator sim(inst);
@@ -563,11 +566,20 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
     ASSERT_TRUE(run.collision) << where;
     const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions());
     ASSERT_TRUE(mc) << where;
+    EXPECT_EQ(mc->class_groups, 1u) << where;
     expect_names_first(inst, mc->answer, *run.collision, where);
     if (::testing::Test::HasFatalFailure()) return;
-    const SingleCouplingAnswer swept = single_coupling_sweep(inst, sim.tree(), sim.regions());
-    ASSERT_TRUE(swept.first) << where;
-    EXPECT_EQ(*swept.first, *mc->answer.first) << where;
+    // The first moment floor(L / 2) / k: after 0 from L = 2 on, found by
+    // bisecting, in O(log) rounds.
+    if (L >= 2) {
+      EXPECT_GT(mc->sweeps, 1u) << where;
+      EXPECT_LE(mc->sweeps, 2u * 12u + 4u) << where;  // 2 log2(2 * 802) + 4
+    }
+    if (L <= 40) {
+      const SingleCouplingAnswer swept = single_coupling_sweep(inst, sim.tree(), sim.regions());
+      ASSERT_TRUE(swept.first) << where;
+      EXPECT_EQ(*swept.first, *mc->answer.first) << where;
+    }
     const CollideResult r = find_collision(inst, TimeModel::Continuous);
     EXPECT_EQ(r.algorithm, "single-coupling-motion-classes") << where;
     ASSERT_TRUE(r.simulated) << where;
@@ -585,7 +597,9 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
                                                                                false, true);
     ASSERT_TRUE(mc) << where;
     EXPECT_FALSE(mc->answer.collides) << where;
-    if (L >= 16) EXPECT_GT(mc->classes, static_cast<size_t>(L)) << where;
+    if (L >= 16) {
+      EXPECT_GT(mc->classes, static_cast<size_t>(L)) << where;
+    }
     EXPECT_FALSE(single_coupling_pairwise(inst, sim.tree(), sim.regions())) << where;
     EXPECT_FALSE(sim.run_order({0}).collision) << where;
   }
