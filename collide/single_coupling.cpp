@@ -79,9 +79,6 @@ Span overlap_span(const Faces& A, const Faces& B) {
   return s;
 }
 
-// The exact test: do A and B overlap with positive area at some t in (0, 1)?
-bool overlap(const Faces& A, const Faces& B) { return !overlap_span(A, B).empty(); }
-
 // The value of f at time q, floored / ceiled.
 int64_t floor_at(const Lin& f, const Frac& q) {
   const __int128 num = static_cast<__int128>(f.a) * q.den + static_cast<__int128>(f.b) * q.num;
@@ -547,10 +544,10 @@ constexpr int kMaxCutDepth = 64;
 // overlap at some t iff the difference of their low corners lies in one
 // open convex polygon that depends on P and Q alone.
 struct MotionClass {
-  std::array<int64_t, 6> key{};  // the speeds of xlo, xhi, ylo, yhi; the widths at 0
   std::vector<uint32_t> members;
 };
 
+// The speeds of xlo, xhi, ylo, yhi; the widths at 0.
 std::array<int64_t, 6> class_key(const Faces& f) {
   return {f[0].b, f[1].b, f[2].b, f[3].b, f[1].a - f[0].a, f[3].a - f[2].a};
 }
@@ -676,7 +673,7 @@ std::optional<std::vector<MotionClass>> motion_classes_of(const std::vector<Face
     motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
               static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
     const auto [it, fresh] = index.emplace(class_key(f), classes.size());
-    if (fresh) classes.emplace_back().key = it->first;
+    if (fresh) classes.emplace_back();
     classes[it->second].members.push_back(r);
   }
   return classes;
@@ -700,16 +697,23 @@ struct FixedAxisSetup {
   const Deadline* deadline = nullptr;             // checked per class pair
 };
 
+// The faces and the live regions (positive widths at some t), no groups
+// yet. O(n).
+FixedAxisSetup live_regions(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+  FixedAxisSetup out;
+  out.faces = region_faces(inst, t, regions);
+  for (uint32_t r = 0; r < out.faces.size(); ++r)
+    if (!alive(out.faces[r]).empty()) out.live.push_back(r);
+  return out;
+}
+
 // uncut (optional): the pieces that keep neither order and have no cut
 // are appended there instead of failing (the motion-class test's).
 std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const SpanningTree& t, const Regions& regions,
                                                const Deadline* deadline = nullptr,
                                                std::vector<std::vector<uint32_t>>* uncut = nullptr) {
-  FixedAxisSetup out;
-  out.faces = region_faces(inst, t, regions);
+  FixedAxisSetup out = live_regions(inst, t, regions);
   const std::vector<Faces>& faces = out.faces;
-  for (uint32_t r = 0; r < faces.size(); ++r)
-    if (!alive(faces[r]).empty()) out.live.push_back(r);
   // Pieces to place, with their depth of cuts.
   std::vector<std::pair<std::vector<uint32_t>, int>> todo;
   todo.emplace_back(out.live, 0);
@@ -856,10 +860,7 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
   std::vector<std::vector<uint32_t>> uncut;
   std::optional<FixedAxisSetup> setup;
   if (whole) {
-    setup.emplace();
-    setup->faces = region_faces(inst, t, regions);
-    for (uint32_t r = 0; r < setup->faces.size(); ++r)
-      if (!alive(setup->faces[r]).empty()) setup->live.push_back(r);
+    setup = live_regions(inst, t, regions);
     uncut.push_back(setup->live);
   } else {
     setup = fixed_axis_setup(inst, t, regions, deadline, &uncut);
@@ -899,10 +900,7 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
 std::optional<std::optional<RegionPair>> single_coupling_classes_before(const Instance& inst, const SpanningTree& t,
                                                                         const Regions& regions, const Rational& T) {
   if (T <= Rational(0) || T > Rational(1) || T.den() > kMaxClassDen) return std::nullopt;
-  FixedAxisSetup setup;
-  setup.faces = region_faces(inst, t, regions);
-  for (uint32_t r = 0; r < setup.faces.size(); ++r)
-    if (!alive(setup.faces[r]).empty()) setup.live.push_back(r);
+  FixedAxisSetup setup = live_regions(inst, t, regions);
   uint64_t motion = 0;
   std::optional<std::vector<MotionClass>> classes = motion_classes_of(setup.faces, setup.live, motion);
   if (!classes) return std::nullopt;
@@ -925,13 +923,10 @@ std::optional<RegionPair> single_coupling_pairwise_before(const Instance& inst, 
   return std::nullopt;
 }
 
+// An overlap span lies in (0, 1), so "before 1" is "at all".
 std::optional<RegionPair> single_coupling_pairwise(const Instance& inst, const SpanningTree& t,
                                                    const Regions& regions) {
-  const std::vector<Faces> faces = region_faces(inst, t, regions);
-  for (uint32_t a = 0; a < faces.size(); ++a)
-    for (uint32_t b = a + 1; b < faces.size(); ++b)
-      if (overlap(faces[a], faces[b])) return RegionPair{a, b};
-  return std::nullopt;
+  return single_coupling_pairwise_before(inst, t, regions, Rational(1));
 }
 
 }  // namespace gridlock
