@@ -118,7 +118,8 @@ void serpentine_bench(benchmark::State& state, SerpentineCouplings how, TimeMode
 // simulator running the one schedule (what Auto did before the sweep), 3
 // the sweep's all-pairs twin, 4 the sweep with every item in memory at
 // once (one band: its memory before the column bands), 5 the sweep as
-// Auto runs it (column bands), whatever the axes.
+// Auto runs it (column bands), whatever the axes, 6 motion classes
+// whatever their cost (after the cuts), 7 time slabs.
 // Counters: items (M) and tests (T) of the sweep, candidate pairs of the
 // simulator's broad phase.
 void single_coupling_bench(benchmark::State& state, const Instance& inst) {
@@ -140,6 +141,16 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
       yes = single_coupling_sweep(inst, sim.tree(), sim.regions(), &st, nullptr,
                                   how == 4 ? UINT64_MAX : kSingleCouplingBandItems)
                 .collides;
+    } else if (how == 6) {
+      const std::optional<MotionClassAnswer> c = single_coupling_motion_classes(inst, sim.tree(), sim.regions(),
+                                                                                nullptr, false, true);
+      if (!c) return state.SkipWithError("motion classes declined");
+      yes = c->answer.collides;
+      state.counters["classes"] = static_cast<double>(c->classes);
+    } else if (how == 7) {
+      const std::optional<TimeSlabAnswer> ts = single_coupling_time_slabs(inst, sim.tree(), sim.regions());
+      if (!ts) return state.SkipWithError("time slabs declined");
+      yes = ts->answer.collides;
     } else if (how == 2) {
       SimResult run = sim.run_order({0});
       yes = run.collision.has_value(), ss = run.stats;
@@ -161,6 +172,14 @@ void single_coupling_bench(benchmark::State& state, const Instance& inst) {
       state.counters["class_pairs"] = static_cast<double>(c->class_pairs);
       state.counters["queries"] = static_cast<double>(c->queries);
       state.counters["groups"] = static_cast<double>(c->groups);
+    }
+  if ((how == 0 && algorithm == "single-coupling-time-slabs") || how == 7)
+    if (const std::optional<TimeSlabAnswer> ts = single_coupling_time_slabs(inst, sim.tree(), sim.regions())) {
+      state.counters["sweeps"] = static_cast<double>(ts->sweeps), st.tests = ts->tests;
+      state.counters["groups"] = static_cast<double>(ts->groups);
+      state.counters["slabs"] = static_cast<double>(ts->slabs);
+      state.counters["finest"] = static_cast<double>(ts->finest);
+      state.counters["work"] = static_cast<double>(ts->work);
     }
   if (!algorithm.empty()) state.SetLabel(algorithm);
   state.counters["n"] = static_cast<double>(inst.num_nodes());
@@ -198,38 +217,29 @@ void BM_LiddedCombSingleCoupling(benchmark::State& state) {
 
 // The stalactite comb of about n nodes (bench_families.hpp): NO, total
 // motion Theta(n^2), both axes changing order and no cut between the
-// teeth and the stalactites they pass: Auto cuts off the rest, then
-// decides that piece by its six motion classes (range(1) = 0); 5 is the
-// cell sweep it took before, 2 the simulation.
+// teeth and the stalactites they pass over (0, 1): Auto cuts it over two
+// time slabs (range(1) = 0: apart along y before t = 1/2, along x
+// after); 6 is its six motion classes (Auto before the slabs), 5 the cell
+// sweep (Auto before the classes), 2 the simulation.
 void BM_StalactiteCombSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24));
 }
 
 // The stalactite comb with its middle stalactite reaching into the teeth's
 // path (bench_families.hpp, hit): YES at t = floor(L / 2) / k. Auto finds
-// a pair by motion classes and bisects for the first moment (range(1) =
-// 0); 5 is the cell sweep, 2 the simulation.
+// a pair in the time slabs' first half and bisects for the first moment
+// (range(1) = 0); 6 motion classes, 5 the cell sweep, 2 the simulation.
 void BM_StalactiteHitSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24, false, true));
 }
 
 // The stalactite comb whose pairs of teeth each move at their own speed
 // (bench_families.hpp, own_speeds): NO, about L / 2 kinds of motion among
-// the teeth (k of order n): Auto still takes motion classes (k r stays
-// below the motion), quadratic here; 5 is the cell sweep, 2 the
-// simulation, 6 forces motion classes whatever the cost.
+// the teeth (k of order n). Auto cuts it over two time slabs as the plain
+// comb (range(1) = 0); 6 is motion classes (Auto before the slabs,
+// quadratic here), 5 the cell sweep, 2 the simulation.
 void BM_OwnSpeedStalactiteCombSingleCoupling(benchmark::State& state) {
-  const Instance inst = bench::stalactite_comb(state.range(0) / 24, true);
-  if (state.range(1) != 6) return single_coupling_bench(state, inst);
-  Simulator sim(inst);
-  std::optional<MotionClassAnswer> c;
-  for (auto _ : state) c = single_coupling_motion_classes(inst, sim.tree(), sim.regions(), nullptr, false, true);
-  if (!c) return state.SkipWithError("motion classes declined");
-  state.counters["n"] = static_cast<double>(inst.num_nodes());
-  state.counters["yes"] = c->answer.collides;
-  state.counters["classes"] = static_cast<double>(c->classes);
-  state.counters["class_pairs"] = static_cast<double>(c->class_pairs);
-  state.counters["queries"] = static_cast<double>(c->queries);
+  single_coupling_bench(state, bench::stalactite_comb(state.range(0) / 24, true));
 }
 
 // The awning comb of about n nodes (bench_families.hpp): both axes, x
@@ -427,10 +437,15 @@ BENCHMARK(BM_StalactiteCombSingleCoupling)
     ->ArgsProduct({{1536, 6144, 24576, 98304}, {0}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StalactiteCombSingleCoupling)->ArgsProduct({{1536, 6144}, {2, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteCombSingleCoupling)->ArgsProduct({{1536, 6144, 24576}, {6, 7}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StalactiteHitSingleCoupling)->ArgsProduct({{1536, 6144, 24576, 98304}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StalactiteHitSingleCoupling)->ArgsProduct({{1536, 6144}, {2, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StalactiteHitSingleCoupling)->ArgsProduct({{1536, 6144, 24576}, {6}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OwnSpeedStalactiteCombSingleCoupling)
-    ->ArgsProduct({{1536, 3072, 6144}, {0, 2, 5}})
+    ->ArgsProduct({{1536, 6144, 24576, 98304}, {0}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OwnSpeedStalactiteCombSingleCoupling)
+    ->ArgsProduct({{1536, 3072, 6144}, {2, 5, 6, 7}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AwningCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpineCombSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}})->Unit(benchmark::kMillisecond);
@@ -439,9 +454,9 @@ BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099, 16387}, {0}})->Unit(
 BENCHMARK(BM_HookSingleCoupling)->ArgsProduct({{1027, 4099}, {2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096, 16384}, {0, 1, 2}, {0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096}, {0, 1, 2}, {1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_DiagonalHitSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiagonalHitSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiscreteAnswerSerpentine)
@@ -541,11 +556,16 @@ void register_large_one_axis() {
         ->Args({n, 0})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
-  for (int64_t n : {393216, 1572864})  // one piece no cut separates: motion classes
+  for (int64_t n : {393216, 1572864}) {  // one piece no cut separates over (0, 1): time slabs
     benchmark::RegisterBenchmark("BM_StalactiteCombSingleCoupling", BM_StalactiteCombSingleCoupling)
         ->Args({n, 0})
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_OwnSpeedStalactiteCombSingleCoupling", BM_OwnSpeedStalactiteCombSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
   benchmark::RegisterBenchmark("BM_StalactiteCombSingleCoupling", BM_StalactiteCombSingleCoupling)
       ->Args({24576, 5})  // the cell sweep, for the ratio
       ->Iterations(1)

@@ -296,6 +296,15 @@ CollideResult single_coupling_step(const Instance& inst, Simulator& sim, Collide
     name_fixed_axis(*fixed, res);
     res.stats.pair_tests = fixed->tests;
     answer = fixed->answer;
+  } else if (std::optional<TimeSlabAnswer> slabs = single_coupling_time_slabs(inst, sim.tree(), sim.regions(),
+                                                                              deadline)) {
+    res.algorithm = "single-coupling-time-slabs";
+    res.complexity = "O(W log n) (pieces no cut separates over (0, 1), cut over " + std::to_string(slabs->slabs) +
+                     " time slabs down to 2^-" + std::to_string(slabs->finest) + " into " +
+                     std::to_string(slabs->groups) + " groups, W = " + std::to_string(slabs->work) +
+                     " members placed; a YES bisects for its first moment)";
+    res.stats.pair_tests = slabs->tests;
+    answer = slabs->answer;
   } else if (std::optional<MotionClassAnswer> classes = single_coupling_motion_classes(inst, sim.tree(), sim.regions(),
                                                                                        deadline)) {
     res.algorithm = "single-coupling-motion-classes";
@@ -363,9 +372,9 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   // along an axis whose faces keep their order (O(n log n) for a NO; a
   // YES bisects for its first moment), else by the space-time cell sweep
   // (single_coupling.hpp); a piece that keeps neither order and has no
-  // cut is decided by motion classes when they cost no more than the
-  // motion. All YES name the first collision, checked at one moment; a
-  // YES of the cell sweep's packing bound names none and is simulated.
+  // cut is split into time slabs, over which it may have cuts, else
+  // decided by motion classes when they cost no more than the motion. All YES name the first collision, checked at one
+  // moment; a YES of the cell sweep's packing bound names none and is simulated.
   if (method == CollideMethod::Auto && nq == 1) return single_coupling_step(inst, sim, res, deadline, progress);
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).

@@ -804,8 +804,10 @@ bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& b
 // Distinct starts differ by more than the interval once it is short
 // enough, so the rounds end; O(log) rounds for bounded speeds. The
 // halving stops at denominator max_den (then starts alone shrink c).
+// name_smallest false (time slabs, whose faces are scaled): best keeps the
+// first moment and a pair starting then, not necessarily the smallest.
 void first_collision(const FixedAxisSetup& setup, Earliest& best, uint64_t& tests, uint64_t& sweeps,
-                     const Deadline* deadline, int64_t max_den) {
+                     const Deadline* deadline, int64_t max_den, bool name_smallest = true) {
   int64_t lo = 0, hi = 1, den = 1;
   for (;;) {
     if (deadline) deadline->check();
@@ -822,7 +824,129 @@ void first_collision(const FixedAxisSetup& setup, Earliest& best, uint64_t& test
       else lo = mid.num;
     }
   }
-  smallest_first_pair(setup.faces, setup.live, best);
+  if (name_smallest) smallest_first_pair(setup.faces, setup.live, best);
+}
+
+// Time slabs: a piece that keeps neither order over (0, 1) and has no cut
+// may have cuts over parts of it (the stalactite combs: teeth and
+// stalactites apart along y before t = 1/2, along x after). A dyadic
+// slab [num / 2^exp, (num + 1) / 2^exp] of [0, 1].
+struct Slab {
+  int64_t num = 0;
+  int exp = 0;
+};
+
+// Slabs are split no finer than 2^-kMaxSlabExp, and the pieces placed
+// (their members summed over every slab) stay within the smaller of
+// kSlabWork per live region and a quarter of the motion (the cell
+// sweep's items; placing a member costs a few times an item, measured)
+// plus kSlabFloor (on small instances either is fast): past either, the
+// time slabs give up and the cell sweep is the faster. A piece of at most kSmallPiece members
+// that has no cut and keeps neither order is not split: every pair of it
+// is tested over its slab.
+constexpr int kMaxSlabExp = 12;
+constexpr uint64_t kSlabWork = 32;
+constexpr size_t kSmallPiece = 8;
+constexpr uint64_t kSlabFloor = 1024;
+// Positions and speeds within 2^40 keep a slab's faces below 2^53, and
+// the sweeps' products (times denominators up to 2^61) within __int128.
+constexpr int64_t kMaxSlabValue = int64_t{1} << 40;
+
+// f over the slab, time rescaled to s in [0, 1] (t = (num + s) / 2^exp)
+// and space scaled by 2^exp: 2^exp f(t) = (2^exp a + num b) + b s. Two
+// regions overlap (open, positive area) at t iff their scaled boxes do at
+// the matching s, so every test below applies to the slab unchanged.
+Faces in_slab(const Faces& f, const Slab& sl) {
+  Faces g;
+  for (size_t i = 0; i < 4; ++i) g[i] = Lin{f[i].a * (int64_t{1} << sl.exp) + f[i].b * sl.num, f[i].b};
+  return g;
+}
+
+// A group over one slab: the global ids of its members, and a setup of
+// their faces over the slab with one kept-order group (local ids: index
+// into members), or none: a small piece, every pair tested.
+struct SlabGroup {
+  Slab slab;
+  std::vector<uint32_t> members;
+  FixedAxisSetup setup;
+};
+
+// Places `live` into kept-order groups over slabs: a piece is cut as
+// fixed_axis_setup cuts it, over its slab; one that keeps neither order
+// and has no cut there is split into the two halves of its slab. Regions
+// not alive in a slab leave it, and a piece of one region is done; a
+// small one is a group of every pair. Every pair of live regions that
+// overlaps at some t then lies, at every such t but the slabs' ends, in
+// one group of the slab holding t (pairs across a cut never overlap in
+// its slab). nullopt past kMaxSlabExp or the work budget (work: members
+// placed). Checks deadline (if given) per piece.
+std::optional<std::vector<SlabGroup>> slab_groups(const std::vector<Faces>& faces, const std::vector<uint32_t>& live,
+                                                  int first_exp, uint64_t budget, const Deadline* deadline,
+                                                  uint64_t& work) {
+  struct Piece {
+    std::vector<uint32_t> members;
+    Slab slab;
+    int depth = 0;  // cuts
+  };
+  std::vector<Piece> todo;
+  for (int64_t num = (int64_t{1} << first_exp) - 1; num >= 0; --num) todo.push_back({live, Slab{num, first_exp}, 0});
+  std::vector<SlabGroup> out;
+  while (!todo.empty()) {
+    if (deadline) deadline->check();
+    Piece p = std::move(todo.back());
+    todo.pop_back();
+    work += p.members.size();
+    if (work > budget) return std::nullopt;
+    std::vector<uint32_t> members;
+    std::vector<Faces> local;
+    for (uint32_t r : p.members) {
+      const Faces g = in_slab(faces[r], p.slab);
+      if (alive(g).empty()) continue;
+      members.push_back(r);
+      local.push_back(g);
+    }
+    if (members.size() < 2) continue;
+    std::vector<uint32_t> ids(members.size());
+    for (uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
+    if (std::optional<KeptGroup> g = kept_group(local, ids)) {
+      SlabGroup sg;
+      sg.slab = p.slab;
+      sg.members = std::move(members);
+      sg.setup.faces = std::move(local);
+      sg.setup.live = std::move(ids);
+      sg.setup.groups.push_back(std::move(*g));
+      out.push_back(std::move(sg));
+      continue;
+    }
+    bool cut = false;
+    for (size_t axis : {size_t{0}, size_t{1}}) {
+      if (p.depth >= kMaxCutDepth) break;
+      const std::vector<std::vector<uint32_t>> pieces = separated_pieces(local, ids, axis);
+      if (pieces.size() == 1) continue;
+      for (const std::vector<uint32_t>& q : pieces) {
+        Piece next{{}, p.slab, p.depth + 1};
+        next.members.reserve(q.size());
+        for (uint32_t i : q) next.members.push_back(members[i]);
+        todo.push_back(std::move(next));
+      }
+      cut = true;
+      break;
+    }
+    if (cut) continue;
+    if (members.size() <= kSmallPiece) {
+      SlabGroup sg;
+      sg.slab = p.slab;
+      sg.members = std::move(members);
+      sg.setup.faces = std::move(local);
+      sg.setup.live = std::move(ids);
+      out.push_back(std::move(sg));
+      continue;
+    }
+    if (p.slab.exp >= kMaxSlabExp) return std::nullopt;
+    todo.push_back({members, Slab{2 * p.slab.num + 1, p.slab.exp + 1}, p.depth});
+    todo.push_back({std::move(members), Slab{2 * p.slab.num, p.slab.exp + 1}, p.depth});
+  }
+  return out;
 }
 
 }  // namespace
@@ -894,6 +1018,72 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
   }
   out.class_pairs = setup->class_pairs;
   out.queries = setup->queries;
+  return out;
+}
+
+std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, const SpanningTree& t,
+                                                         const Regions& regions, const Deadline* deadline,
+                                                         int first_exp, bool any_cost) {
+  if (first_exp < 0 || first_exp > kMaxSlabExp) return std::nullopt;
+  const FixedAxisSetup whole = live_regions(inst, t, regions);
+  for (uint32_t r : whole.live)
+    for (const Lin& l : whole.faces[r])
+      if (l.a > kMaxSlabValue || l.a < -kMaxSlabValue || l.b > kMaxSlabValue || l.b < -kMaxSlabValue)
+        return std::nullopt;
+  uint64_t motion = 0;
+  for (uint32_t r : whole.live) {
+    const Faces& f = whole.faces[r];
+    motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
+              static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
+  }
+  TimeSlabAnswer out;
+  const uint64_t budget = any_cost ? UINT64_MAX
+                                   : std::min<uint64_t>(kSlabWork * (whole.live.size() + 1), motion / 4 + kSlabFloor)
+                                         << first_exp;
+  std::optional<std::vector<SlabGroup>> groups = slab_groups(whole.faces, whole.live, first_exp, budget, deadline,
+                                                             out.work);
+  if (!groups) return std::nullopt;
+  // In the order of their slabs' starts.
+  auto start = [](const Slab& sl) { return sl.num << (kMaxSlabExp - sl.exp); };
+  std::stable_sort(groups->begin(), groups->end(), [&](const SlabGroup& a, const SlabGroup& b) {
+    return start(a.slab) != start(b.slab) ? start(a.slab) < start(b.slab) : a.slab.exp < b.slab.exp;
+  });
+  out.groups = groups->size();
+  for (size_t i = 0; i < groups->size(); ++i) {
+    const Slab& sl = (*groups)[i].slab;
+    out.finest = std::max(out.finest, sl.exp);
+    if (i == 0 || sl.num != (*groups)[i - 1].slab.num || sl.exp != (*groups)[i - 1].slab.exp) ++out.slabs;
+  }
+  // The first moment t* lies in (or at the start of) a slab S in which
+  // the first pair overlaps just after t*, so in one group of S; that
+  // group's first moment, mapped back, is t* (no pair starts earlier).
+  // Groups of slabs starting at or after the earliest start found can
+  // only tie it: the smallest pair at t* is named from every live region.
+  Earliest best;
+  for (SlabGroup& g : *groups) {
+    if (best.found && !less(Frac{g.slab.num, int64_t{1} << g.slab.exp}, best.span.lo)) break;
+    if (g.setup.groups.empty()) {  // a small piece: every pair, over the slab (its overlaps are global ones)
+      for (uint32_t i = 0; i < g.members.size(); ++i)
+        for (uint32_t j = i + 1; j < g.members.size(); ++j) {
+          ++out.tests;
+          if (overlap_span(g.setup.faces[i], g.setup.faces[j]).empty()) continue;
+          const uint32_t a = g.members[i], b = g.members[j];
+          best.keep(a, b, overlap_span(whole.faces[a], whole.faces[b]));
+        }
+      continue;
+    }
+    g.setup.deadline = deadline;
+    Earliest local;
+    ++out.sweeps;
+    if (!any_collides_before(g.setup, Frac{1, 1}, local, out.tests)) continue;
+    first_collision(g.setup, local, out.tests, out.sweeps, deadline, int64_t{1} << 60, false);
+    const uint32_t a = g.members[local.pair.a], b = g.members[local.pair.b];
+    best.keep(a, b, overlap_span(whole.faces[a], whole.faces[b]));
+  }
+  if (best.found) {
+    smallest_first_pair(whole.faces, whole.live, best);
+    out.answer = named(best);
+  }
   return out;
 }
 

@@ -199,6 +199,45 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
                                                                 const Deadline* deadline = nullptr, bool whole = false,
                                                                 bool any_cost = false);
 
+// Time slabs: a piece that keeps neither order and has no cut over
+// (0, 1) may have cuts over parts of it (on the stalactite combs, teeth
+// and stalactites lie apart along y before t = 1/2 and along x after).
+// Motion is linear, so the cuts and kept-order sweeps apply to any time
+// interval with the faces' values at its ends: such a piece is split into
+// the two halves of its slab (dyadic, down to 2^-12) and each half cut
+// and swept on its own (docs/collide.md, "One coupling: time slabs", the
+// proof). A NO costs O(W log r), W the members placed over every slab
+// (at most 32 r, and at most a quarter of the motion plus 1024, else
+// nullopt); a YES asks the groups in the order of
+// their slabs, bisects the first group that meets for its first moment
+// as single_coupling_fixed_axis does, and names the simulator's first
+// collision.
+struct TimeSlabAnswer {
+  // collides; on a YES pair, first and during, as single_coupling_sweep
+  // and the simulator name them.
+  SingleCouplingAnswer answer;
+  size_t groups = 0;    // kept-order groups over every slab
+  size_t slabs = 0;     // distinct slabs holding a group
+  int finest = 0;       // the finest slab holding a group is 2^-finest long
+  uint64_t work = 0;    // W: members of the pieces placed, summed over slabs
+  uint64_t sweeps = 0;  // group sweeps, rounds of the bisection included
+  uint64_t tests = 0;   // exact pair tests
+};
+
+// nullopt when a piece of more than 8 regions has no cut and keeps
+// neither order in a slab of 2^-12 (a piece of at most 8 is a group of
+// every pair), when the work exceeds the smaller of 32 r and a quarter
+// of the motion plus 1024 (the motion is the cell sweep's cost: it is
+// then the faster), when the cuts nest deeper than 64, or when
+// some face's position or speed exceeds 2^40 (the exact arithmetic's
+// bound). For tests: first_exp (0 to 12) starts from the 2^first_exp
+// slabs of that length instead of [0, 1] (the budget times as much);
+// any_cost drops the work budget (the depth's bound stays). Checks
+// deadline (if given) per piece and round.
+std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, const SpanningTree& t,
+                                                         const Regions& regions, const Deadline* deadline = nullptr,
+                                                         int first_exp = 0, bool any_cost = false);
+
 // The question each round of the classes' bisection asks, exposed for its
 // twin test: with every live region in one class group (every class pair
 // asked), some pair that overlaps at some t in (0, T), or none. nullopt

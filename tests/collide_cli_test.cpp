@@ -163,33 +163,35 @@ TEST(CollideCommand, FixedAxisYesNamesTheFirstCollision) {
 
 // One coupling whose faces change order on both axes: the space-time cell
 // sweep names the first collision (the diagonal sweep with its post,
-// K = 2, b = 3: collide/adversarial.hpp; first at t = 1 - 1/K).
+// K = 16, b = 3: collide/adversarial.hpp; first at t = 1 - 1/K; time
+// slabs decline it).
 TEST(CollideCommand, SweepYesNamesTheFirstCollision) {
   std::ostringstream grid;
-  write_instance(grid, diagonal_sweep_instance(4, 3, true));
-  expect_named_first_collision(grid.str(), "single-coupling", "3/4", "node (10,11) and node (14,15)", "7/8");
+  write_instance(grid, diagonal_sweep_instance(16, 3, true));
+  expect_named_first_collision(grid.str(), "single-coupling", "15/16", "node (34,35) and node (50,51)", "31/32");
 }
 
-// The stalactite comb's NO by motion classes, through the command line:
-// its certificate (the every-pair kind) is written and certify accepts it.
-TEST(CollideCommand, MotionClassesNoHasACertificate) {
+// Time slabs name it too: the stalactite comb of 3 with its middle
+// stalactite reaching into the teeth's path (bench_families.hpp), cut over
+// the halves of [0, 1]; first at floor(3 / 2) / k = 1/14.
+TEST(CollideCommand, TimeSlabsYesNamesTheFirstCollision) {
+  std::ostringstream grid;
+  write_instance(grid, bench::stalactite_comb(3, false, true));
+  expect_named_first_collision(grid.str(), "single-coupling-time-slabs", "1/14", "node (2,3) and node (4,4)", "1/7");
+}
+
+// The stalactite comb's NO by time slabs, through the command line: its
+// certificate (the every-pair kind) is written and certify accepts it.
+TEST(CollideCommand, TimeSlabsNoHasACertificate) {
   const std::string dir = test::temp_dir();
   std::ostringstream grid;
   write_instance(grid, bench::stalactite_comb(3));
   test::write_file(dir + "/s.grid", grid.str());
   auto r = run_gridlock({"collide", dir + "/s.grid", "--certificate", dir + "/s.cert"});
   ASSERT_EQ(r.exit_code, 20) << r.out << r.err;
-  EXPECT_NE(r.out.find("c algorithm: single-coupling-motion-classes ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("c algorithm: single-coupling-time-slabs ("), std::string::npos) << r.out;
   auto c = run_gridlock({"certify", dir + "/s.grid", dir + "/s.cert"});
   EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
-}
-
-// The smallest one has two motion classes in its uncut piece: they find
-// the pair, and the bisection its first moment, as the simulator names it.
-TEST(CollideCommand, MotionClassesYesNamesTheFirstCollision) {
-  std::ostringstream grid;
-  write_instance(grid, diagonal_sweep_instance(2, 3, true));
-  expect_named_first_collision(grid.str(), "single-coupling-motion-classes", "1/2", "node (6,7) and node (8,9)", "3/4");
 }
 
 // --certificate C on an answer without one: C is left as it was (a file

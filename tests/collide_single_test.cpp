@@ -9,6 +9,7 @@
 
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,6 +56,10 @@ struct Tally {
   int classes_no = 0, classes_yes = 0;           // decided by motion classes, the whole set one class group
   int class_groups = 0;                          // with the cuts: some piece left to motion classes
   uint64_t classes_rounds = 0;                   // rounds of the classes' YES (bisecting for the first moment)
+  int slabs_no = 0, slabs_yes = 0;               // decided by time slabs
+  int slabs_split = 0;                           // of those, with some piece split in time
+  int slabs8_no = 0, slabs8_yes = 0;             // decided by time slabs started from 8 slabs
+  int slabs_named = 0;                           // their YES reported by find_collision, named as the simulator does
   uint64_t max_active = 0;
 };
 
@@ -144,6 +149,34 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     if (whole) (sweep ? tally.classes_yes : tally.classes_no)++;
     if (!whole) tally.class_groups += mc->class_groups > 0;
   }
+  // Time slabs: the same verdict; a YES names the cell sweep's first
+  // collision (pair and moment).
+  // Whatever their cost (Auto's budget declines most small instances,
+  // whose motion is small), and also started from 4 and 8 slabs, so that
+  // every instance is cut over slabs (the rescaled faces, the slabs'
+  // order, the first moment mapped back); -1: with Auto's budget.
+  const std::optional<TimeSlabAnswer> slabs = single_coupling_time_slabs(inst, sim.tree(), sim.regions());
+  for (int first_exp : {-1, 0, 2, 3}) {
+    const std::optional<TimeSlabAnswer> ts = first_exp < 0 ? slabs
+                                                           : single_coupling_time_slabs(inst, sim.tree(), sim.regions(),
+                                                                                        nullptr, first_exp, true);
+    if (!ts) continue;
+    const std::string how = where + (first_exp < 0 ? std::string(", time slabs (Auto's budget)")
+                                                   : ", time slabs from 2^" + std::to_string(first_exp));
+    ASSERT_EQ(ts->answer.collides, sweep) << how;
+    if (sweep) {
+      expect_overlaps_during(inst, ts->answer, how);
+      if (::testing::Test::HasFatalFailure()) return;
+      if (ans.pair) {
+        ASSERT_EQ(*ts->answer.first, *ans.first) << how;
+        ASSERT_EQ(ts->answer.pair->a, ans.pair->a) << how;
+        ASSERT_EQ(ts->answer.pair->b, ans.pair->b) << how;
+      }
+    }
+    if (first_exp == 0) (sweep ? tally.slabs_yes : tally.slabs_no)++;
+    if (first_exp == 0) tally.slabs_split += ts->finest > 0;
+    if (first_exp == 3) (sweep ? tally.slabs8_yes : tally.slabs8_no)++;
+  }
   tally.max_active = std::max<uint64_t>(tally.max_active, st.max_active);
   // Bounded memory: sweeping in column bands of a few items gives the
   // same answer, pair included, with the same items and tests.
@@ -200,6 +233,14 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
           ASSERT_EQ(r.simulated->b, run.collision->b) << where;
           ++tally.fixed_named;
         }
+        if (r.algorithm == "single-coupling-time-slabs") {
+          ASSERT_TRUE(slabs) << where;
+          expect_names_first(inst, slabs->answer, *run.collision, where + ", time slabs");
+          if (::testing::Test::HasFatalFailure()) return;
+          ASSERT_EQ(r.checked_at, slabs->answer.during) << where;
+          ASSERT_EQ(r.simulated->time, run.collision->time) << where;
+          ++tally.slabs_named;
+        }
         if (r.algorithm == "single-coupling") {
           ASSERT_EQ(r.checked_at, ans.during) << where;
           ASSERT_EQ(r.simulated->time, run.collision->time) << where;
@@ -247,7 +288,10 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
             << tally.separated_no << " NOs and " << tally.separated_yes
             << " YES in several separated groups; motion classes on the whole set: " << tally.classes_no << " NOs and "
             << tally.classes_yes << " YES (" << tally.classes_rounds << " rounds), " << tally.class_groups
-            << " instances with a piece left to them after the cuts)\n";
+            << " instances with a piece left to them after the cuts; time slabs: " << tally.slabs_no << " NOs and "
+            << tally.slabs_yes << " YES, " << tally.slabs_split << " of them split in time, " << tally.slabs_named
+            << " YES named through find_collision; started from 8 slabs: " << tally.slabs8_no << " NOs and "
+            << tally.slabs8_yes << " YES)\n";
   // Both answers occur often, or the comparison proves little.
   EXPECT_GT(tally.yes, cases / 10);
   EXPECT_GT(tally.multi_band, cases);  // most instances take several bands at band sizes 1, 3, 17
@@ -264,6 +308,96 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.classes_no, cases / 10);
   EXPECT_GT(tally.classes_yes, cases / 10);
   EXPECT_GT(tally.class_groups, cases / 100);
+  EXPECT_GT(tally.slabs_split, cases / 200);
+  EXPECT_GT(tally.slabs_named, 0);
+  EXPECT_GT(tally.slabs8_no, cases / 2);
+  EXPECT_GT(tally.slabs8_yes, cases / 5);
+}
+
+// A random stalactite comb (the family of bench_families.hpp with its
+// parts drawn at random), small enough for every twin: L teeth of random
+// heights 1 .. 4 on a spine along y = 0, carried right by k expansions
+// (+x) on a tail, some teeth rising (+y expansions on their nodes y = 1
+// and 3), some spine edges from even x expanding too (pairs of teeth at
+// their own speeds); a static lid (a column left of the tail, a row at
+// y = 8) with stalactites hanging to random depths (y = 4 .. 7) at random
+// columns, clear of the teeth at t = 0. Teeth pass under the
+// stalactites, rise, or hit them: both answers, first moments anywhere
+// in (0, 1), and pieces that no cut separates over (0, 1).
+Instance random_stalactite_comb(uint64_t seed) {
+  Rng rng(seed);
+  InstanceBuilder b;
+  auto must = [](std::optional<std::string> e) {
+    if (e) throw std::runtime_error(*e);
+  };
+  const auto L = static_cast<int64_t>(1 + rng.below(16)), k = static_cast<int64_t>(1 + rng.below(24));
+  const int64_t left = -2 * k - 1, right = 2 * L + k + 4;
+  std::vector<std::string> names;
+  for (int64_t x = -2 * k; x < L; ++x) must(b.add_node({x, 0}));
+  for (int64_t x = -2 * k; x + 1 < L; ++x) must(b.add_edge({x, 0}, {x + 1, 0}));
+  for (int64_t i = 0; i < k; ++i) {
+    names.push_back("s" + std::to_string(i));
+    must(b.add_op(names.back(), OpKind::Expand, {-2 * k + 2 * i, 0}, Dir::PosX));
+  }
+  std::vector<int64_t> top(static_cast<size_t>(L));
+  for (int64_t x = 0; x < L; ++x) {
+    const auto h = static_cast<int64_t>(1 + rng.below(4));
+    top[static_cast<size_t>(x)] = h;
+    for (int64_t y = 1; y <= h; ++y) must(b.add_node({x, y})), must(b.add_edge({x, y - 1}, {x, y}));
+    for (int64_t y : {1, 3})
+      if (y < h && rng.below(2) == 0) {
+        names.push_back("t" + std::to_string(x) + "_" + std::to_string(y));
+        must(b.add_op(names.back(), OpKind::Expand, {x, y}, Dir::PosY));
+      }
+    if (x % 2 == 0 && x + 1 < L && rng.below(3) == 0) {
+      names.push_back("p" + std::to_string(x));
+      must(b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX));
+    }
+  }
+  for (int64_t y = 0; y <= 8; ++y) must(b.add_node({left, y}));
+  for (int64_t y = 0; y < 8; ++y) must(b.add_edge({left, y}, {left, y + 1}));
+  must(b.add_edge({left, 0}, {left + 1, 0}));
+  for (int64_t x = left + 1; x <= right; ++x) must(b.add_node({x, 8})), must(b.add_edge({x - 1, 8}, {x, 8}));
+  const auto stalactites = static_cast<int64_t>(1 + rng.below(static_cast<uint64_t>(L + 2)));
+  for (int64_t i = 0; i < stalactites; ++i) {
+    const auto x = static_cast<int64_t>(rng.below(static_cast<uint64_t>(2 * L + k + 3)));
+    int64_t bottom = 4 + static_cast<int64_t>(rng.below(4));
+    if (x < L) bottom = std::max(bottom, top[static_cast<size_t>(x)] + 1);
+    if (bottom > 7 || b.add_node({x, 7})) continue;  // taken already: one stalactite per column
+    must(b.add_edge({x, 8}, {x, 7}));
+    for (int64_t y = 6; y >= bottom; --y) must(b.add_node({x, y})), must(b.add_edge({x, y + 1}, {x, y}));
+  }
+  bench::couple_consecutive(b, names, 0);
+  Instance inst;
+  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
+  return inst;
+}
+
+// Time slabs on random stalactite combs: the same twins as on the random
+// instances (the cell sweep, every pair, the simulator, the brute
+// reference on the tiny ones), where most pieces must be split in time.
+TEST(SingleCouplingTimeSlabs, AgreesWithTwinsOnRandomStalactiteCombs) {
+  const uint64_t seed0 = test::base_seed(29000);
+  const int cases = test::scaled(1500);
+  Tally tally;
+  for (int i = 0; i < cases; ++i) {
+    const uint64_t seed = seed0 + static_cast<uint64_t>(i);
+    const Instance inst = random_stalactite_comb(seed);
+    const std::string where = "random stalactite comb, seed " + std::to_string(seed) +
+                              "; replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
+    check_instance(inst, where, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::cout << "[ info ] " << tally.cases << " random stalactite combs (" << tally.yes << " node collisions, "
+            << tally.no << " none; " << tally.first_named
+            << " first collisions equal to the simulator's); time slabs: " << tally.slabs_no << " NOs and "
+            << tally.slabs_yes << " YES, " << tally.slabs_split << " split in time, " << tally.slabs_named
+            << " YES named through find_collision; from 8 slabs: " << tally.slabs8_no << " NOs and " << tally.slabs8_yes
+            << " YES\n";
+  EXPECT_GT(tally.yes, cases / 10);
+  EXPECT_GT(tally.no, cases / 10);
+  EXPECT_GT(tally.slabs_split, cases / 5);
+  EXPECT_GT(tally.slabs_named, cases / 20);
 }
 
 // The question the classes' bisection asks, "some overlap before T?", on
@@ -467,8 +601,9 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
 // and the mixed comb keeps the order of its x faces (the spine pushes the
 // teeth apart; the teeth's y faces pass each other): Auto answers their
 // NO by one sweep along the kept axis; the cell sweep and the simulator
-// agree. The diagonal sweep's orders change on both axes: Auto keeps the
-// cell sweep there.
+// agree. The diagonal sweep's orders change on both axes: no cut over
+// (0, 1), so the fixed-axis sweep gives up; time slabs would place more
+// regions than its motion (the cell sweep's cost), so Auto sweeps cells.
 TEST(SingleCouplingSweep, KeptOrderIsDecidedByOneSweep) {
   std::vector<std::pair<std::string, Instance>> cases;
   for (int64_t n : {64, 256, 1024})
@@ -530,20 +665,29 @@ TEST(SingleCouplingSweep, LiddedCombIsCutIntoSeparatedGroups) {
 
 // The stalactite comb (bench/bench_families.hpp): the teeth pass under
 // the stalactites, then rise past their tips. Both axes change order and
-// no cut separates teeth from stalactites, so the fixed-axis sweep gives
-// up; that piece has six motion classes (the stalactites, teeth rising by
-// 0, 1 and 2, the two inserted regions' kinds), which decide the NO. The
-// cell sweep, all pairs and the simulator agree.
-TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
+// no cut separates teeth from stalactites over (0, 1), so the fixed-axis
+// sweep gives up. Over [0, 1/2] they lie apart along y, over [1/2, 1]
+// along x: two time slabs, each cut (Auto). That piece also has six motion
+// classes (the stalactites, teeth rising by 0, 1 and 2, the two inserted
+// regions' kinds), which decide the same NO. The cell sweep, all pairs
+// and the simulator agree.
+TEST(SingleCouplingSweep, StalactiteCombIsDecidedByTimeSlabsAndMotionClasses) {
   for (int64_t L : {1, 2, 5, 16, 40}) {
     const Instance inst = bench::stalactite_comb(L);
     const std::string where = "stalactite comb of " + std::to_string(L);
     ASSERT_EQ(inst.couplings().size(), 1u) << where;
     const CollideResult r = find_collision(inst, TimeModel::Continuous);
     EXPECT_FALSE(r.collides) << where;
-    EXPECT_EQ(r.algorithm, "single-coupling-motion-classes") << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-time-slabs") << where;
     Simulator sim(inst);
     EXPECT_FALSE(single_coupling_fixed_axis(inst, sim.tree(), sim.regions())) << where;
+    const std::optional<TimeSlabAnswer> ts = single_coupling_time_slabs(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(ts) << where;
+    EXPECT_FALSE(ts->answer.collides) << where;
+    if (L >= 5) {
+      EXPECT_EQ(ts->finest, 1) << where;  // the halves of [0, 1] (smaller: a piece of at most 8, every pair)
+    }
+    EXPECT_LE(ts->work, 8 * sim.regions().size()) << where;  // [0, 1], its halves and their cuts
     const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions());
     ASSERT_TRUE(mc) << where;
     EXPECT_FALSE(mc->answer.collides) << where;
@@ -580,19 +724,36 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByMotionClasses) {
       ASSERT_TRUE(swept.first) << where;
       EXPECT_EQ(*swept.first, *mc->answer.first) << where;
     }
+    const std::optional<TimeSlabAnswer> ts = single_coupling_time_slabs(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(ts) << where;
+    expect_names_first(inst, ts->answer, *run.collision, where + ", time slabs");
+    if (::testing::Test::HasFatalFailure()) return;
+    if (L >= 5) {
+      EXPECT_EQ(ts->finest, 1) << where;
+    }
     const CollideResult r = find_collision(inst, TimeModel::Continuous);
-    EXPECT_EQ(r.algorithm, "single-coupling-motion-classes") << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-time-slabs") << where;
     ASSERT_TRUE(r.simulated) << where;
     EXPECT_EQ(r.simulated->time, run.collision->time) << where;
-    EXPECT_EQ(r.checked_at, mc->answer.during) << where;
+    EXPECT_EQ(r.checked_at, ts->answer.during) << where;
   }
-  // Each pair of teeth at its own speed: many classes, the same NO.
+  // Each pair of teeth at its own speed: many classes, the same NO, and
+  // the same two time slabs (Auto).
   for (int64_t L : {1, 2, 5, 16, 40}) {
     const Instance inst = bench::stalactite_comb(L, true);
     const std::string where = "own-speed stalactite comb of " + std::to_string(L);
     ASSERT_EQ(inst.couplings().size(), 1u) << where;
-    EXPECT_FALSE(find_collision(inst, TimeModel::Continuous).collides) << where;
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_FALSE(r.collides) << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-time-slabs") << where;
     Simulator sim(inst);
+    const std::optional<TimeSlabAnswer> ts = single_coupling_time_slabs(inst, sim.tree(), sim.regions());
+    ASSERT_TRUE(ts) << where;
+    EXPECT_FALSE(ts->answer.collides) << where;
+    if (L >= 5) {
+      EXPECT_EQ(ts->finest, 1) << where;
+    }
+    EXPECT_LE(ts->work, 8 * sim.regions().size()) << where;
     const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions(), nullptr,
                                                                                false, true);
     ASSERT_TRUE(mc) << where;
@@ -643,6 +804,7 @@ TEST(SingleCouplingSweep, AwningCombYesIsNamedByTheFixedAxisSweep) {
 // quadratic. The sweep names that collision and find_collision reports it,
 // checked at one moment, without simulating; the simulator agrees.
 TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
+  int slabbed = 0;
   for (uint32_t K : {1u, 2u, 5u, 12u})
     for (uint32_t b : {3u, 4u, 7u}) {
       const Instance inst = diagonal_sweep_instance(K, b, true);
@@ -660,19 +822,27 @@ TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
       EXPECT_EQ(r.simulated->time, run.collision->time) << where;
       // K = 1: a move of one cell, after which no two x faces have swapped;
       // the fixed-axis sweep bisects for the same first collision. K > 1:
-      // no cut; motion classes when few enough (small K and b), else the
-      // cell sweep; both name the same first collision.
+      // no cut over (0, 1); time slabs while they cut within their budget,
+      // else motion classes when few enough, else the cell sweep; all name
+      // the same first collision.
       if (K == 1) {
         EXPECT_EQ(r.algorithm, "single-coupling-fixed-axis") << where;
       } else {
-        EXPECT_TRUE(r.algorithm == "single-coupling" || r.algorithm == "single-coupling-motion-classes")
+        EXPECT_TRUE(r.algorithm == "single-coupling" || r.algorithm == "single-coupling-motion-classes" ||
+                    r.algorithm == "single-coupling-time-slabs")
             << where << ": " << r.algorithm;
+      }
+      if (const std::optional<TimeSlabAnswer> ts = single_coupling_time_slabs(inst, sim.tree(), sim.regions(), nullptr,
+                                                                              0, true)) {
+        expect_names_first(inst, ts->answer, *run.collision, where + ", time slabs");
+        ++slabbed;
       }
       EXPECT_EQ(r.checked_at, ans.during) << where;
       EXPECT_EQ(r.simulated->a, run.collision->a) << where;
       EXPECT_EQ(r.simulated->b, run.collision->b) << where;
       EXPECT_EQ(inst.num_nodes(), diagonal_sweep_instance(K, b).num_nodes() + b + 3) << where;
     }
+  EXPECT_GE(slabbed, 6);
 }
 
 // Progress: the one-coupling step reports its column bands through
