@@ -99,12 +99,52 @@ NAMED_YES = {  # one coupling: (the .grid text, the algorithm, checked_at, the f
 }
 
 
+def stalactite_comb_hit(L):
+    """bench/bench_families.hpp's stalactite_comb(L, false, true), as
+    .grid text: teeth carried right under static stalactites, the middle
+    one reaching into their path (YES at floor(L / 2) / k)."""
+    m, k = L, 2 * (L + L) + 2
+    left, right = -2 * k - 1, L + k + 1
+    nodes, edges, ops = [], [], []
+    nodes += [(x, 0) for x in range(-2 * k, L)]
+    edges += [((x, 0), (x + 1, 0)) for x in range(-2 * k, L - 1)]
+    ops += [(f"s{i}", -2 * k + 2 * i, 0, "+x") for i in range(k)]
+    for x in range(L):
+        for y in range(1, 5):
+            nodes.append((x, y))
+            edges.append(((x, y - 1), (x, y)))
+        if x % 2 == 0:
+            ops += [(f"t{x}_{y}", x, y, "+y") for y in (1, 3)]
+    nodes += [(left, y) for y in range(9)]
+    edges += [((left, y), (left, y + 1)) for y in range(8)] + [((left, 0), (left + 1, 0))]
+    for x in range(left + 1, right + 1):
+        nodes.append((x, 8))
+        edges.append(((x - 1, 8), (x, 8)))
+    for x in range(L, L + m):
+        nodes += [(x, 7), (x, 6)]
+        edges += [((x, 8), (x, 7)), ((x, 7), (x, 6))]
+    x = L + m // 2
+    nodes += [(x, 5), (x, 4)]
+    edges += [((x, 6), (x, 5)), ((x, 5), (x, 4))]
+    lines = [f"p grid {len(nodes)} {len(edges)} {len(ops)} 1"]
+    lines += [f"n {x} {y}" for x, y in nodes]
+    lines += [f"e {a[0]} {a[1]} {b[0]} {b[1]}" for a, b in edges]
+    lines += [f"o {name} expand {x} {y} {d}" for name, x, y, d in ops]
+    lines.append("q all " + " ".join(name for name, *_ in ops))
+    return "\n".join(lines) + "\n"
+
+
+# No cut over (0, 1), cut over its halves (first at 1/14: floor(3 / 2) / 14).
+NAMED_YES["time-slabs"] = (stalactite_comb_hit(3), "single-coupling-time-slabs", Fraction(1, 7), Fraction(1, 14))
+
+
 @pytest.mark.parametrize("model", ["discrete", "continuous"])
 @pytest.mark.parametrize("case", sorted(NAMED_YES))
 def test_collide_one_coupling_yes_checked_at_one_moment(tmp_path, model, case):
     """One coupling (one axis: the row groups; both axes, x keeping its
     order: one sweep along x, bisecting for the first moment; groups cut
-    apart, each keeping an order: one sweep each): the
+    apart, each keeping an order: one sweep each; the same over time
+    slabs): the
     first collision comes from the proof and is confirmed at one moment;
     it is the simulator's, and equals the CLI."""
     text, algorithm, checked_at, time = NAMED_YES[case]
