@@ -536,8 +536,13 @@ std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& fa
 }
 
 // Cuts past this depth are not followed (the cell sweep decides): the
-// cost stays O(r log r) per level, 64 levels at most.
+// cost stays O(r log r) per level, 64 levels at most. And the members of
+// the pieces placed, summed, stay within kCutWork per live region: a
+// staircase (the diagonal sweep) peels a few regions per level off a
+// piece of nearly all of them, and past that the cuts cost more than
+// the cell sweep they would spare.
 constexpr int kMaxCutDepth = 64;
+constexpr uint64_t kCutWork = 8;
 
 // A motion class: regions whose four faces move at the same speeds and
 // whose widths at t = 0 agree. Two regions of classes P and Q then
@@ -717,10 +722,14 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
   // Pieces to place, with their depth of cuts.
   std::vector<std::pair<std::vector<uint32_t>, int>> todo;
   todo.emplace_back(out.live, 0);
+  uint64_t work = 0;
+  const uint64_t cap = kCutWork * (out.live.size() + 1);
   while (!todo.empty()) {
     if (deadline) deadline->check();
     auto [members, depth] = std::move(todo.back());
     todo.pop_back();
+    work += members.size();
+    if (work > cap) return std::nullopt;
     if (std::optional<KeptGroup> g = kept_group(faces, members)) {
       out.groups.push_back(std::move(*g));
       continue;

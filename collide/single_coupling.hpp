@@ -126,10 +126,11 @@ struct FixedAxisAnswer {
 };
 
 // nullopt when a group that keeps neither order cannot be cut (or the
-// cuts nest more than 64 deep), or when some live region's width along
-// its group's other axis is not positive all along (0, 1) (only when the
-// coupling breaks a cycle: find_collision settles that first). The cuts
-// cost O(r log r) per level of nesting. A NO costs one sweep of every
+// cuts nest more than 64 deep, or the pieces placed hold more than 8 r
+// members in all), or when some live region's width along its group's
+// other axis is not positive all along (0, 1) (only when the coupling
+// breaks a cycle: find_collision settles that first). The cuts cost
+// O(r log r) per level of nesting, O(r log r) in all. A NO costs one sweep of every
 // group, O(r log r); a YES bisects [0, 1] for the
 // first moment, one or two sweeps per halving, at most about
 // 2 log2(2 max speed) + 2 halvings (distinct starts are fractions with
@@ -184,8 +185,8 @@ struct MotionClassAnswer {
   uint64_t tests = 0;        // exact pair tests of the kept-order sweeps
 };
 
-// nullopt when the cuts nest deeper than single_coupling_fixed_axis
-// follows, when some region of a class group has a width that is not
+// nullopt when the cuts nest deeper (or place more members) than
+// single_coupling_fixed_axis allows, when some region of a class group has a width that is not
 // positive all along (0, 1) (only when the coupling breaks a cycle), when
 // some face speed exceeds 2^19 (the exact arithmetic's bound), or,
 // unless any_cost, when some class group's k r exceeds its motion (the
