@@ -34,7 +34,7 @@ struct CertifyResult {
                               // collide, kept-order: the sweep's pairs
   bool one_axis = false;      // collide: the one-axis kind (only the row groups' pairs covered)
   int kept_axis =
-      -1;  // collide: the kept-order kind's axis (0 x, 1 y, 2 separated groups; only the sweep's pairs covered)
+      -1;  // collide: the kept-order kind's axis (0 x, 1 y, 2 separated groups, 3 time slabs; the sweeps' pairs)
 };
 
 // Checks `text` as a NO certificate of inst in the model `model`

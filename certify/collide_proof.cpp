@@ -31,7 +31,7 @@ struct PairLine {
 struct CollideText {
   bool header = false, couplings = false;
   bool one_axis = false;  // p line ends in one-axis: only the row groups' pairs need cover
-  int kept_axis = -1;     // p line ends in kept-order x (0) or y (1): only the kept-order sweep's pairs
+  int kept_axis = -1;     // p line ends in kept-order x (0), y (1), separated (2) or slabs (3): the sweeps' pairs
   size_t header_line = 0;
   std::map<std::pair<uint32_t, uint32_t>, PairLine> pairs;  // by (smaller, larger) region
 };
@@ -84,14 +84,15 @@ std::optional<std::string> read_collide_text(const Instance& inst, const Regions
   auto one = [&](size_t line, const std::vector<std::string_view>& w) -> std::optional<std::string> {
     if (w[0] == "p") {
       if (out.header) return at(line, "a second p line");
-      const bool kept = w.size() == 6 && w[4] == "kept-order" && (w[5] == "x" || w[5] == "y" || w[5] == "separated");
+      const bool kept = w.size() == 6 && w[4] == "kept-order" &&
+                        (w[5] == "x" || w[5] == "y" || w[5] == "separated" || w[5] == "slabs");
       if (w.size() < 4 || w.size() > 6 || w[1] != kHeader || w[2] != "1" || w[3] != "continuous" ||
           (w.size() == 5 && w[4] != "one-axis") || (w.size() == 6 && !kept))
         return at(line, std::string("expected 'p ") + kHeader +
-                            " 1 continuous', optionally followed by 'one-axis' or 'kept-order x|y|separated'");
+                            " 1 continuous', optionally followed by 'one-axis' or 'kept-order x|y|separated|slabs'");
       out.header = true;
       out.one_axis = w.size() == 5;
-      if (kept) out.kept_axis = w[5] == "x" ? 0 : w[5] == "y" ? 1 : 2;
+      if (kept) out.kept_axis = w[5] == "x" ? 0 : w[5] == "y" ? 1 : w[5] == "separated" ? 2 : 3;
       out.header_line = line;
       return std::nullopt;
     }
@@ -189,7 +190,7 @@ void check_row_groups(const Instance& inst, const CertifyGeometry& geo, const Co
 // The kept-order kind: one coupling, the faces of the named axis keep
 // their order, and every pair of certify's own sweep covered.
 void check_kept_order(const Instance& inst, const CertifyGeometry& geo, const CollideText& c, CertifyResult& r) {
-  const char* name = c.kept_axis == 0 ? "x" : c.kept_axis == 1 ? "y" : "separated";
+  const char* name = c.kept_axis == 0 ? "x" : c.kept_axis == 1 ? "y" : c.kept_axis == 2 ? "separated" : "slabs";
   if (inst.couplings().size() != 1)
     return void(r.reason = at(c.header_line, "kept-order, but the instance has " +
                                                  std::to_string(inst.couplings().size()) +
@@ -283,6 +284,18 @@ std::optional<std::string> order_changes(const Instance& inst, const Regions& re
       return std::string("the ") + (s == 0 ? "x" : "y") + " faces of " + region_label(inst, regions, ends[i].r) +
              " and " + region_label(inst, regions, ends[i + 1].r) + " change order";
   return std::nullopt;
+}
+
+// The same test without the names (for the slabs' local faces): true iff
+// the faces of axis s keep their order.
+bool order_kept(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members, size_t s) {
+  std::vector<FaceLine> ends;
+  for (uint32_t r : members) ends.push_back(face[r][2 * s]), ends.push_back(face[r][2 * s + 1]);
+  std::ranges::sort(ends,
+                    [](const FaceLine& x, const FaceLine& y) { return std::pair(x.a, x.b) < std::pair(y.a, y.b); });
+  for (size_t i = 0; i + 1 < ends.size(); ++i)
+    if (ends[i + 1].a + ends[i + 1].b < ends[i].a + ends[i].b) return false;
+  return true;
 }
 
 // The sweep along s at progress 1/2 (doubled: 2a + b), the regions on the
@@ -393,6 +406,86 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
   return std::nullopt;
 }
 
+// The slabs kind: pieces over dyadic slabs of progress [m / 2^e,
+// (m + 1) / 2^e], e <= 12, each with its faces rescaled to the slab
+// (2^e a + m b, b: positions times 2^e over s in [0, 1]; overlaps are the
+// same at matching moments). From the live regions over [0, 1], a piece
+// first drops the regions with no common moment of positive widths inside
+// its slab and is done with fewer than two; then it is a group when its x
+// (else y) faces keep their order with its widths across that axis
+// positive all along (its sweep's pairs); else cut along x, else y (not
+// past 64 levels of cuts); else, with at most 8 regions, all its pairs;
+// else its slab's two halves. Refused past 2^-12, past 32 (r + 1) members
+// placed (summed over the pieces before the drop), or with a face beyond
+// 2^40. Pairs as (smaller, larger), duplicates possible.
+std::optional<std::string> slab_pairs(const std::vector<FaceLines>& face, const std::vector<uint32_t>& live,
+                                      std::vector<std::pair<uint32_t, uint32_t>>& out) {
+  constexpr int64_t kBig = int64_t{1} << 40;
+  for (uint32_t r : live)
+    for (const FaceLine& f : face[r])
+      if (f.a > kBig || f.a < -kBig || f.b > kBig || f.b < -kBig)
+        return std::string("a face's position or speed exceeds 2^40");
+  struct Piece {
+    std::vector<uint32_t> members;
+    int64_t m = 0;
+    int e = 0, depth = 0;
+  };
+  std::vector<Piece> todo{{live, 0, 0, 0}};
+  const uint64_t budget = 32 * (live.size() + 1);
+  uint64_t placed = 0;
+  auto pair = [&](uint32_t x, uint32_t y) { out.emplace_back(std::min(x, y), std::max(x, y)); };
+  while (!todo.empty()) {
+    Piece p = std::move(todo.back());
+    todo.pop_back();
+    placed += p.members.size();
+    if (placed > budget) return "the slabs place more than 32 (r + 1) = " + std::to_string(budget) + " regions";
+    std::vector<uint32_t> members;  // global ids; local id i is members[i]
+    std::vector<FaceLines> local;
+    for (uint32_t r : p.members) {
+      FaceLines g;
+      for (size_t f = 0; f < 4; ++f) g[f] = {face[r][f].a * (int64_t{1} << p.e) + face[r][f].b * p.m, face[r][f].b};
+      if (!both_positive_somewhere(width_of(g, 0), width_of(g, 1))) continue;
+      members.push_back(r);
+      local.push_back(g);
+    }
+    if (members.size() < 2) continue;
+    std::vector<uint32_t> ids(members.size());
+    for (uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
+    size_t s = 2;
+    for (size_t axis : {size_t{0}, size_t{1}})
+      if (s == 2 && order_kept(local, ids, axis)) s = axis;
+    if (s != 2 && std::ranges::all_of(ids, [&](uint32_t i) { return positive_all_along(width_of(local[i], 1 - s)); })) {
+      for (auto [x, y] : sweep_pairs(local, ids, s)) pair(members[x], members[y]);
+      continue;
+    }
+    bool cut = false;
+    for (size_t axis : {size_t{0}, size_t{1}}) {
+      if (p.depth >= 64) break;
+      std::vector<std::vector<uint32_t>> pieces = cut_along(local, ids, axis);
+      if (pieces.size() == 1) continue;
+      for (const std::vector<uint32_t>& q : pieces) {
+        Piece next{{}, p.m, p.e, p.depth + 1};
+        for (uint32_t i : q) next.members.push_back(members[i]);
+        todo.push_back(std::move(next));
+      }
+      cut = true;
+      break;
+    }
+    if (cut) continue;
+    if (members.size() <= 8) {
+      for (size_t i = 0; i < members.size(); ++i)
+        for (size_t j = i + 1; j < members.size(); ++j) pair(members[i], members[j]);
+      continue;
+    }
+    if (p.e >= 12)
+      return "a piece of " + std::to_string(members.size()) + " regions over the slab [" + std::to_string(p.m) +
+             "/4096, " + std::to_string(p.m + 1) + "/4096] keeps neither order and no cut along x or y separates it";
+    todo.push_back({members, 2 * p.m + 1, p.e + 1, p.depth});
+    todo.push_back({std::move(members), 2 * p.m, p.e + 1, p.depth});
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> kept_order_pairs_of(const Instance& inst, const CertifyGeometry& geo, int axis,
@@ -404,6 +497,12 @@ std::optional<std::string> kept_order_pairs_of(const Instance& inst, const Certi
   for (uint32_t r = 0; r < face.size(); ++r)
     if (both_positive_somewhere(width_of(face[r], 0), width_of(face[r], 1))) live.push_back(r);
   if (axis == 2) return separated_pairs(inst, geo.regions(), face, std::move(live), out);
+  if (axis == 3) {
+    if (auto e = slab_pairs(face, live, out)) return e;
+    std::ranges::sort(out);  // a pair met in several slabs is checked once
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return std::nullopt;
+  }
   const size_t s = axis == 0 ? 0 : 1, m = 1 - s;
   if (auto e = order_changes(inst, geo.regions(), face, live, s)) return e;
   // Across s every live width must stay positive on (0, 1).

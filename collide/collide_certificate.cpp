@@ -154,6 +154,7 @@ std::string header(const Instance& inst, const CollideCertificate& c) {
                            : c.kept_axis == 0 ? " kept-order x"
                            : c.kept_axis == 1 ? " kept-order y"
                            : c.kept_axis == 2 ? " kept-order separated"
+                           : c.kept_axis == 3 ? " kept-order slabs"
                                               : "";
   return "p gridlock-collide-no-certificate 1 continuous" + kind + "\n" + couplings_line(inst);
 }
@@ -187,7 +188,12 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
   // One coupling whose faces keep their order on one axis: only the pairs
   // the fixed-axis sweep tests (if none overlaps, nothing does).
   if (!every_pair && !groups && inst.couplings().size() == 1) {
-    if (std::optional<KeptOrderPairs> kept = single_coupling_kept_order_pairs(inst, tree, regions)) {
+    std::optional<KeptOrderPairs> kept = single_coupling_kept_order_pairs(inst, tree, regions);
+    if (!kept && (kept = single_coupling_slab_pairs(inst, tree, regions))) {  // cut over time slabs
+      std::ranges::sort(kept->pairs);  // a pair met in several slabs is listed once
+      kept->pairs.erase(std::unique(kept->pairs.begin(), kept->pairs.end()), kept->pairs.end());
+    }
+    if (kept) {
       out.kept_axis = kept->axis;
       groups = std::move(kept->pairs);
     }

@@ -39,7 +39,7 @@ struct CollideCertificate {
   uint64_t pairs = 0;     // region pairs covered
   uint64_t lines = 0;     // of which with an r line (the others: one form rules them out)
   bool one_axis = false;  // the one-axis kind: pairs are the row groups' pairs only
-  int kept_axis = -1;     // the kept-order kind (0 x, 1 y, 2 separated groups): the fixed-axis sweep's pairs only
+  int kept_axis = -1;     // the kept-order kind (0 x, 1 y, 2 separated groups, 3 time slabs): the sweeps' pairs only
   // Some pair can overlap in continuous time: the first one found (regions).
   uint32_t meet_a = kNone, meet_b = kNone;
 };

@@ -871,6 +871,17 @@ Faces in_slab(const Faces& f, const Slab& sl) {
   return g;
 }
 
+// The faces and live regions for the time slabs; nullopt when some face's
+// position or speed exceeds kMaxSlabValue.
+std::optional<FixedAxisSetup> slab_live_regions(const Instance& inst, const SpanningTree& t, const Regions& regions) {
+  FixedAxisSetup out = live_regions(inst, t, regions);
+  for (uint32_t r : out.live)
+    for (const Lin& l : out.faces[r])
+      if (l.a > kMaxSlabValue || l.a < -kMaxSlabValue || l.b > kMaxSlabValue || l.b < -kMaxSlabValue)
+        return std::nullopt;
+  return out;
+}
+
 // A group over one slab: the global ids of its members, and a setup of
 // their faces over the slab with one kept-order group (local ids: index
 // into members), or none: a small piece, every pair tested.
@@ -987,6 +998,36 @@ std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& i
   return out;
 }
 
+std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, const SpanningTree& t,
+                                                         const Regions& regions) {
+  const std::optional<FixedAxisSetup> live = slab_live_regions(inst, t, regions);
+  if (!live) return std::nullopt;
+  const FixedAxisSetup& whole = *live;
+  uint64_t work = 0;
+  std::optional<std::vector<SlabGroup>> groups = slab_groups(whole.faces, whole.live, 0,
+                                                             kSlabWork * (whole.live.size() + 1), nullptr, work);
+  if (!groups) return std::nullopt;
+  KeptOrderPairs out;
+  out.axis = 3;
+  for (const SlabGroup& g : *groups) {
+    if (g.setup.groups.empty()) {  // a small piece: every pair
+      for (size_t i = 0; i < g.members.size(); ++i)
+        for (size_t j = i + 1; j < g.members.size(); ++j) {
+          if (!overlap_span(g.setup.faces[i], g.setup.faces[j]).empty()) return std::nullopt;
+          out.pairs.emplace_back(std::min(g.members[i], g.members[j]), std::max(g.members[i], g.members[j]));
+        }
+      continue;
+    }
+    std::vector<std::pair<uint32_t, uint32_t>> local;
+    Earliest best;
+    uint64_t tests = 0;
+    if (any_collides_before(g.setup, Frac{1, 1}, best, tests, &local)) return std::nullopt;
+    for (auto [i, j] : local)
+      out.pairs.emplace_back(std::min(g.members[i], g.members[j]), std::max(g.members[i], g.members[j]));
+  }
+  return out;
+}
+
 std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& inst, const SpanningTree& t,
                                                                 const Regions& regions, const Deadline* deadline,
                                                                 bool whole, bool any_cost) {
@@ -1034,11 +1075,9 @@ std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, c
                                                          const Regions& regions, const Deadline* deadline,
                                                          int first_exp, bool any_cost) {
   if (first_exp < 0 || first_exp > kMaxSlabExp) return std::nullopt;
-  const FixedAxisSetup whole = live_regions(inst, t, regions);
-  for (uint32_t r : whole.live)
-    for (const Lin& l : whole.faces[r])
-      if (l.a > kMaxSlabValue || l.a < -kMaxSlabValue || l.b > kMaxSlabValue || l.b < -kMaxSlabValue)
-        return std::nullopt;
+  const std::optional<FixedAxisSetup> live = slab_live_regions(inst, t, regions);
+  if (!live) return std::nullopt;
+  const FixedAxisSetup& whole = *live;
   uint64_t motion = 0;
   for (uint32_t r : whole.live) {
     const Faces& f = whole.faces[r];

@@ -152,7 +152,7 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
 // cuts the groups itself). nullopt when single_coupling_fixed_axis
 // returns nullopt or a YES. O(r log r) per level of cuts.
 struct KeptOrderPairs {
-  int axis = 0;  // the kept axis (0 x, 1 y), or 2: several separated groups, each keeping one
+  int axis = 0;  // the kept axis (0 x, 1 y), 2: several separated groups, each keeping one, 3: over time slabs
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
 };
 std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,
@@ -238,6 +238,17 @@ struct TimeSlabAnswer {
 std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, const SpanningTree& t,
                                                          const Regions& regions, const Deadline* deadline = nullptr,
                                                          int first_exp = 0, bool any_cost = false);
+
+// The pairs a NO of the time slabs rests on (axis 3: the certificate's
+// `kept-order slabs`; the checker makes the slabs, cuts and sweeps
+// itself): the pairs each kept-order group's sweep tests over its slab,
+// and every pair of each small piece, as (smaller, larger), duplicates
+// possible. If no listed pair ever overlaps, no pair does (Lemma 5 of
+// docs/collide.md). The slabs are those of single_coupling_time_slabs
+// with the work budget 32 r alone (no motion term): O(r log r). nullopt
+// when they decline or find an overlap.
+std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, const SpanningTree& t,
+                                                         const Regions& regions);
 
 // The question each round of the classes' bisection asks, exposed for its
 // twin test: with every live region in one class group (every class pair

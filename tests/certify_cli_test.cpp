@@ -127,7 +127,8 @@ TEST(CertifyCli, CollideCertificateEndToEnd) {
   ASSERT_EQ(w.exit_code, 20) << w.out << w.err;
   EXPECT_NE(w.out.find("1 with multipliers"), std::string::npos) << w.out;
   const std::string text = test::read_file(cert);
-  EXPECT_NE(text.find("p gridlock-collide-no-certificate 1 continuous\n"), std::string::npos) << text;
+  // One coupling, no cut over (0, 1), cut over its halves: the slabs kind.
+  EXPECT_NE(text.find("p gridlock-collide-no-certificate 1 continuous kept-order slabs\n"), std::string::npos) << text;
   EXPECT_NE(text.find("r 0,0 2,0 1 0 1 0 0 0 0 0\n"), std::string::npos) << text;
   for (const char* model : {"continuous", "discrete"}) {
     const auto c = run_gridlock({"certify", diag, cert, "--model", model});
@@ -191,7 +192,7 @@ TEST(CertifyCli, CollideOneAxisCertificateEndToEnd) {
   const std::string diag = test::write_file(d + "/diag.grid", kDiagonal), dcert = d + "/diag.cert";
   ASSERT_EQ(run_gridlock({"collide", diag, "--certificate", dcert}).exit_code, 20);
   std::string both = test::read_file(dcert);
-  both.insert(both.find('\n'), " one-axis");
+  both = "p gridlock-collide-no-certificate 1 continuous one-axis" + both.substr(both.find('\n'));
   const std::string bothf = test::write_file(d + "/both.cert", both);
   const auto b = run_gridlock({"certify", diag, bothf});
   EXPECT_EQ(b.exit_code, 1);

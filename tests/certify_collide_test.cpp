@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_families.hpp"
 #include "certify/certify.hpp"
 #include "certify/internal/collide_proof.hpp"
 #include "certify/internal/geometry.hpp"
@@ -494,7 +495,7 @@ TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
     }
     if (!pairs) {
       if (!cert.text.empty() && !cert.one_axis) {
-        EXPECT_EQ(cert.kept_axis, -1) << at;
+        EXPECT_TRUE(cert.kept_axis == -1 || cert.kept_axis == 3) << at;  // every pair, or over time slabs
       }
       continue;
     }
@@ -545,6 +546,95 @@ TEST(CertifyCollide, KeptOrderKindCoversTheSweepPairs) {
   EXPECT_GT(other_refused, test::scaled(50));
   EXPECT_GT(several_refused, test::scaled(50));
   EXPECT_GT(separated, test::scaled(5));
+}
+
+// The slabs kind (`kept-order slabs`): on random stalactite combs, the
+// stalactite combs of bench_families.hpp (plain and own-speed, NO, no cut
+// over (0, 1)) and the random one-coupling instances, the checker's own
+// slabs, cuts and sweeps meet exactly the pairs collide's do
+// (single_coupling_slab_pairs); a NO's certificate of that kind is
+// accepted in both models and its mutations refused; a YES refuses a bare
+// one (its overlapping pair is among the pairs met); on several couplings
+// the word is refused at line 1.
+TEST(CertifyCollide, SlabsKindCoversTheSlabPairs) {
+  int slab_kind = 0, yes_refused = 0, declined = 0, several_refused = 0;
+  uint64_t slab_pairs = 0, all_pairs = 0;
+  auto check = [&](const Instance& inst, const std::string& at, Rng& rng) {
+    if (std::ranges::any_of(FaceNets::build(inst).coupling_breaks_cycle, [](char b) { return b != 0; })) return;
+    const Regions regions = Regions::build(inst);
+    const SpanningTree tree = SpanningTree::build(inst);
+    const CertifyGeometry geo(inst);
+    std::vector<std::pair<uint32_t, uint32_t>> mine;
+    const std::optional<std::string> refused = kept_order_pairs_of(inst, geo, 3, mine);
+    const std::optional<KeptOrderPairs> pairs = single_coupling_slab_pairs(inst, tree, regions);
+    const std::optional<TimeSlabAnswer> slabs = single_coupling_time_slabs(inst, tree, regions, nullptr, 0,
+                                                                           true);  // the same slabs, whatever the cost
+    if (refused) {  // the slabs decline (or their budget): collide lists no pairs either
+      ASSERT_FALSE(pairs) << at << ": " << *refused;
+      ++declined;
+      return;
+    }
+    ASSERT_TRUE(slabs) << at;
+    if (slabs->answer.collides) {  // YES: collide lists nothing, and a bare certificate is refused
+      ASSERT_FALSE(pairs) << at;
+      const std::string bare = "p gridlock-collide-no-certificate 1 continuous kept-order slabs\n" +
+                               couplings_line(inst);
+      EXPECT_FALSE(certify(inst, bare, "continuous").proved) << at;
+      ++yes_refused;
+      return;
+    }
+    ASSERT_TRUE(pairs) << at;
+    ASSERT_EQ(ordered(mine), ordered(pairs->pairs)) << at;
+    const CollideCertificate cert = collide_no_certificate(inst);
+    ASSERT_FALSE(cert.text.empty()) << at << ": " << cert.why_none;
+    if (cert.one_axis || cert.kept_axis != 3) return;  // a kind tried before the slabs held
+    ++slab_kind;
+    slab_pairs += ordered(mine).size();
+    all_pairs += regions.size() * (regions.size() - 1) / 2;
+    for (const char* model : {"continuous", "discrete"}) {
+      const CertifyResult r = certify(inst, cert.text, model);
+      ASSERT_TRUE(r.proved) << at << ": " << r.reason << "\n" << cert.text;
+      EXPECT_EQ(r.kept_axis, 3) << at;
+      EXPECT_EQ(r.axioms, ordered(mine).size()) << at;
+    }
+    expect_mutations_refused(inst, cert.text, true, rng, at);
+  };
+  for (int64_t L = 1; L <= 40; ++L)
+    for (bool own : {false, true}) {
+      Rng rng(static_cast<uint64_t>(L) * 2 + own);
+      check(bench::stalactite_comb(L, own), "stalactite comb of " + std::to_string(L) + (own ? ", own speeds" : ""),
+            rng);
+      if (::testing::Test::HasFailure()) return;
+    }
+  for (int i = 0; i < test::scaled(1500); ++i) {
+    const uint64_t seed = test::base_seed(99000) + static_cast<uint64_t>(i);
+    const std::string at = where(seed);
+    Rng rng(seed * 131 + 7);
+    if (i % 3 == 2) {  // a random one-coupling instance (seldom without a cut over (0, 1))
+      RandomInstanceParams p = cert_params(rng);
+      p.nodes += static_cast<uint32_t>(rng.below(40)), p.ops += static_cast<uint32_t>(rng.below(20));
+      const Instance made = random_instance(p, seed);
+      if (made.couplings().size() > 1 && rng.below(4) == 0 &&
+          std::ranges::none_of(FaceNets::build(made).coupling_breaks_cycle, [](char b) { return b != 0; })) {
+        const CollideCertificate c = collide_no_certificate(made);
+        if (!c.text.empty()) {
+          const CertifyResult r = certify(made, with_kind(c.text, " kept-order slabs"), "continuous");
+          EXPECT_TRUE(!r.proved && blames_line(r, 1)) << at << ": " << r.reason;
+          ++several_refused;
+        }
+      }
+      check(test::rebuilt(made, rng.below(2) == 0, true), at, rng);
+    } else {
+      check(bench::random_stalactite_comb(seed), at + " (a random stalactite comb)", rng);
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::cout << "[certify-collide] slabs: " << slab_kind << " NOs certified by the slabs kind (" << slab_pairs
+            << " pairs met of " << all_pairs << "), " << yes_refused << " YES refused a bare certificate, " << declined
+            << " declined alike, " << several_refused << " of several couplings refused the word\n";
+  EXPECT_GT(slab_kind, 60);
+  EXPECT_GT(yes_refused, test::scaled(100));
+  EXPECT_GT(several_refused, test::scaled(5));
 }
 
 }  // namespace

@@ -180,18 +180,36 @@ TEST(CollideCommand, TimeSlabsYesNamesTheFirstCollision) {
   expect_named_first_collision(grid.str(), "single-coupling-time-slabs", "1/14", "node (2,3) and node (4,4)", "1/7");
 }
 
-// The stalactite comb's NO by time slabs, through the command line: its
-// certificate (the every-pair kind) is written and certify accepts it.
-TEST(CollideCommand, TimeSlabsNoHasACertificate) {
+// The own-speed stalactite comb's NO by time slabs, through the command
+// line: its certificate is of the slabs kind (the pairs of the slabs'
+// sweeps, not every pair), and certify accepts it in both models, making
+// the slabs itself; the same word on the comb with a hit (YES) is refused.
+TEST(CollideCommand, TimeSlabsNoHasASlabsCertificate) {
   const std::string dir = test::temp_dir();
-  std::ostringstream grid;
-  write_instance(grid, bench::stalactite_comb(3));
+  std::ostringstream grid, hit;
+  write_instance(grid, bench::stalactite_comb(12, true));
   test::write_file(dir + "/s.grid", grid.str());
   auto r = run_gridlock({"collide", dir + "/s.grid", "--certificate", dir + "/s.cert"});
   ASSERT_EQ(r.exit_code, 20) << r.out << r.err;
   EXPECT_NE(r.out.find("c algorithm: single-coupling-time-slabs ("), std::string::npos) << r.out;
-  auto c = run_gridlock({"certify", dir + "/s.grid", dir + "/s.cert"});
-  EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+  EXPECT_NE(r.out.find("(one coupling, groups over time slabs each keeping an order: their sweeps' pairs)"),
+            std::string::npos)
+      << r.out;
+  const std::string cert = test::read_file(dir + "/s.cert");
+  EXPECT_EQ(cert.rfind("p gridlock-collide-no-certificate 1 continuous kept-order slabs\n", 0), 0u) << cert;
+  for (const char* model : {"continuous", "discrete"}) {
+    auto c = run_gridlock({"certify", dir + "/s.grid", dir + "/s.cert", "--model", model});
+    EXPECT_EQ(c.exit_code, 20) << c.out << c.err;
+    EXPECT_NE(c.out.find("groups over time slabs each keeping an order"), std::string::npos) << c.out;
+  }
+  const Instance yes = bench::stalactite_comb(12, false, true);
+  write_instance(hit, yes);
+  test::write_file(dir + "/h.grid", hit.str());
+  test::write_file(dir + "/h.cert",
+                   "p gridlock-collide-no-certificate 1 continuous kept-order slabs\n" + couplings_line(yes));
+  auto h = run_gridlock({"certify", dir + "/h.grid", dir + "/h.cert"});
+  EXPECT_EQ(h.exit_code, 1) << h.out << h.err;
+  EXPECT_NE(h.err.find("(a pair of the kept-order sweep)"), std::string::npos) << h.err;
 }
 
 // --certificate C on an answer without one: C is left as it was (a file

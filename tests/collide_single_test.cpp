@@ -314,65 +314,6 @@ TEST(SingleCouplingSweep, AgreesWithTwinsOnRandomInstances) {
   EXPECT_GT(tally.slabs8_yes, cases / 5);
 }
 
-// A random stalactite comb (the family of bench_families.hpp with its
-// parts drawn at random), small enough for every twin: L teeth of random
-// heights 1 .. 4 on a spine along y = 0, carried right by k expansions
-// (+x) on a tail, some teeth rising (+y expansions on their nodes y = 1
-// and 3), some spine edges from even x expanding too (pairs of teeth at
-// their own speeds); a static lid (a column left of the tail, a row at
-// y = 8) with stalactites hanging to random depths (y = 4 .. 7) at random
-// columns, clear of the teeth at t = 0. Teeth pass under the
-// stalactites, rise, or hit them: both answers, first moments anywhere
-// in (0, 1), and pieces that no cut separates over (0, 1).
-Instance random_stalactite_comb(uint64_t seed) {
-  Rng rng(seed);
-  InstanceBuilder b;
-  auto must = [](std::optional<std::string> e) {
-    if (e) throw std::runtime_error(*e);
-  };
-  const auto L = static_cast<int64_t>(1 + rng.below(16)), k = static_cast<int64_t>(1 + rng.below(24));
-  const int64_t left = -2 * k - 1, right = 2 * L + k + 4;
-  std::vector<std::string> names;
-  for (int64_t x = -2 * k; x < L; ++x) must(b.add_node({x, 0}));
-  for (int64_t x = -2 * k; x + 1 < L; ++x) must(b.add_edge({x, 0}, {x + 1, 0}));
-  for (int64_t i = 0; i < k; ++i) {
-    names.push_back("s" + std::to_string(i));
-    must(b.add_op(names.back(), OpKind::Expand, {-2 * k + 2 * i, 0}, Dir::PosX));
-  }
-  std::vector<int64_t> top(static_cast<size_t>(L));
-  for (int64_t x = 0; x < L; ++x) {
-    const auto h = static_cast<int64_t>(1 + rng.below(4));
-    top[static_cast<size_t>(x)] = h;
-    for (int64_t y = 1; y <= h; ++y) must(b.add_node({x, y})), must(b.add_edge({x, y - 1}, {x, y}));
-    for (int64_t y : {1, 3})
-      if (y < h && rng.below(2) == 0) {
-        names.push_back("t" + std::to_string(x) + "_" + std::to_string(y));
-        must(b.add_op(names.back(), OpKind::Expand, {x, y}, Dir::PosY));
-      }
-    if (x % 2 == 0 && x + 1 < L && rng.below(3) == 0) {
-      names.push_back("p" + std::to_string(x));
-      must(b.add_op(names.back(), OpKind::Expand, {x, 0}, Dir::PosX));
-    }
-  }
-  for (int64_t y = 0; y <= 8; ++y) must(b.add_node({left, y}));
-  for (int64_t y = 0; y < 8; ++y) must(b.add_edge({left, y}, {left, y + 1}));
-  must(b.add_edge({left, 0}, {left + 1, 0}));
-  for (int64_t x = left + 1; x <= right; ++x) must(b.add_node({x, 8})), must(b.add_edge({x - 1, 8}, {x, 8}));
-  const auto stalactites = static_cast<int64_t>(1 + rng.below(static_cast<uint64_t>(L + 2)));
-  for (int64_t i = 0; i < stalactites; ++i) {
-    const auto x = static_cast<int64_t>(rng.below(static_cast<uint64_t>(2 * L + k + 3)));
-    int64_t bottom = 4 + static_cast<int64_t>(rng.below(4));
-    if (x < L) bottom = std::max(bottom, top[static_cast<size_t>(x)] + 1);
-    if (bottom > 7 || b.add_node({x, 7})) continue;  // taken already: one stalactite per column
-    must(b.add_edge({x, 8}, {x, 7}));
-    for (int64_t y = 6; y >= bottom; --y) must(b.add_node({x, y})), must(b.add_edge({x, y + 1}, {x, y}));
-  }
-  bench::couple_consecutive(b, names, 0);
-  Instance inst;
-  if (auto e = b.finish(inst)) throw std::runtime_error(e->message);
-  return inst;
-}
-
 // Time slabs on random stalactite combs: the same twins as on the random
 // instances (the cell sweep, every pair, the simulator, the brute
 // reference on the tiny ones), where most pieces must be split in time.
@@ -382,7 +323,7 @@ TEST(SingleCouplingTimeSlabs, AgreesWithTwinsOnRandomStalactiteCombs) {
   Tally tally;
   for (int i = 0; i < cases; ++i) {
     const uint64_t seed = seed0 + static_cast<uint64_t>(i);
-    const Instance inst = random_stalactite_comb(seed);
+    const Instance inst = bench::random_stalactite_comb(seed);
     const std::string where = "random stalactite comb, seed " + std::to_string(seed) +
                               "; replay with GRIDLOCK_TEST_SEED=" + std::to_string(seed);
     check_instance(inst, where, tally);

@@ -63,16 +63,16 @@ int run_certify(const std::vector<std::string>& args) {
     ans.comment(std::to_string(r.inequalities) + " gap inequalities derived, " + std::to_string(r.axioms) +
                 " closure clauses, " + std::to_string(r.lemmas) + " lemmas checked");
   if (r.kind == "collide") {
-    const std::string groups = r.one_axis ? "one axis, " + std::to_string(r.axioms) +
-                                                " pairs in row groups (a first collision is in one), "
-                               : r.kept_axis == 2 ? "one coupling, separated groups each keeping an order, " +
-                                                        std::to_string(r.axioms) +
-                                                        " pairs of their sweeps (if none overlaps, nothing does), "
-                               : r.kept_axis >= 0
-                                   ? std::string("one coupling, the ") + (r.kept_axis == 0 ? "x" : "y") +
-                                         " order kept, " + std::to_string(r.axioms) +
-                                         " pairs of the sweep along it (if none overlaps, nothing does), "
-                                   : "";
+    const std::string groups =
+        r.one_axis ? "one axis, " + std::to_string(r.axioms) + " pairs in row groups (a first collision is in one), "
+        : r.kept_axis == 3 ? "one coupling, groups over time slabs each keeping an order, " + std::to_string(r.axioms) +
+                                 " pairs of their sweeps (if none overlaps, nothing does), "
+        : r.kept_axis == 2 ? "one coupling, separated groups each keeping an order, " + std::to_string(r.axioms) +
+                                 " pairs of their sweeps (if none overlaps, nothing does), "
+        : r.kept_axis >= 0
+            ? std::string("one coupling, the ") + (r.kept_axis == 0 ? "x" : "y") + " order kept, " +
+                  std::to_string(r.axioms) + " pairs of the sweep along it (if none overlaps, nothing does), "
+            : "";
     ans.comment("no schedule collides (gridlock collide's NO, in both models): " + groups +
                 std::to_string(r.inequalities) + " pairs of regions kept apart by their multipliers, " +
                 std::to_string(r.lemmas) + " by one form");
@@ -88,7 +88,8 @@ int run_certify(const std::vector<std::string>& args) {
   if (r.kept_axis >= 0)
     ans.data()["kept_order_pairs"] = r.axioms, ans.data()["kept_axis"] = r.kept_axis == 0   ? "x"
                                                                          : r.kept_axis == 1 ? "y"
-                                                                                            : "separated";
+                                                                         : r.kept_axis == 2 ? "separated"
+                                                                                            : "slabs";
   return ans.finish(Verdict::No);
 }
 

@@ -80,6 +80,8 @@ void write_no_certificate(Answer& ans, const Instance& inst, TimeModel model, co
               (cert.one_axis         ? " (one axis: the row groups' pairs)"
                : cert.kept_axis == 2 ? std::string(" (one coupling, separated groups each keeping an order: their "
                                                    "sweeps' pairs)")
+               : cert.kept_axis == 3 ? std::string(" (one coupling, groups over time slabs each keeping an order: "
+                                                   "their sweeps' pairs)")
                : cert.kept_axis >= 0 ? std::string(" (one coupling, the ") + (cert.kept_axis == 0 ? "x" : "y") +
                                            " order kept: the sweep's pairs)"
                                      : "") +

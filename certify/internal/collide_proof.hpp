@@ -71,8 +71,11 @@ void check_collide_proof(const Instance& inst, std::string_view text, CertifyRes
 // at progress 1/2 (a leaving end before an entering one at one
 // coordinate) keeps the regions on the sweep line by their low face across
 // s at 1/2 and pairs each entering region with its two neighbours there.
-// O(R log R + n). The caller checks that there is one coupling and the
-// cycles (CertifyGeometry::cycle_breaker).
+// O(R log R + n). s = 2: the live regions cut into separated groups
+// first, each swept along the axis it keeps; s = 3: the same over dyadic
+// slabs of the progress, the faces rescaled to each (docs/certificates.md,
+// "Time slabs"), each pair once. The caller checks that there is one
+// coupling and the cycles (CertifyGeometry::cycle_breaker).
 std::optional<std::string> kept_order_pairs_of(const Instance& inst, const CertifyGeometry& geo, int s,
                                                std::vector<std::pair<uint32_t, uint32_t>>& out);
 
