@@ -542,7 +542,7 @@ std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& fa
 // piece of nearly all of them, and past that the cuts cost more than
 // the cell sweep they would spare.
 constexpr int kMaxCutDepth = 64;
-constexpr uint64_t kCutWork = 8;
+constexpr uint64_t kCutWork = 4;
 
 // A motion class: regions whose four faces move at the same speeds and
 // whose widths at t = 0 agree. Two regions of classes P and Q then

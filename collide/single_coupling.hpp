@@ -126,7 +126,7 @@ struct FixedAxisAnswer {
 };
 
 // nullopt when a group that keeps neither order cannot be cut (or the
-// cuts nest more than 64 deep, or the pieces placed hold more than 8 r
+// cuts nest more than 64 deep, or the pieces placed hold more than 4 r
 // members in all), or when some live region's width along its group's
 // other axis is not positive all along (0, 1) (only when the coupling
 // breaks a cycle: find_collision settles that first). The cuts cost
