@@ -681,7 +681,7 @@ void register_large_serpentines() {
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
   for (int64_t n : {32768, 65536, 131072, 262144})
-    for (int64_t how : {0, 2})
+    for (int64_t how : {0, 2, 5})  // Auto, the simulation, the bare cell sweep (Auto's attempts before it)
       benchmark::RegisterBenchmark("BM_DiagonalSingleCoupling", BM_DiagonalSingleCoupling)
           ->Args({n, how})
           ->Iterations(1)
