@@ -208,11 +208,11 @@ std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& 
 // the two halves of its slab (dyadic, down to 2^-12) and each half cut
 // and swept on its own (docs/collide.md, "One coupling: time slabs", the
 // proof). A NO costs O(W log r), W the members placed over every slab
-// (at most 32 r, and at most a quarter of the motion plus 1024, else
-// nullopt); a YES asks the groups in the order of
-// their slabs, bisects the first group that meets for its first moment
-// as single_coupling_fixed_axis does, and names the simulator's first
-// collision.
+// (at most 32 (r + 1), and at most a quarter of the motion plus 1024,
+// else nullopt); a YES asks the groups in the order of their slabs,
+// bisects each that meets for its first moment as
+// single_coupling_fixed_axis does, until a slab starts at or after the
+// earliest start found, and names the simulator's first collision.
 struct TimeSlabAnswer {
   // collides; on a YES pair, first and during, as single_coupling_sweep
   // and the simulator name them.
@@ -227,7 +227,7 @@ struct TimeSlabAnswer {
 
 // nullopt when a piece of more than 8 regions has no cut and keeps
 // neither order in a slab of 2^-12 (a piece of at most 8 is a group of
-// every pair), when the work exceeds the smaller of 32 r and a quarter
+// every pair), when the work exceeds the smaller of 32 (r + 1) and a quarter
 // of the motion plus 1024 (the motion is the cell sweep's cost: it is
 // then the faster), when the cuts nest deeper than 64, or when
 // some face's position or speed exceeds 2^40 (the exact arithmetic's
@@ -245,7 +245,7 @@ std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, c
 // and every pair of each small piece, as (smaller, larger), duplicates
 // possible. If no listed pair ever overlaps, no pair does (Lemma 5 of
 // docs/collide.md). The slabs are those of single_coupling_time_slabs
-// with the work budget 32 r alone (no motion term): O(r log r). nullopt
+// with the work budget 32 (r + 1) alone (no motion term): O(r log r). nullopt
 // when they decline or find an overlap.
 std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, const SpanningTree& t,
                                                          const Regions& regions);
