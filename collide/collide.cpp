@@ -373,8 +373,9 @@ CollideResult find_collision(const PreparedInstance& prep, TimeModel model, Coll
   // YES bisects for its first moment), else by the space-time cell sweep
   // (single_coupling.hpp); a piece that keeps neither order and has no
   // cut is split into time slabs, over which it may have cuts, else
-  // decided by motion classes when they cost no more than the motion. All YES name the first collision, checked at one
-  // moment; a YES of the cell sweep's packing bound names none and is simulated.
+  // decided by motion classes when they cost no more than the motion.
+  // All YES name the first collision, checked at one moment; a YES of
+  // the cell sweep's packing bound names none and is simulated.
   if (method == CollideMethod::Auto && nq == 1) return single_coupling_step(inst, sim, res, deadline, progress);
 
   // 3. No couplings: the centroid algorithm (or its all-pairs twin).

@@ -59,6 +59,15 @@ Span alive(const Faces& r) {
   return s;
 }
 
+// A region's motion: 1 + its largest x face speed + its largest y face
+// speed (the cell sweep's items for it, up to a constant).
+uint64_t region_motion(const Faces& f) {
+  const auto speed = [&](size_t lo) {
+    return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b)));
+  };
+  return 1 + speed(0) + speed(2);
+}
+
 // The times in (0, 1) at which A and B overlap with positive area: eight
 // strict linear inequalities (four overlaps, four widths), an open interval
 // (empty when they never overlap). An overlap at t = 1 is one just before
@@ -299,10 +308,7 @@ SingleCouplingAnswer single_coupling_sweep(const Instance& inst, const SpanningT
     const Faces& f = faces[r];
     if (alive(f).empty()) continue;
     live.push_back(r);
-    const auto speed = [&](int lo) {
-      return static_cast<uint64_t>(std::max(std::abs(f[lo].b), std::abs(f[lo + 1].b)));
-    };
-    st.motion += 1 + speed(0) + speed(2);
+    st.motion += region_motion(f);
   }
   st.regions = live.size();
   std::stable_sort(live.begin(), live.end(),
@@ -535,6 +541,16 @@ std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& fa
   return pieces;
 }
 
+// The pieces of the first axis (x, then y) along which `members` has a
+// cut (separated_pieces), or none when neither has.
+std::vector<std::vector<uint32_t>> first_cut(const std::vector<Faces>& faces, const std::vector<uint32_t>& members) {
+  for (size_t axis : {size_t{0}, size_t{1}}) {
+    std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, axis);
+    if (pieces.size() > 1) return pieces;
+  }
+  return {};
+}
+
 // Cuts past this depth are not followed (the cell sweep decides): the
 // cost stays O(r log r) per level, 64 levels at most. And the members of
 // the pieces placed, summed, stay within kCutWork per live region: a
@@ -675,8 +691,7 @@ std::optional<std::vector<MotionClass>> motion_classes_of(const std::vector<Face
     if (f[1].a - f[0].a > 2 || f[3].a - f[2].a > 2) return std::nullopt;  // widths at 0 are 0 or 1 (bounds above)
     for (const Lin& l : f)
       if (l.b > kMaxClassSpeed || l.b < -kMaxClassSpeed) return std::nullopt;
-    motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
-              static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
+    motion += region_motion(f);
     const auto [it, fresh] = index.emplace(class_key(f), classes.size());
     if (fresh) classes.emplace_back();
     classes[it->second].members.push_back(r);
@@ -734,16 +749,11 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
       out.groups.push_back(std::move(*g));
       continue;
     }
-    bool cut = false;
-    for (size_t axis : {size_t{0}, size_t{1}}) {
-      if (depth >= kMaxCutDepth) break;
-      std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, axis);
-      if (pieces.size() == 1) continue;
+    if (depth < kMaxCutDepth) {
+      std::vector<std::vector<uint32_t>> pieces = first_cut(faces, members);
       for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
-      cut = true;
-      break;
+      if (!pieces.empty()) continue;
     }
-    if (cut) continue;
     if (!uncut) return std::nullopt;
     uncut->push_back(std::move(members));
   }
@@ -850,9 +860,9 @@ struct Slab {
 // kSlabWork per live region and a quarter of the motion (the cell
 // sweep's items; placing a member costs a few times an item, measured)
 // plus kSlabFloor (on small instances either is fast): past either, the
-// time slabs give up and the cell sweep is the faster. A piece of at most kSmallPiece members
-// that has no cut and keeps neither order is not split: every pair of it
-// is tested over its slab.
+// time slabs give up and the cell sweep is the faster. A piece of at
+// most kSmallPiece members that has no cut and keeps neither order is not
+// split: every pair of it is tested over its slab.
 constexpr int kMaxSlabExp = 12;
 constexpr uint64_t kSlabWork = 32;
 constexpr size_t kSmallPiece = 8;
@@ -928,38 +938,31 @@ std::optional<std::vector<SlabGroup>> slab_groups(const std::vector<Faces>& face
     if (members.size() < 2) continue;
     std::vector<uint32_t> ids(members.size());
     for (uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
-    if (std::optional<KeptGroup> g = kept_group(local, ids)) {
-      SlabGroup sg;
+    // A group: kept-order (one group in its setup) or small (none).
+    auto place = [&](std::optional<KeptGroup> g) {
+      SlabGroup& sg = out.emplace_back();
       sg.slab = p.slab;
       sg.members = std::move(members);
       sg.setup.faces = std::move(local);
       sg.setup.live = std::move(ids);
-      sg.setup.groups.push_back(std::move(*g));
-      out.push_back(std::move(sg));
+      if (g) sg.setup.groups.push_back(std::move(*g));
+    };
+    if (std::optional<KeptGroup> g = kept_group(local, ids)) {
+      place(std::move(g));
       continue;
     }
-    bool cut = false;
-    for (size_t axis : {size_t{0}, size_t{1}}) {
-      if (p.depth >= kMaxCutDepth) break;
-      const std::vector<std::vector<uint32_t>> pieces = separated_pieces(local, ids, axis);
-      if (pieces.size() == 1) continue;
+    if (p.depth < kMaxCutDepth) {
+      const std::vector<std::vector<uint32_t>> pieces = first_cut(local, ids);
       for (const std::vector<uint32_t>& q : pieces) {
         Piece next{{}, p.slab, p.depth + 1};
         next.members.reserve(q.size());
         for (uint32_t i : q) next.members.push_back(members[i]);
         todo.push_back(std::move(next));
       }
-      cut = true;
-      break;
+      if (!pieces.empty()) continue;
     }
-    if (cut) continue;
     if (members.size() <= kSmallPiece) {
-      SlabGroup sg;
-      sg.slab = p.slab;
-      sg.members = std::move(members);
-      sg.setup.faces = std::move(local);
-      sg.setup.live = std::move(ids);
-      out.push_back(std::move(sg));
+      place(std::nullopt);
       continue;
     }
     if (p.slab.exp >= kMaxSlabExp) return std::nullopt;
@@ -1010,18 +1013,18 @@ std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, c
   KeptOrderPairs out;
   out.axis = 3;
   for (const SlabGroup& g : *groups) {
-    if (g.setup.groups.empty()) {  // a small piece: every pair
-      for (size_t i = 0; i < g.members.size(); ++i)
-        for (size_t j = i + 1; j < g.members.size(); ++j) {
-          if (!overlap_span(g.setup.faces[i], g.setup.faces[j]).empty()) return std::nullopt;
-          out.pairs.emplace_back(std::min(g.members[i], g.members[j]), std::max(g.members[i], g.members[j]));
-        }
-      continue;
-    }
     std::vector<std::pair<uint32_t, uint32_t>> local;
-    Earliest best;
-    uint64_t tests = 0;
-    if (any_collides_before(g.setup, Frac{1, 1}, best, tests, &local)) return std::nullopt;
+    if (g.setup.groups.empty()) {  // a small piece: every pair
+      for (uint32_t i = 0; i < g.members.size(); ++i)
+        for (uint32_t j = i + 1; j < g.members.size(); ++j) {
+          if (!overlap_span(g.setup.faces[i], g.setup.faces[j]).empty()) return std::nullopt;
+          local.emplace_back(i, j);
+        }
+    } else {
+      Earliest best;
+      uint64_t tests = 0;
+      if (any_collides_before(g.setup, Frac{1, 1}, best, tests, &local)) return std::nullopt;
+    }
     for (auto [i, j] : local)
       out.pairs.emplace_back(std::min(g.members[i], g.members[j]), std::max(g.members[i], g.members[j]));
   }
@@ -1079,11 +1082,7 @@ std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, c
   if (!live) return std::nullopt;
   const FixedAxisSetup& whole = *live;
   uint64_t motion = 0;
-  for (uint32_t r : whole.live) {
-    const Faces& f = whole.faces[r];
-    motion += 1 + static_cast<uint64_t>(std::max(std::abs(f[0].b), std::abs(f[1].b))) +
-              static_cast<uint64_t>(std::max(std::abs(f[2].b), std::abs(f[3].b)));
-  }
+  for (uint32_t r : whole.live) motion += region_motion(whole.faces[r]);
   TimeSlabAnswer out;
   const uint64_t budget = any_cost ? UINT64_MAX
                                    : std::min<uint64_t>(kSlabWork * (whole.live.size() + 1), motion / 4 + kSlabFloor)

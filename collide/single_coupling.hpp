@@ -130,8 +130,8 @@ struct FixedAxisAnswer {
 // members in all), or when some live region's width along its group's
 // other axis is not positive all along (0, 1) (only when the coupling
 // breaks a cycle: find_collision settles that first). The cuts cost
-// O(r log r) per level of nesting, O(r log r) in all. A NO costs one sweep of every
-// group, O(r log r); a YES bisects [0, 1] for the
+// O(r log r) per level of nesting, O(r log r) in all. A NO costs one
+// sweep of every group, O(r log r); a YES bisects [0, 1] for the
 // first moment, one or two sweeps per halving, at most about
 // 2 log2(2 max speed) + 2 halvings (distinct starts are fractions with
 // denominators up to twice the largest face speed), then the pairs whose
@@ -186,8 +186,8 @@ struct MotionClassAnswer {
 };
 
 // nullopt when the cuts nest deeper (or place more members) than
-// single_coupling_fixed_axis allows, when some region of a class group has a width that is not
-// positive all along (0, 1) (only when the coupling breaks a cycle), when
+// single_coupling_fixed_axis allows, when some region of a class group
+// has a width that is not positive all along (0, 1) (only when the coupling breaks a cycle), when
 // some face speed exceeds 2^19 (the exact arithmetic's bound), or,
 // unless any_cost, when some class group's k r exceeds its motion (the
 // sum of 1 + |speed_x| + |speed_y| over its regions, the cell sweep's
@@ -227,11 +227,11 @@ struct TimeSlabAnswer {
 
 // nullopt when a piece of more than 8 regions has no cut and keeps
 // neither order in a slab of 2^-12 (a piece of at most 8 is a group of
-// every pair), when the work exceeds the smaller of 32 (r + 1) and a quarter
-// of the motion plus 1024 (the motion is the cell sweep's cost: it is
-// then the faster), when the cuts nest deeper than 64, or when
-// some face's position or speed exceeds 2^40 (the exact arithmetic's
-// bound). For tests: first_exp (0 to 12) starts from the 2^first_exp
+// every pair), when the work exceeds the smaller of 32 (r + 1) and a
+// quarter of the motion plus 1024 (the motion is the cell sweep's cost:
+// it is then the faster), or when some face's position or speed exceeds
+// 2^40 (the exact arithmetic's bound); cuts nested deeper than 64 are
+// not followed. For tests: first_exp (0 to 12) starts from the 2^first_exp
 // slabs of that length instead of [0, 1] (the budget times as much);
 // any_cost drops the work budget (the depth's bound stays). Checks
 // deadline (if given) per piece and round.
@@ -245,8 +245,8 @@ std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, c
 // and every pair of each small piece, as (smaller, larger), duplicates
 // possible. If no listed pair ever overlaps, no pair does (Lemma 5 of
 // docs/collide.md). The slabs are those of single_coupling_time_slabs
-// with the work budget 32 (r + 1) alone (no motion term): O(r log r). nullopt
-// when they decline or find an overlap.
+// with the work budget 32 (r + 1) alone (no motion term): O(r log r).
+// nullopt when they decline or find an overlap.
 std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, const SpanningTree& t,
                                                          const Regions& regions);
 
