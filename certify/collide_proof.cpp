@@ -266,36 +266,33 @@ FaceLine width_of(const FaceLines& f, size_t axis) {
   return FaceLine{hi.a - lo.a, hi.b - lo.b};
 }
 
-// The faces of axis s of the live regions keep their order: sorted by the
-// order just after 0, their values at 1 never decrease. Else the reason.
-std::optional<std::string> order_changes(const Instance& inst, const Regions& regions,
-                                         const std::vector<FaceLines>& face, const std::vector<uint32_t>& live,
-                                         size_t s) {
+// Do the faces of axis s of `members` keep their order? Sorted by the
+// order just after 0, their values at 1 never decrease. Else two of the
+// members whose faces change order.
+std::optional<std::pair<uint32_t, uint32_t>> order_break(const std::vector<FaceLines>& face,
+                                                         const std::vector<uint32_t>& members, size_t s) {
   struct Ordered {
     FaceLine f;
     uint32_t r;
   };
   std::vector<Ordered> ends;
-  for (uint32_t r : live) ends.push_back({face[r][2 * s], r}), ends.push_back({face[r][2 * s + 1], r});
+  for (uint32_t r : members) ends.push_back({face[r][2 * s], r}), ends.push_back({face[r][2 * s + 1], r});
   std::ranges::sort(
       ends, [](const Ordered& x, const Ordered& y) { return std::pair(x.f.a, x.f.b) < std::pair(y.f.a, y.f.b); });
   for (size_t i = 0; i + 1 < ends.size(); ++i)
-    if (ends[i + 1].f.a + ends[i + 1].f.b < ends[i].f.a + ends[i].f.b)
-      return std::string("the ") + (s == 0 ? "x" : "y") + " faces of " + region_label(inst, regions, ends[i].r) +
-             " and " + region_label(inst, regions, ends[i + 1].r) + " change order";
+    if (ends[i + 1].f.a + ends[i + 1].f.b < ends[i].f.a + ends[i].f.b) return std::pair(ends[i].r, ends[i + 1].r);
   return std::nullopt;
 }
 
-// The same test without the names (for the slabs' local faces): true iff
-// the faces of axis s keep their order.
-bool order_kept(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members, size_t s) {
-  std::vector<FaceLine> ends;
-  for (uint32_t r : members) ends.push_back(face[r][2 * s]), ends.push_back(face[r][2 * s + 1]);
-  std::ranges::sort(ends,
-                    [](const FaceLine& x, const FaceLine& y) { return std::pair(x.a, x.b) < std::pair(y.a, y.b); });
-  for (size_t i = 0; i + 1 < ends.size(); ++i)
-    if (ends[i + 1].a + ends[i + 1].b < ends[i].a + ends[i].b) return false;
-  return true;
+// The faces of axis s of the live regions keep their order. Else the
+// reason, naming two regions whose faces change order.
+std::optional<std::string> order_changes(const Instance& inst, const Regions& regions,
+                                         const std::vector<FaceLines>& face, const std::vector<uint32_t>& live,
+                                         size_t s) {
+  const auto broken = order_break(face, live, s);
+  if (!broken) return std::nullopt;
+  return std::string("the ") + (s == 0 ? "x" : "y") + " faces of " + region_label(inst, regions, broken->first) +
+         " and " + region_label(inst, regions, broken->second) + " change order";
 }
 
 // The sweep along s at progress 1/2 (doubled: 2a + b), the regions on the
@@ -338,6 +335,18 @@ std::vector<std::pair<uint32_t, uint32_t>> sweep_pairs(const std::vector<FaceLin
 // An affine width positive on all of (0, 1): >= 0 at both ends, not 0 at both.
 bool positive_all_along(const FaceLine& w) { return w.a >= 0 && w.a + w.b >= 0 && (w.a != 0 || w.a + w.b != 0); }
 
+// The axis a piece is a group along: its x (else y) faces keep their
+// order and its widths across that axis stay positive all along; 2 when
+// it is not a group.
+size_t group_axis(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members) {
+  size_t s = 2;
+  for (size_t axis : {size_t{0}, size_t{1}})
+    if (s == 2 && !order_break(face, members, axis)) s = axis;
+  if (s == 2 || !std::ranges::all_of(members, [&](uint32_t r) { return positive_all_along(width_of(face[r], 1 - s)); }))
+    return 2;
+  return s;
+}
+
 // The pieces of `members` cut along s: sorted by (low face at 0, high
 // face at 0, region), a cut falls after position i when the greatest high
 // face of the regions up to i is at most the least low face of the rest,
@@ -368,6 +377,16 @@ std::vector<std::vector<uint32_t>> cut_along(const std::vector<FaceLines>& face,
   return pieces;
 }
 
+// The pieces of the first axis (x, then y) along which `members` has a
+// cut (cut_along), or none when neither has.
+std::vector<std::vector<uint32_t>> first_cut(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members) {
+  for (size_t axis : {size_t{0}, size_t{1}}) {
+    std::vector<std::vector<uint32_t>> pieces = cut_along(face, members, axis);
+    if (pieces.size() > 1) return pieces;
+  }
+  return {};
+}
+
 // The separated kind: the live regions cut (cut_along x, else y,
 // recursively, at most 64 levels) until every piece keeps the order of
 // one axis (x first) with its widths across it positive all along; the
@@ -379,11 +398,7 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
   while (!todo.empty()) {
     auto [members, depth] = std::move(todo.back());
     todo.pop_back();
-    size_t s = 2;
-    for (size_t axis : {size_t{0}, size_t{1}})
-      if (s == 2 && !order_changes(inst, regions, face, members, axis)) s = axis;
-    if (s != 2 &&
-        std::ranges::all_of(members, [&](uint32_t r) { return positive_all_along(width_of(face[r], 1 - s)); })) {
+    if (const size_t s = group_axis(face, members); s != 2) {
       std::vector<std::pair<uint32_t, uint32_t>> pairs = sweep_pairs(face, members, s);
       out.insert(out.end(), pairs.begin(), pairs.end());
       continue;
@@ -393,15 +408,9 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
              region_label(inst, regions, piece.front());
     };
     if (depth >= 64) return group() + " is cut more than 64 levels deep";
-    bool cut = false;
-    for (size_t axis : {size_t{0}, size_t{1}}) {
-      std::vector<std::vector<uint32_t>> pieces = cut_along(face, members, axis);
-      if (pieces.size() == 1) continue;
-      for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
-      cut = true;
-      break;
-    }
-    if (!cut) return group() + " keeps neither order and no cut along x or y separates it";
+    std::vector<std::vector<uint32_t>> pieces = first_cut(face, members);
+    if (pieces.empty()) return group() + " keeps neither order and no cut along x or y separates it";
+    for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
   }
   return std::nullopt;
 }
@@ -451,27 +460,19 @@ std::optional<std::string> slab_pairs(const std::vector<FaceLines>& face, const 
     if (members.size() < 2) continue;
     std::vector<uint32_t> ids(members.size());
     for (uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
-    size_t s = 2;
-    for (size_t axis : {size_t{0}, size_t{1}})
-      if (s == 2 && order_kept(local, ids, axis)) s = axis;
-    if (s != 2 && std::ranges::all_of(ids, [&](uint32_t i) { return positive_all_along(width_of(local[i], 1 - s)); })) {
+    if (const size_t s = group_axis(local, ids); s != 2) {
       for (auto [x, y] : sweep_pairs(local, ids, s)) pair(members[x], members[y]);
       continue;
     }
-    bool cut = false;
-    for (size_t axis : {size_t{0}, size_t{1}}) {
-      if (p.depth >= 64) break;
-      std::vector<std::vector<uint32_t>> pieces = cut_along(local, ids, axis);
-      if (pieces.size() == 1) continue;
+    if (p.depth < 64) {
+      const std::vector<std::vector<uint32_t>> pieces = first_cut(local, ids);
       for (const std::vector<uint32_t>& q : pieces) {
         Piece next{{}, p.m, p.e, p.depth + 1};
         for (uint32_t i : q) next.members.push_back(members[i]);
         todo.push_back(std::move(next));
       }
-      cut = true;
-      break;
+      if (!pieces.empty()) continue;
     }
-    if (cut) continue;
     if (members.size() <= 8) {
       for (size_t i = 0; i < members.size(); ++i)
         for (size_t j = i + 1; j < members.size(); ++j) pair(members[i], members[j]);
