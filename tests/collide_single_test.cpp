@@ -90,6 +90,20 @@ void expect_names_first(const Instance& inst, const SingleCouplingAnswer& ans, c
   ASSERT_EQ(ans.pair->b, c.b) << where;
 }
 
+// A faster method's answer `got` against the cell sweep's `swept`: the
+// same verdict; a YES's pair overlaps at its `during`, and when the sweep
+// names its first collision, got names the same moment and pair.
+void expect_sweeps_answer(const Instance& inst, const SingleCouplingAnswer& got, const SingleCouplingAnswer& swept,
+                          const std::string& how) {
+  ASSERT_EQ(got.collides, swept.collides) << how;
+  if (!swept.collides) return;
+  expect_overlaps_during(inst, got, how);
+  if (::testing::Test::HasFatalFailure() || !swept.pair) return;
+  ASSERT_EQ(*got.first, *swept.first) << how;
+  ASSERT_EQ(got.pair->a, swept.pair->a) << how;
+  ASSERT_EQ(got.pair->b, swept.pair->b) << how;
+}
+
 // Sweep, all pairs and the simulator (all operations from t = 0) agree on
 // whether a node collision happens, and the sweep names the simulator's
 // first collision; find_collision agrees with the brute reference on tiny
@@ -131,17 +145,11 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     const std::optional<MotionClassAnswer> mc = single_coupling_motion_classes(inst, sim.tree(), sim.regions(), nullptr,
                                                                                whole, true);
     if (!mc) continue;
-    ASSERT_EQ(mc->answer.collides, sweep) << how;
+    // The first collision, as the cell sweep names it (the simulator's:
+    // checked against it below).
+    expect_sweeps_answer(inst, mc->answer, ans, how);
+    if (::testing::Test::HasFatalFailure()) return;
     if (sweep) {
-      // The first collision, as the cell sweep names it (the simulator's:
-      // checked against it below).
-      expect_overlaps_during(inst, mc->answer, how);
-      if (::testing::Test::HasFatalFailure()) return;
-      if (ans.pair) {
-        ASSERT_EQ(*mc->answer.first, *ans.first) << how;
-        ASSERT_EQ(mc->answer.pair->a, ans.pair->a) << how;
-        ASSERT_EQ(mc->answer.pair->b, ans.pair->b) << how;
-      }
       tally.classes_rounds += mc->sweeps;
     } else {
       ASSERT_EQ(mc->sweeps, 1u) << how;
@@ -150,11 +158,11 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     if (!whole) tally.class_groups += mc->class_groups > 0;
   }
   // Time slabs: the same verdict; a YES names the cell sweep's first
-  // collision (pair and moment).
-  // Whatever their cost (Auto's budget declines most small instances,
-  // whose motion is small), and also started from 4 and 8 slabs, so that
-  // every instance is cut over slabs (the rescaled faces, the slabs'
-  // order, the first moment mapped back); -1: with Auto's budget.
+  // collision (pair and moment). With Auto's budget (-1), whatever their
+  // cost (the budget declines most small instances, whose motion is
+  // small), and started from 4 and 8 slabs, so that every instance is cut
+  // over slabs (the rescaled faces, the slabs' order, the first moment
+  // mapped back).
   const std::optional<TimeSlabAnswer> slabs = single_coupling_time_slabs(inst, sim.tree(), sim.regions());
   for (int first_exp : {-1, 0, 2, 3}) {
     const std::optional<TimeSlabAnswer> ts = first_exp < 0 ? slabs
@@ -163,16 +171,8 @@ void check_instance(const Instance& inst, const std::string& where, Tally& tally
     if (!ts) continue;
     const std::string how = where + (first_exp < 0 ? std::string(", time slabs (Auto's budget)")
                                                    : ", time slabs from 2^" + std::to_string(first_exp));
-    ASSERT_EQ(ts->answer.collides, sweep) << how;
-    if (sweep) {
-      expect_overlaps_during(inst, ts->answer, how);
-      if (::testing::Test::HasFatalFailure()) return;
-      if (ans.pair) {
-        ASSERT_EQ(*ts->answer.first, *ans.first) << how;
-        ASSERT_EQ(ts->answer.pair->a, ans.pair->a) << how;
-        ASSERT_EQ(ts->answer.pair->b, ans.pair->b) << how;
-      }
-    }
+    expect_sweeps_answer(inst, ts->answer, ans, how);
+    if (::testing::Test::HasFatalFailure()) return;
     if (first_exp == 0) (sweep ? tally.slabs_yes : tally.slabs_no)++;
     if (first_exp == 0) tally.slabs_split += ts->finest > 0;
     if (first_exp == 3) (sweep ? tally.slabs8_yes : tally.slabs8_no)++;
