@@ -188,8 +188,8 @@ CollideCertificate collide_no_certificate(const Instance& inst, const Deadline* 
   // One coupling whose faces keep their order on one axis: only the pairs
   // the fixed-axis sweep tests (if none overlaps, nothing does).
   if (!every_pair && !groups && inst.couplings().size() == 1) {
-    std::optional<KeptOrderPairs> kept = single_coupling_kept_order_pairs(inst, tree, regions);
-    if (!kept && (kept = single_coupling_slab_pairs(inst, tree, regions))) {  // cut over time slabs
+    std::optional<KeptOrderPairs> kept = single_coupling_kept_order_pairs(inst, tree, regions, deadline);
+    if (!kept && (kept = single_coupling_slab_pairs(inst, tree, regions, deadline))) {  // cut over time slabs
       std::ranges::sort(kept->pairs);  // a pair met in several slabs is listed once
       kept->pairs.erase(std::unique(kept->pairs.begin(), kept->pairs.end()), kept->pairs.end());
     }

@@ -438,8 +438,10 @@ struct AxisEvent {
 // T/2. A new region overlapping some kept one overlaps one of its two
 // neighbours there (docs/collide.md, "One coupling: one axis keeps its
 // order": the proof). The first overlap met is kept in best. O(r log r).
+// Checks deadline (if given) every 4096 events.
 bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEvent>& events, size_t m, const Frac& T,
-                     Earliest& best, uint64_t& tests, std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
+                     Earliest& best, uint64_t& tests, const Deadline* deadline,
+                     std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
   if (T.num <= 0) return false;  // (0, T) is empty (a first moment at t = 0)
   // The low m face at T/2, times 2 T.den.
   auto key = [&](uint32_t r) {
@@ -455,7 +457,9 @@ bool collides_before(const std::vector<Faces>& faces, const std::vector<AxisEven
     return true;
   };
   std::map<__int128, uint32_t> active;  // distinct keys: equal ones overlap at T/2
+  size_t seen = 0;
   for (const AxisEvent& e : events) {
+    if (deadline && (++seen & 4095) == 0) deadline->check();
     const __int128 lo = key(e.r);
     if (e.kind == 0) {
       active.erase(lo);
@@ -542,9 +546,12 @@ std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& fa
 }
 
 // The pieces of the first axis (x, then y) along which `members` has a
-// cut (separated_pieces), or none when neither has.
-std::vector<std::vector<uint32_t>> first_cut(const std::vector<Faces>& faces, const std::vector<uint32_t>& members) {
+// cut (separated_pieces), or none when neither has. Checks deadline (if
+// given) before each axis.
+std::vector<std::vector<uint32_t>> first_cut(const std::vector<Faces>& faces, const std::vector<uint32_t>& members,
+                                             const Deadline* deadline) {
   for (size_t axis : {size_t{0}, size_t{1}}) {
+    if (deadline) deadline->check();
     std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, axis);
     if (pieces.size() > 1) return pieces;
   }
@@ -714,7 +721,7 @@ struct FixedAxisSetup {
   std::vector<KeptGroup> groups;
   std::vector<std::vector<MotionClass>> class_groups;
   mutable uint64_t class_pairs = 0, queries = 0;  // asked of the class groups
-  const Deadline* deadline = nullptr;             // checked per class pair
+  const Deadline* deadline = nullptr;             // checked per class pair and in the sweeps
 };
 
 // The faces and the live regions (positive widths at some t), no groups
@@ -733,6 +740,7 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
                                                const Deadline* deadline = nullptr,
                                                std::vector<std::vector<uint32_t>>* uncut = nullptr) {
   FixedAxisSetup out = live_regions(inst, t, regions);
+  out.deadline = deadline;
   const std::vector<Faces>& faces = out.faces;
   // Pieces to place, with their depth of cuts.
   std::vector<std::pair<std::vector<uint32_t>, int>> todo;
@@ -750,7 +758,7 @@ std::optional<FixedAxisSetup> fixed_axis_setup(const Instance& inst, const Spann
       continue;
     }
     if (depth < kMaxCutDepth) {
-      std::vector<std::vector<uint32_t>> pieces = first_cut(faces, members);
+      std::vector<std::vector<uint32_t>> pieces = first_cut(faces, members, deadline);
       for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
       if (!pieces.empty()) continue;
     }
@@ -797,7 +805,7 @@ void smallest_first_pair(const std::vector<Faces>& faces, const std::vector<uint
 bool any_collides_before(const FixedAxisSetup& setup, const Frac& T, Earliest& best, uint64_t& tests,
                          std::vector<std::pair<uint32_t, uint32_t>>* tested = nullptr) {
   for (const KeptGroup& g : setup.groups)
-    if (collides_before(setup.faces, g.events, 1 - g.s, T, best, tests, tested)) return true;
+    if (collides_before(setup.faces, g.events, 1 - g.s, T, best, tests, setup.deadline, tested)) return true;
   if (T.num <= 0) return false;
   for (const std::vector<MotionClass>& classes : setup.class_groups)
     for (size_t p = 0; p < classes.size(); ++p)
@@ -952,7 +960,7 @@ std::optional<std::vector<SlabGroup>> slab_groups(const std::vector<Faces>& face
       continue;
     }
     if (p.depth < kMaxCutDepth) {
-      const std::vector<std::vector<uint32_t>> pieces = first_cut(local, ids);
+      const std::vector<std::vector<uint32_t>> pieces = first_cut(local, ids, deadline);
       for (const std::vector<uint32_t>& q : pieces) {
         Piece next{{}, p.slab, p.depth + 1};
         next.members.reserve(q.size());
@@ -990,8 +998,8 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
 }
 
 std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,
-                                                               const Regions& regions) {
-  const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions);
+                                                               const Regions& regions, const Deadline* deadline) {
+  const std::optional<FixedAxisSetup> setup = fixed_axis_setup(inst, t, regions, deadline);
   if (!setup) return std::nullopt;
   KeptOrderPairs out;
   out.axis = setup->groups.size() == 1 ? static_cast<int>(setup->groups[0].s) : 2;
@@ -1002,17 +1010,17 @@ std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& i
 }
 
 std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, const SpanningTree& t,
-                                                         const Regions& regions) {
+                                                         const Regions& regions, const Deadline* deadline) {
   const std::optional<FixedAxisSetup> live = slab_live_regions(inst, t, regions);
   if (!live) return std::nullopt;
   const FixedAxisSetup& whole = *live;
   uint64_t work = 0;
   std::optional<std::vector<SlabGroup>> groups = slab_groups(whole.faces, whole.live, 0,
-                                                             kSlabWork * (whole.live.size() + 1), nullptr, work);
+                                                             kSlabWork * (whole.live.size() + 1), deadline, work);
   if (!groups) return std::nullopt;
   KeptOrderPairs out;
   out.axis = 3;
-  for (const SlabGroup& g : *groups) {
+  for (SlabGroup& g : *groups) {
     std::vector<std::pair<uint32_t, uint32_t>> local;
     if (g.setup.groups.empty()) {  // a small piece: every pair
       for (uint32_t i = 0; i < g.members.size(); ++i)
@@ -1023,6 +1031,7 @@ std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, c
     } else {
       Earliest best;
       uint64_t tests = 0;
+      g.setup.deadline = deadline;
       if (any_collides_before(g.setup, Frac{1, 1}, best, tests, &local)) return std::nullopt;
     }
     for (auto [i, j] : local)

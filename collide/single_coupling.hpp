@@ -137,7 +137,8 @@ struct FixedAxisAnswer {
 // denominators up to twice the largest face speed), then the pairs whose
 // closed boxes share a unit cell at that moment, for the smallest one
 // starting then (the simulator's pair). Checks deadline (if
-// given) once per piece of the cuts and between sweeps.
+// given) once per piece of the cuts, between sweeps and every 4096
+// events of a sweep.
 std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, const SpanningTree& t,
                                                           const Regions& regions, const Deadline* deadline = nullptr);
 
@@ -150,13 +151,15 @@ std::optional<FixedAxisAnswer> single_coupling_fixed_axis(const Instance& inst, 
 // own sweep). With several separated groups, the pairs of every group's
 // sweep (axis 2: the certificate's `kept-order separated`; the checker
 // cuts the groups itself). nullopt when single_coupling_fixed_axis
-// returns nullopt or a YES. O(r log r) per level of cuts.
+// returns nullopt or a YES. O(r log r) per level of cuts. Checks
+// deadline (if given) as single_coupling_fixed_axis does.
 struct KeptOrderPairs {
   int axis = 0;  // the kept axis (0 x, 1 y), 2: several separated groups, each keeping one, 3: over time slabs
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
 };
 std::optional<KeptOrderPairs> single_coupling_kept_order_pairs(const Instance& inst, const SpanningTree& t,
-                                                               const Regions& regions);
+                                                               const Regions& regions,
+                                                               const Deadline* deadline = nullptr);
 
 // Motion classes: when some piece keeps neither order and has no cut
 // (single_coupling_fixed_axis gives up), its regions are grouped by
@@ -193,8 +196,8 @@ struct MotionClassAnswer {
 // sum of 1 + |speed_x| + |speed_y| over its regions, the cell sweep's
 // cost): then the cell sweep is the cheaper method. whole (for tests):
 // no cuts and no kept-order sweeps, every live region in one class
-// group. Checks deadline (if given) per piece, per class pair and per
-// round.
+// group. Checks deadline (if given) per piece, per class pair, per
+// round and every 4096 events of a kept-order sweep.
 std::optional<MotionClassAnswer> single_coupling_motion_classes(const Instance& inst, const SpanningTree& t,
                                                                 const Regions& regions,
                                                                 const Deadline* deadline = nullptr, bool whole = false,
@@ -234,7 +237,8 @@ struct TimeSlabAnswer {
 // not followed. For tests: first_exp (0 to 12) starts from the 2^first_exp
 // slabs of that length instead of [0, 1] (the budget times as much);
 // any_cost drops the work budget (the depth's bound stays). Checks
-// deadline (if given) per piece and round.
+// deadline (if given) per piece, per round and every 4096 events of a
+// sweep.
 std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, const SpanningTree& t,
                                                          const Regions& regions, const Deadline* deadline = nullptr,
                                                          int first_exp = 0, bool any_cost = false);
@@ -246,9 +250,10 @@ std::optional<TimeSlabAnswer> single_coupling_time_slabs(const Instance& inst, c
 // possible. If no listed pair ever overlaps, no pair does (Lemma 5 of
 // docs/collide.md). The slabs are those of single_coupling_time_slabs
 // with the work budget 32 (r + 1) alone (no motion term): O(r log r).
-// nullopt when they decline or find an overlap.
+// nullopt when they decline or find an overlap. Checks deadline (if
+// given) as single_coupling_time_slabs does.
 std::optional<KeptOrderPairs> single_coupling_slab_pairs(const Instance& inst, const SpanningTree& t,
-                                                         const Regions& regions);
+                                                         const Regions& regions, const Deadline* deadline = nullptr);
 
 // The question each round of the classes' bisection asks, exposed for its
 // twin test: with every live region in one class group (every class pair

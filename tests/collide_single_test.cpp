@@ -707,6 +707,24 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByTimeSlabsAndMotionClasses) {
   }
 }
 
+// A limit reached stops the time slabs and the pairs the certificates
+// list (the slabs' and the fixed-axis sweep's) with LimitReached, not
+// with an answer: the own-speed comb, whose slabs place many pieces.
+TEST(SingleCouplingTimeSlabs, StopAtAnExpiredDeadline) {
+  const Instance comb = bench::stalactite_comb(40, true);
+  const Instance lidded = bench::comb(64, 3, 64, bench::CombOps::Mixed, 0, 7, true);
+  const Deadline expired(1e-9);
+  while (!expired.expired()) {
+  }
+  Simulator sim(comb), lid(lidded);
+  EXPECT_THROW(single_coupling_time_slabs(comb, sim.tree(), sim.regions(), &expired), LimitReached);
+  EXPECT_THROW(single_coupling_slab_pairs(comb, sim.tree(), sim.regions(), &expired), LimitReached);
+  EXPECT_THROW(single_coupling_kept_order_pairs(lidded, lid.tree(), lid.regions(), &expired), LimitReached);
+  // Without a limit, the same calls answer.
+  EXPECT_TRUE(single_coupling_slab_pairs(comb, sim.tree(), sim.regions()));
+  EXPECT_TRUE(single_coupling_kept_order_pairs(lidded, lid.tree(), lid.regions()));
+}
+
 // The awning comb (bench/bench_families.hpp): the x faces keep their
 // order, and the middle short tooth reaches its awning at t = 2/3. The
 // fixed-axis sweep bisects for that moment and names that pair; the cell
