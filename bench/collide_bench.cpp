@@ -334,6 +334,19 @@ void BM_DiagonalHitSingleCoupling(benchmark::State& state) {
   single_coupling_bench(state, diagonal_sweep_of_size(state.range(0), true));
 }
 
+// The band sweep of slope p = range(2) (collide/adversarial.hpp): a
+// staircase carried along (p, 1) past a static band, total motion
+// Theta(n^2); Auto cuts it across the motion (docs/collide.md, "Separated
+// groups").
+void BM_BandSingleCoupling(benchmark::State& state) {
+  single_coupling_bench(state, band_sweep_of_size(state.range(0), static_cast<uint32_t>(state.range(2))));
+}
+
+// The arc sweep (collide/adversarial.hpp): cells moving away from the
+// anchor in Theta(sqrt n) directions beside a static copy, total motion
+// Theta(n^2), no cut: Auto's worst case today (the cell sweep).
+void BM_ArcSingleCoupling(benchmark::State& state) { single_coupling_bench(state, arc_sweep_of_size(state.range(0))); }
+
 // The discrete answer as `collide --model discrete` gives it, on the mixed
 // serpentine (docs/performance.md, "The discrete answer by the continuous
 // decider"). range(1): coupling size as in serpentine_bench (3, 0: sqrt
@@ -457,6 +470,9 @@ BENCHMARK(BM_OneAxisCouplings)->ArgsProduct({{1024, 4096}, {0, 1, 2}, {1}})->Uni
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalSingleCoupling)->ArgsProduct({{1024}, {1, 3}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiagonalHitSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BandSingleCoupling)->ArgsProduct({{1024, 4096, 16384}, {0, 5}, {1, 2, 3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BandSingleCoupling)->ArgsProduct({{1024, 4096}, {2}, {1, 2, 3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ArcSingleCoupling)->ArgsProduct({{1024, 4096}, {0, 2, 5}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentineSubsetSumMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SerpentinePerVectorMixed)->ArgsProduct({{36, 64, 100}, {3, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiscreteAnswerSerpentine)
@@ -469,6 +485,7 @@ void register_large_serpentines();
 void register_large_fans();
 void register_large_discrete_answers();
 void register_large_one_axis();
+void register_large_cut_families();
 
 void register_large() {
   for (int64_t n : {300000, 1000000}) {
@@ -505,6 +522,7 @@ void register_large() {
   register_large_serpentines();
   register_large_discrete_answers();
   register_large_one_axis();
+  register_large_cut_families();
   register_large_fans();
 }
 
@@ -537,6 +555,22 @@ void register_large_discrete_answers() {
 }
 
 // One coupling on one axis: the spine comb's large sizes.
+// The band sweeps, cut across the motion, and the arc sweep, which no cut
+// separates (the cell sweep, quadratic).
+void register_large_cut_families() {
+  for (int64_t n : {65536, 262144, 1048576})
+    for (int64_t p : {1, 2, 3})
+      benchmark::RegisterBenchmark("BM_BandSingleCoupling", BM_BandSingleCoupling)
+          ->Args({n, 0, p})
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
+  for (int64_t n : {16384, 32768})
+    benchmark::RegisterBenchmark("BM_ArcSingleCoupling", BM_ArcSingleCoupling)
+        ->Args({n, 0})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+}
+
 void register_large_one_axis() {
   // One axis keeping its order: one sweep along it (the mixed comb's
   // 16 384 and 65 536 are with the large serpentines).

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -347,47 +349,114 @@ size_t group_axis(const std::vector<FaceLines>& face, const std::vector<uint32_t
   return s;
 }
 
-// The pieces of `members` cut along s: sorted by (low face at 0, high
-// face at 0, region), a cut falls after position i when the greatest high
-// face of the regions up to i is at most the least low face of the rest,
-// at progress 0 and at 1. Then every region before the cut lies at or
-// below every region after it at 0 and at 1, so (faces linear in the
-// progress) all along: no pair across a cut ever overlaps.
-std::vector<std::vector<uint32_t>> cut_along(const std::vector<FaceLines>& face, std::vector<uint32_t> members,
-                                             size_t s) {
-  const size_t lo = 2 * s, hi = lo + 1;
-  std::ranges::sort(members, [&](uint32_t x, uint32_t y) {
-    return std::tuple(face[x][lo].a, face[x][hi].a, x) < std::tuple(face[y][lo].a, face[y][hi].a, y);
+// A direction of a cut, (dx, dy): a region's extent along it is the
+// interval of dx x + dy y over its rectangle, each end a sum of faces
+// times integers, so linear in the progress.
+struct CutDir {
+  int64_t dx = 1, dy = 0;
+};
+std::array<FaceLine, 2> extent_along(const FaceLines& f, CutDir d) {
+  const auto scaled = [](int64_t c, const FaceLine& u) { return FaceLine{c * u.a, c * u.b}; };
+  const auto plus = [](const FaceLine& u, const FaceLine& v) { return FaceLine{u.a + v.a, u.b + v.b}; };
+  const size_t xl = d.dx >= 0 ? 0 : 1, yl = d.dy >= 0 ? 2 : 3;
+  return {plus(scaled(d.dx, f[xl]), scaled(d.dy, f[yl])), plus(scaled(d.dx, f[1 - xl]), scaled(d.dy, f[5 - yl]))};
+}
+
+// (x, y) divided by their gcd, its first non-zero coordinate made positive.
+std::pair<int64_t, int64_t> reduced(int64_t x, int64_t y) {
+  const int64_t g = std::gcd(x, y);
+  x /= g, y /= g;
+  if (x < 0 || (x == 0 && y < 0)) return {-x, -y};
+  return {x, y};
+}
+
+// The most frequent of a non-empty list, the least on ties.
+std::pair<int64_t, int64_t> most_frequent(std::vector<std::pair<int64_t, int64_t>> list) {
+  std::ranges::sort(list);
+  std::pair<int64_t, int64_t> best = list.front();
+  size_t best_count = 0;
+  for (size_t i = 0; i < list.size();) {
+    size_t j = i;
+    while (j < list.size() && list[j] == list[i]) ++j;
+    if (j - i > best_count) best = list[i], best_count = j - i;
+    i = j;
+  }
+  return best;
+}
+
+// The cut directions tried, in order: x, y, x + y, x - y, then the one
+// from the motion of `members`: with v a region's velocity (its low x and
+// low y faces' speeds) and m the most frequent v, u the most frequent of
+// reduced(v - m) over the regions with v != m; the direction is
+// reduced(u_y, -u_x) when it differs from the four and neither
+// coordinate exceeds 64 in size.
+std::vector<CutDir> cut_directions(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members) {
+  std::vector<CutDir> dirs{{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  if (members.empty()) return dirs;
+  std::vector<std::pair<int64_t, int64_t>> v, u;
+  for (uint32_t r : members) v.emplace_back(face[r][0].b, face[r][2].b);
+  const std::pair<int64_t, int64_t> m = most_frequent(v);
+  for (const auto& w : v)
+    if (w != m) u.push_back(reduced(w.first - m.first, w.second - m.second));
+  if (u.empty()) return dirs;
+  const std::pair<int64_t, int64_t> w = most_frequent(u);
+  const auto [dx, dy] = reduced(w.second, -w.first);
+  if (std::abs(dx) > 64 || std::abs(dy) > 64) return dirs;
+  for (const CutDir& f : dirs)
+    if (f.dx == dx && f.dy == dy) return dirs;
+  dirs.push_back({dx, dy});
+  return dirs;
+}
+
+// The pieces of `members` cut along direction d: sorted by (low end at
+// 0, high end at 0, region), a cut falls after position i when the
+// greatest high end of the regions up to i is at most the least low end
+// of the rest, at progress 0 and at 1. Then every region before the cut
+// lies at or below every region after it along d at 0 and at 1, so (ends
+// linear in the progress) all along: their projections share no inner
+// point, and no pair across a cut ever overlaps.
+std::vector<std::vector<uint32_t>> cut_along(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members,
+                                             CutDir d) {
+  std::vector<std::pair<std::array<FaceLine, 2>, uint32_t>> ext;
+  ext.reserve(members.size());
+  for (uint32_t r : members) ext.emplace_back(extent_along(face[r], d), r);
+  std::ranges::sort(ext, [](const auto& x, const auto& y) {
+    return std::tuple(x.first[0].a, x.first[1].a, x.second) < std::tuple(y.first[0].a, y.first[1].a, y.second);
   });
-  const size_t k = members.size();
-  // rest[i]: the least low face at 0 and at 1 of members i, i + 1, ...
+  const size_t k = ext.size();
+  // rest[i]: the least low end at 0 and at 1 of members i, i + 1, ...
   std::vector<std::pair<int64_t, int64_t>> rest(k + 1, {INT64_MAX, INT64_MAX});
   for (size_t i = k; i-- > 0;) {
-    const FaceLine& f = face[members[i]][lo];
+    const FaceLine& f = ext[i].first[0];
     rest[i] = {std::min(rest[i + 1].first, f.a), std::min(rest[i + 1].second, f.a + f.b)};
   }
   std::vector<std::vector<uint32_t>> pieces(1);
-  int64_t hi0 = INT64_MIN, hi1 = INT64_MIN;  // the greatest high face at 0 and at 1 so far
+  int64_t hi0 = INT64_MIN, hi1 = INT64_MIN;  // the greatest high end at 0 and at 1 so far
   for (size_t i = 0; i < k; ++i) {
-    const FaceLine& f = face[members[i]][hi];
+    const FaceLine& f = ext[i].first[1];
     hi0 = std::max(hi0, f.a), hi1 = std::max(hi1, f.a + f.b);
-    pieces.back().push_back(members[i]);
+    pieces.back().push_back(ext[i].second);
     if (i + 1 < k && hi0 <= rest[i + 1].first && hi1 <= rest[i + 1].second) pieces.emplace_back();
   }
   return pieces;
 }
 
-// The pieces of the first axis (x, then y) along which `members` has a
-// cut (cut_along), or none when neither has.
+// The pieces of the direction (cut_directions, in order) whose cut
+// leaves the smallest largest piece, the first such on ties, or none when
+// no direction has a cut.
 std::vector<std::vector<uint32_t>> first_cut(const std::vector<FaceLines>& face, const std::vector<uint32_t>& members) {
-  for (size_t axis : {size_t{0}, size_t{1}}) {
-    std::vector<std::vector<uint32_t>> pieces = cut_along(face, members, axis);
-    if (pieces.size() > 1) return pieces;
+  std::vector<std::vector<uint32_t>> best;
+  size_t best_largest = members.size();
+  for (const CutDir& d : cut_directions(face, members)) {
+    std::vector<std::vector<uint32_t>> pieces = cut_along(face, members, d);
+    size_t largest = 0;
+    for (const auto& piece : pieces) largest = std::max(largest, piece.size());
+    if (pieces.size() > 1 && largest < best_largest) best = std::move(pieces), best_largest = largest;
   }
-  return {};
+  return best;
 }
 
-// The separated kind: the live regions cut (cut_along x, else y,
+// The separated kind: the live regions cut (first_cut,
 // recursively, at most 64 levels) until every piece keeps the order of
 // one axis (x first) with its widths across it positive all along; the
 // pairs of each piece's sweep. Else the reason.
@@ -409,7 +478,8 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
     };
     if (depth >= 64) return group() + " is cut more than 64 levels deep";
     std::vector<std::vector<uint32_t>> pieces = first_cut(face, members);
-    if (pieces.empty()) return group() + " keeps neither order and no cut along x or y separates it";
+    if (pieces.empty())
+      return group() + " keeps neither order and no cut along x, y, x + y, x - y or across its motion separates it";
     for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
   }
   return std::nullopt;
@@ -422,7 +492,7 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
 // first drops the regions with no common moment of positive widths inside
 // its slab and is done with fewer than two; then it is a group when its x
 // (else y) faces keep their order with its widths across that axis
-// positive all along (its sweep's pairs); else cut along x, else y (not
+// positive all along (its sweep's pairs); else cut (first_cut; not
 // past 64 levels of cuts); else, with at most 8 regions, all its pairs;
 // else its slab's two halves. Refused past 2^-12, past 32 (r + 1) members
 // placed (summed over the pieces before the drop), or with a face beyond
@@ -480,7 +550,8 @@ std::optional<std::string> slab_pairs(const std::vector<FaceLines>& face, const 
     }
     if (p.e >= 12)
       return "a piece of " + std::to_string(members.size()) + " regions over the slab [" + std::to_string(p.m) +
-             "/4096, " + std::to_string(p.m + 1) + "/4096] keeps neither order and no cut along x or y separates it";
+             "/4096, " + std::to_string(p.m + 1) +
+             "/4096] keeps neither order and no cut along x, y, x + y, x - y or across its motion separates it";
     todo.push_back({members, 2 * p.m + 1, p.e + 1, p.depth});
     todo.push_back({std::move(members), 2 * p.m, p.e + 1, p.depth});
   }

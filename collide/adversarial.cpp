@@ -196,4 +196,104 @@ Instance diagonal_sweep_of_size(int64_t n, bool hits) {
   return diagonal_sweep_instance(K, K / 2, hits);
 }
 
+Instance band_sweep_instance(uint32_t K, uint32_t p, uint32_t w, bool hits) {
+  if (K == 0 || w == 0 || p == 0 || p > 3)
+    throw std::invalid_argument("band_sweep_instance: needs K >= 1, w >= 1 and p in 1..3");
+  InstanceBuilder bl;
+  std::vector<std::string> ops;
+  const int64_t P = p, W = w, k = K, G = hits ? 4 * P : std::max<int64_t>(4 * P + 1, W) + 1, top = 3 * k + W + 1;
+  // The staircase, anchor first: 2p rights (an expansion on the odd ones), 2 ups (one on the first).
+  Vec2 at{0, 0};
+  must(bl.add_node(at));
+  for (int64_t m = 0; m < k; ++m)
+    for (int64_t e = 0; e < 2 * P + 2; ++e) {
+      const Dir d = e < 2 * P ? Dir::PosX : Dir::PosY;
+      const Vec2 next = at + unit(d);
+      must(bl.add_node(next));
+      must(bl.add_edge(at, next));
+      if (e % 2 == 0 && e <= 2 * P) {
+        ops.push_back("s" + std::to_string(ops.size()));
+        must(bl.add_op(ops.back(), OpKind::Expand, at, d));
+      }
+      at = next;
+    }
+  // The blob above the tip.
+  for (int64_t c = 0; c < W; ++c)
+    for (int64_t a = 0; a < W; ++a) {
+      const Vec2 cell{at.x + a, at.y + 1 + c};
+      must(bl.add_node(cell));
+      if (a > 0) must(bl.add_edge(Vec2{cell.x - 1, cell.y}, cell));
+      if (c > 0 || a == 0) must(bl.add_edge(Vec2{cell.x, cell.y - 1}, cell));
+    }
+  // The floor and the band: row y holds x = p y + G .. p y + G + p, its
+  // left end joined to the row below (which reaches p cells further left).
+  for (int64_t x = 0; x <= G + P; ++x) {
+    must(bl.add_node(Vec2{x, -1}));
+    if (x > 0) must(bl.add_edge(Vec2{x - 1, -1}, Vec2{x, -1}));
+  }
+  must(bl.add_edge(Vec2{0, 0}, Vec2{0, -1}));
+  for (int64_t y = 0; y <= top; ++y) {
+    const int64_t x0 = P * y + G;
+    for (int64_t x = x0; x <= x0 + P; ++x) {
+      must(bl.add_node(Vec2{x, y}));
+      if (x > x0) must(bl.add_edge(Vec2{x - 1, y}, Vec2{x, y}));
+    }
+    must(bl.add_edge(Vec2{x0, y - 1}, Vec2{x0, y}));
+  }
+  must(bl.add_coupling("Q", ops));
+  Instance inst;
+  if (auto e = bl.finish(inst)) throw std::logic_error("band_sweep_instance: " + e->message);
+  return inst;
+}
+
+Instance band_sweep_of_size(int64_t n, uint32_t p) {
+  const int64_t per = 5 * static_cast<int64_t>(std::max<uint32_t>(p, 1)) + 5;
+  return band_sweep_instance(static_cast<uint32_t>(std::clamp<int64_t>(n / per, 2, int64_t{1} << 30)), p);
+}
+
+Instance arc_sweep_instance(uint32_t J, uint32_t g) {
+  if (J == 0 || g == 0) throw std::invalid_argument("arc_sweep_instance: needs J >= 1 and g >= 1");
+  InstanceBuilder bl;
+  std::vector<std::string> ops;
+  std::vector<Vec2> arc{{0, 0}};
+  must(bl.add_node(arc.back()));
+  uint64_t edge = 0;
+  const auto step = [&](Dir d) {
+    const Vec2 from = arc.back(), to = from + unit(d);
+    must(bl.add_node(to));
+    must(bl.add_edge(from, to));
+    if (edge++ % 2 == 0) {
+      ops.push_back("s" + std::to_string(ops.size()));
+      must(bl.add_op(ops.back(), OpKind::Expand, from, d));
+    }
+    arc.push_back(to);
+  };
+  for (int64_t j = 0; j < J; ++j) {
+    for (int64_t a = 0; a < J - j; ++a) step(Dir::PosX);
+    for (int64_t b = 0; b <= j; ++b) step(Dir::PosY);
+  }
+  // The band: a static path left from the anchor to (-g, 0), up to
+  // (-g, g - 1), then the staircase moved by (-g, g).
+  const int64_t G = g;
+  Vec2 prev{0, 0};
+  const auto static_cell = [&](Vec2 c) {
+    if (bl.add_node(c)) throw std::logic_error("arc_sweep_instance: the band meets the staircase");
+    must(bl.add_edge(prev, c));
+    prev = c;
+  };
+  for (int64_t x = -1; x >= -G; --x) static_cell(Vec2{x, 0});
+  for (int64_t y = 1; y < G; ++y) static_cell(Vec2{-G, y});
+  for (const Vec2& c : arc) static_cell(Vec2{c.x - G, c.y + G});
+  must(bl.add_coupling("Q", ops));
+  Instance inst;
+  if (auto e = bl.finish(inst)) throw std::logic_error("arc_sweep_instance: " + e->message);
+  return inst;
+}
+
+Instance arc_sweep_of_size(int64_t n) {
+  const auto J = static_cast<uint32_t>(
+      std::max<int64_t>(4, std::llround(std::sqrt(static_cast<double>(std::max<int64_t>(n, 1)) / 2))));
+  return arc_sweep_instance(J, std::max<uint32_t>(3, J / 3));
+}
+
 }  // namespace gridlock

@@ -108,4 +108,59 @@ Instance diagonal_sweep_instance(uint32_t K, uint32_t b, bool hits = false);
 // The diagonal sweep of about n nodes: K = max(6, round(sqrt(n / 4.75))), b = K / 2. O(n).
 Instance diagonal_sweep_of_size(int64_t n, bool hits = false);
 
+// The band sweep: the diagonal sweep's staircase carried along (p, 1)
+// past a thin static band beside its path (no triangle), so that the
+// total motion is quadratic: Theta(K^2) over about (5 p + 5) K nodes.
+// For K >= 1, p in {1, 2, 3} and w >= 1:
+//   - a staircase from the anchor (0,0): K periods of 2p rights and 2 ups,
+//     an expansion on every odd right (p of them) and on the first up, so
+//     the tip (2pK, 2K) moves (pK, K), and every cell moves at most p
+//     units further along x - p y than p times its y motion;
+//   - a w x w blob above the tip moving with it;
+//   - a static floor row y = -1 from x = 0 to G + p, joined to the anchor,
+//     carrying the band {G <= x - p y <= G + p, 0 <= y <= 3K + w + 1},
+//     G = max(4p + 1, w) + 1, each row joined to the one below at its
+//     left end.
+// Every moving cell keeps x - p y below G - p over its area (the
+// staircase's up to 3p + 1, the blob's up to w - p), and the band lies at
+// or above it: NO. No two faces of an axis keep their order and no cut
+// along x or y separates anything, but with p = 1 a cut along x - y
+// separates the band from all that moves; with p >= 2 no cut along x, y,
+// x + y or x - y does (the one along x - p y would), so Auto sweeps cells.
+// With `hits`, the band starts at G = 4p instead, one unit closer: the
+// staircase's cells then reach into it (YES, named as the simulator does).
+// Deterministic, O(n). Throws std::invalid_argument for K == 0, w == 0 or
+// p outside 1..3.
+Instance band_sweep_instance(uint32_t K, uint32_t p, uint32_t w = 3, bool hits = false);
+
+// The band sweep of about n nodes for slope p: K = max(2, n / (5 p + 5)). O(n).
+Instance band_sweep_of_size(int64_t n, uint32_t p);
+
+// The arc sweep: a convex staircase that grows away from its anchor,
+// beside a static copy of itself. For J >= 1 and g >= 1:
+//   - the staircase from the anchor (0,0): J runs, run j of J - j rights
+//     then j + 1 ups (so it turns from along x to along y, bulging toward
+//     the lower right), with an expansion on every other edge (the first
+//     included), all in one coupling: each cell moves by about half its
+//     position, away from the anchor, in its own direction;
+//   - the band: a static path from the anchor left to (-g, 0) and up to
+//     (-g, g - 1), then the staircase moved by (-g, g), each cell joined
+//     to the one before.
+// About 2 J^2 nodes, total motion Theta(J^4) = Theta(n^2), and the cells
+// move in Theta(J) directions. With g = max(3, J / 3) (arc_sweep_of_size)
+// nothing collides (checked by Auto for every J <= 90 and J = 91, 94, ..
+// 109, by the simulator in the tests); with g = 3 and
+// J >= 18 the staircase meets the band (YES). No cut along x, y, a
+// diagonal or across the commonest motion separates the staircase from
+// the band, time slabs exceed their budget, and the motion classes are
+// as many as the cells: from J = 38 (about 2 900 nodes) Auto sweeps
+// cells, Theta(n^2 log n) (the single coupling's worst case today:
+// docs/collide.md, "Honest deviations").
+// Deterministic, O(n). Throws std::invalid_argument for J == 0 or g == 0,
+// std::logic_error if the band meets the staircase at t = 0.
+Instance arc_sweep_instance(uint32_t J, uint32_t g);
+
+// The arc sweep of about n nodes: J = max(4, round(sqrt(n / 2))), g = max(3, J / 3). O(n).
+Instance arc_sweep_of_size(int64_t n);
+
 }  // namespace gridlock

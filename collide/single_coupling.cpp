@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -511,51 +512,143 @@ std::optional<KeptGroup> kept_group(const std::vector<Faces>& faces, const std::
   return g;
 }
 
-// Cuts `members` along `axis` wherever every member before the cut lies
-// at or below every member after it at t = 0 and at t = 1 (in the order
-// of the low face at 0, then the high face at 0): the prefix maximum of
-// the high faces at most the suffix minimum of the low faces, at both
-// ends. For a before and b after a cut, hi_a(t) <= lo_b(t) then holds at
-// 0 and at 1, so, both linear, on all of [0, 1]: no pair across a cut
-// ever overlaps. Returns the pieces (one when there is no cut). O(k log k).
-std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& faces, std::vector<uint32_t> members,
-                                                    size_t axis) {
-  const size_t lo = 2 * axis, hi = 2 * axis + 1;
-  std::sort(members.begin(), members.end(), [&](uint32_t x, uint32_t y) {
-    const Faces &f = faces[x], &g = faces[y];
-    if (f[lo].a != g[lo].a) return f[lo].a < g[lo].a;
-    if (f[hi].a != g[hi].a) return f[hi].a < g[hi].a;
-    return x < y;
+// The directions a cut may run along: x, y, the two diagonals x + y and
+// x - y (a staircase carried along a diagonal past a static band beside
+// it, the band sweep of slope 1, has no cut along an axis but one along
+// x - y), and one taken from the piece's motion: perpendicular to the
+// commonest direction of motion relative to the commonest velocity (the
+// band sweep of slope p is cut along x - p y). A region's extent along
+// d = (dx, dy) is the interval of dx x + dy y over its rectangle, each
+// end a sum of faces times integers, so linear in t.
+struct CutDirection {
+  int64_t dx = 1, dy = 0;
+};
+constexpr std::array<CutDirection, 4> kFixedCutDirections = {{{1, 0}, {0, 1}, {1, 1}, {1, -1}}};
+// A direction from the motion is used only with |dx|, |dy| <= this (so
+// extents stay below 2^48 with faces below 2^41).
+constexpr int64_t kMaxCutSlope = 64;
+
+std::array<Lin, 2> extent(const Faces& f, CutDirection d) {
+  const auto times = [](int64_t c, const Lin& u) { return Lin{c * u.a, c * u.b}; };
+  const auto add = [](const Lin& u, const Lin& v) { return Lin{u.a + v.a, u.b + v.b}; };
+  const Lin x_lo = times(d.dx, f[d.dx >= 0 ? 0 : 1]), x_hi = times(d.dx, f[d.dx >= 0 ? 1 : 0]);
+  const Lin y_lo = times(d.dy, f[d.dy >= 0 ? 2 : 3]), y_hi = times(d.dy, f[d.dy >= 0 ? 3 : 2]);
+  return {add(x_lo, y_lo), add(x_hi, y_hi)};
+}
+
+// (x, y) / gcd, with the first non-zero coordinate positive.
+CutDirection primitive(int64_t x, int64_t y) {
+  const int64_t g = std::gcd(x, y);
+  x /= g, y /= g;
+  if (x < 0 || (x == 0 && y < 0)) x = -x, y = -y;
+  return {x, y};
+}
+
+// The most frequent value of a sorted list (the least on ties).
+std::pair<int64_t, int64_t> commonest(const std::vector<std::pair<int64_t, int64_t>>& sorted) {
+  std::pair<int64_t, int64_t> best = sorted.front();
+  size_t best_run = 0;
+  for (size_t i = 0, j = 0; i < sorted.size(); i = j) {
+    while (j < sorted.size() && sorted[j] == sorted[i]) ++j;
+    if (j - i > best_run) best = sorted[i], best_run = j - i;
+  }
+  return best;
+}
+
+// The direction from the motion of `members`: velocities (the speeds of
+// the low x and low y faces), m the commonest; u the commonest primitive
+// direction of v - m over the members moving otherwise; the cut runs
+// perpendicular to u. None when all move alike, when it is one of the
+// fixed directions, or when it is steeper than kMaxCutSlope.
+// Frame-free: a common motion added to every face changes no v - m.
+// O(k log k).
+std::optional<CutDirection> motion_direction(const std::vector<Faces>& faces, const std::vector<uint32_t>& members) {
+  if (members.empty()) return std::nullopt;
+  std::vector<std::pair<int64_t, int64_t>> v;
+  v.reserve(members.size());
+  for (uint32_t r : members) v.emplace_back(faces[r][0].b, faces[r][2].b);
+  std::sort(v.begin(), v.end());
+  const std::pair<int64_t, int64_t> m = commonest(v);
+  std::vector<std::pair<int64_t, int64_t>> u;
+  for (const auto& [x, y] : v)
+    if (std::pair(x, y) != m) {
+      const CutDirection p = primitive(x - m.first, y - m.second);
+      u.emplace_back(p.dx, p.dy);
+    }
+  if (u.empty()) return std::nullopt;
+  std::sort(u.begin(), u.end());
+  const std::pair<int64_t, int64_t> w = commonest(u);
+  const CutDirection d = primitive(w.second, -w.first);
+  if (std::abs(d.dx) > kMaxCutSlope || std::abs(d.dy) > kMaxCutSlope) return std::nullopt;
+  for (const CutDirection& f : kFixedCutDirections)
+    if (f.dx == d.dx && f.dy == d.dy) return std::nullopt;
+  return d;
+}
+
+// Cuts `members` along direction `dir` (extent) wherever every member
+// before the cut lies at or below every member after it at t = 0 and at
+// t = 1 (in the order of the low end at 0, then the high end at 0): the
+// prefix maximum of the high ends at most the suffix minimum of the low
+// ends, at both ends of time. For a before and b after a cut,
+// hi_a(t) <= lo_b(t) then holds at 0 and at 1, so, both linear, on all of
+// [0, 1]: their projections share no interior point, so neither do the
+// rectangles, and no pair across a cut ever overlaps. Returns the pieces
+// (one when there is no cut). O(k log k).
+std::vector<std::vector<uint32_t>> separated_pieces(const std::vector<Faces>& faces,
+                                                    const std::vector<uint32_t>& members, CutDirection dir) {
+  struct Extent {
+    Lin lo, hi;
+    uint32_t r;
+  };
+  std::vector<Extent> ext;
+  ext.reserve(members.size());
+  for (uint32_t r : members) {
+    const std::array<Lin, 2> e = extent(faces[r], dir);
+    ext.push_back({e[0], e[1], r});
+  }
+  std::sort(ext.begin(), ext.end(), [](const Extent& f, const Extent& g) {
+    if (f.lo.a != g.lo.a) return f.lo.a < g.lo.a;
+    if (f.hi.a != g.hi.a) return f.hi.a < g.hi.a;
+    return f.r < g.r;
   });
-  const size_t k = members.size();
-  // Suffix minima of the low face at 0 and at 1.
+  const size_t k = ext.size();
+  // Suffix minima of the low end at 0 and at 1.
   std::vector<std::array<int64_t, 2>> low(k + 1, {INT64_MAX, INT64_MAX});
   for (size_t i = k; i-- > 0;) {
-    const Lin& f = faces[members[i]][lo];
+    const Lin& f = ext[i].lo;
     low[i] = {std::min(low[i + 1][0], f.a), std::min(low[i + 1][1], f.a + f.b)};
   }
   std::vector<std::vector<uint32_t>> pieces(1);
-  int64_t high0 = INT64_MIN, high1 = INT64_MIN;  // prefix maxima of the high face at 0 and at 1
+  int64_t high0 = INT64_MIN, high1 = INT64_MIN;  // prefix maxima of the high end at 0 and at 1
   for (size_t i = 0; i < k; ++i) {
-    const Lin& f = faces[members[i]][hi];
+    const Lin& f = ext[i].hi;
     high0 = std::max(high0, f.a), high1 = std::max(high1, f.a + f.b);
-    pieces.back().push_back(members[i]);
+    pieces.back().push_back(ext[i].r);
     if (i + 1 < k && high0 <= low[i + 1][0] && high1 <= low[i + 1][1]) pieces.emplace_back();
   }
   return pieces;
 }
 
-// The pieces of the first axis (x, then y) along which `members` has a
-// cut (separated_pieces), or none when neither has. Checks deadline (if
-// given) before each axis.
+// The pieces of the direction (x, y, x + y, x - y, then the one from the
+// motion) whose cut leaves the smallest largest piece (the first such on
+// ties: a cut that peels a few regions off a staircase would cost a level
+// per few regions), or none when no direction has a cut. Checks deadline
+// (if given) before each direction. O(k log k).
 std::vector<std::vector<uint32_t>> first_cut(const std::vector<Faces>& faces, const std::vector<uint32_t>& members,
                                              const Deadline* deadline) {
-  for (size_t axis : {size_t{0}, size_t{1}}) {
+  std::vector<CutDirection> dirs(kFixedCutDirections.begin(), kFixedCutDirections.end());
+  if (const std::optional<CutDirection> d = motion_direction(faces, members)) dirs.push_back(*d);
+  std::vector<std::vector<uint32_t>> best;
+  size_t best_largest = members.size();
+  for (const CutDirection& dir : dirs) {
     if (deadline) deadline->check();
-    std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, axis);
-    if (pieces.size() > 1) return pieces;
+    std::vector<std::vector<uint32_t>> pieces = separated_pieces(faces, members, dir);
+    if (pieces.size() < 2) continue;
+    size_t largest = 0;
+    for (const auto& piece : pieces) largest = std::max(largest, piece.size());
+    if (largest < best_largest) best = std::move(pieces), best_largest = largest;
   }
-  return {};
+  return best;
 }
 
 // Cuts past this depth are not followed (the cell sweep decides): the

@@ -162,13 +162,14 @@ TEST(CollideCommand, FixedAxisYesNamesTheFirstCollision) {
 }
 
 // One coupling whose faces change order on both axes: the space-time cell
-// sweep names the first collision (the diagonal sweep with its post,
-// K = 16, b = 3: collide/adversarial.hpp; first at t = 1 - 1/K; time
-// slabs decline it).
+// sweep names the first collision (the band sweep of slope 2 with its band
+// one unit too close, K = 16: collide/adversarial.hpp; no cut along x, y or
+// a diagonal, and the time slabs decline it). `check` confirms the named
+// collision by simulating the printed schedule.
 TEST(CollideCommand, SweepYesNamesTheFirstCollision) {
   std::ostringstream grid;
-  write_instance(grid, diagonal_sweep_instance(16, 3, true));
-  expect_named_first_collision(grid.str(), "single-coupling", "15/16", "node (34,35) and node (50,51)", "31/32");
+  write_instance(grid, band_sweep_instance(16, 2, 3, true));
+  expect_named_first_collision(grid.str(), "single-coupling", "17/32", "node (64,30) and node (82,37)", "511/960");
 }
 
 // Time slabs name it too: the stalactite comb of 3 with its middle

@@ -9,6 +9,7 @@
 
 #include <numeric>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -19,6 +20,7 @@
 #include "collide/collide.hpp"
 #include "collide/single_coupling.hpp"
 #include "common/random.hpp"
+#include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
@@ -542,9 +544,7 @@ TEST(SingleCouplingSweep, DiagonalSweepIsNoForEveryMethod) {
 // and the mixed comb keeps the order of its x faces (the spine pushes the
 // teeth apart; the teeth's y faces pass each other): Auto answers their
 // NO by one sweep along the kept axis; the cell sweep and the simulator
-// agree. The diagonal sweep's orders change on both axes: no cut over
-// (0, 1), so the fixed-axis sweep gives up; time slabs would place more
-// regions than its motion (the cell sweep's cost), so Auto sweeps cells.
+// agree. The diagonal and band sweeps' orders change on both axes.
 TEST(SingleCouplingSweep, KeptOrderIsDecidedByOneSweep) {
   std::vector<std::pair<std::string, Instance>> cases;
   for (int64_t n : {64, 256, 1024})
@@ -567,10 +567,30 @@ TEST(SingleCouplingSweep, KeptOrderIsDecidedByOneSweep) {
     EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
     EXPECT_FALSE(sim.run_order({0}).collision) << where;
   }
-  const Instance diagonal = diagonal_sweep_instance(5, 4);
-  Simulator sim(diagonal);
-  EXPECT_FALSE(single_coupling_fixed_axis(diagonal, sim.tree(), sim.regions()));
-  EXPECT_EQ(find_collision(diagonal, TimeModel::Continuous).algorithm, "single-coupling");
+  // The diagonal sweep and the band sweeps: a cut along x - y (slope 1)
+  // or x - 2 y (slope 2, the direction across the commonest motion),
+  // after one along y for the floor, separates what moves from the static
+  // triangle or band; each side keeps an order.
+  for (const auto& [where, inst] : {std::pair{std::string("diagonal sweep"), diagonal_sweep_instance(5, 4)},
+                                    std::pair{std::string("band sweep of slope 1"), band_sweep_instance(40, 1)},
+                                    std::pair{std::string("band sweep of slope 2"), band_sweep_instance(40, 2)}}) {
+    const CollideResult r = find_collision(inst, TimeModel::Continuous);
+    EXPECT_FALSE(r.collides) << where;
+    EXPECT_EQ(r.algorithm, "single-coupling-separated") << where;
+    Simulator sim(inst);
+    EXPECT_FALSE(single_coupling_sweep(inst, sim.tree(), sim.regions()).collides) << where;
+    EXPECT_FALSE(sim.run_order({0}).collision) << where;
+  }
+  // The arc sweep: cells move away from the anchor in many directions; no
+  // cut over (0, 1), and too many members placed for the time slabs: the
+  // cell sweep decides.
+  const Instance arc = arc_sweep_instance(40, 13);
+  Simulator sim(arc);
+  EXPECT_FALSE(single_coupling_fixed_axis(arc, sim.tree(), sim.regions()));
+  const CollideResult r = find_collision(arc, TimeModel::Continuous);
+  EXPECT_FALSE(r.collides);
+  EXPECT_EQ(r.algorithm, "single-coupling");
+  EXPECT_FALSE(sim.run_order({0}).collision);
 }
 
 // The lidded comb (bench/bench_families.hpp): both axes change order (the
@@ -612,8 +632,9 @@ TEST(SingleCouplingSweep, LiddedCombIsCutIntoSeparatedGroups) {
 // classes (the stalactites, teeth rising by 0, 1 and 2, the two inserted
 // regions' kinds), which decide the same NO. The cell sweep, all pairs
 // and the simulator agree.
+// (The comb of 1 tooth is cut across its motion over (0, 1).)
 TEST(SingleCouplingSweep, StalactiteCombIsDecidedByTimeSlabsAndMotionClasses) {
-  for (int64_t L : {1, 2, 5, 16, 40}) {
+  for (int64_t L : {2, 5, 16, 40}) {
     const Instance inst = bench::stalactite_comb(L);
     const std::string where = "stalactite comb of " + std::to_string(L);
     ASSERT_EQ(inst.couplings().size(), 1u) << where;
@@ -680,7 +701,7 @@ TEST(SingleCouplingSweep, StalactiteCombIsDecidedByTimeSlabsAndMotionClasses) {
   }
   // Each pair of teeth at its own speed: many classes, the same NO, and
   // the same two time slabs (Auto).
-  for (int64_t L : {1, 2, 5, 16, 40}) {
+  for (int64_t L : {2, 5, 16, 40}) {
     const Instance inst = bench::stalactite_comb(L, true);
     const std::string where = "own-speed stalactite comb of " + std::to_string(L);
     ASSERT_EQ(inst.couplings().size(), 1u) << where;
@@ -804,10 +825,82 @@ TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
   EXPECT_GE(slabbed, 6);
 }
 
+// The instance mirrored in y (y -> -y, +y <-> -y): the same answer, and
+// a cut along x - y becomes one along x + y.
+Instance mirrored_in_y(const Instance& inst) {
+  std::ostringstream out;
+  write_instance(out, inst);
+  std::istringstream in(out.str());
+  std::string text, line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string x; words >> x;) w.push_back(x);
+    const auto flip = [&](size_t i) { w[i] = std::to_string(-std::stoll(w[i])); };
+    if (!w.empty() && w[0] == "n") flip(2);
+    if (!w.empty() && w[0] == "e") flip(2), flip(4);
+    if (!w.empty() && w[0] == "o") {
+      flip(4);
+      if (w[5] == "+y") {
+        w[5] = "-y";
+      } else if (w[5] == "-y") {
+        w[5] = "+y";
+      }
+    }
+    if (w.empty() || w[0] == "c") {
+      text += line + "\n";
+      continue;
+    }
+    for (size_t i = 0; i < w.size(); ++i) text += (i ? " " : "") + w[i];
+    text += "\n";
+  }
+  return test::parse_instance(text);
+}
+
+// The band sweeps (collide/adversarial.hpp) of slopes 1 to 3, with and
+// without the hit, as built and mirrored in y: Auto, the cell sweep and
+// the simulator agree; every YES names the simulator's first collision.
+// From 12 periods on, each NO is cut across the motion (slope 1: along
+// x - y, mirrored x + y; slope p: x - p y, mirrored x + p y) and decided
+// without the cell sweep.
+TEST(SingleCouplingSweep, BandSweepsAgreeWithTheSimulator) {
+  int cut = 0;
+  for (uint32_t p : {1u, 2u, 3u})
+    for (uint32_t K : {1u, 2u, 5u, 12u, 30u})
+      for (bool hits : {false, true})
+        for (bool mirror : {false, true}) {
+          const Instance built = band_sweep_instance(K, p, 3, hits);
+          const Instance inst = mirror ? mirrored_in_y(built) : built;
+          const std::string where = "p " + std::to_string(p) + ", K " + std::to_string(K) + (hits ? ", hit" : "") +
+                                    (mirror ? ", mirrored" : "");
+          Simulator sim(inst);
+          const SimResult run = sim.run_order({0});
+          const SingleCouplingAnswer ans = single_coupling_sweep(inst, sim.tree(), sim.regions());
+          ASSERT_EQ(ans.collides, run.collision.has_value()) << where;
+          if (!hits) {
+            EXPECT_FALSE(ans.collides) << where;
+          }
+          const CollideResult r = find_collision(inst, TimeModel::Continuous);
+          ASSERT_EQ(r.collides, ans.collides) << where << ": " << r.algorithm;
+          if (run.collision) {
+            expect_names_first(inst, ans, *run.collision, where);
+            ASSERT_TRUE(r.simulated) << where;
+            EXPECT_EQ(r.simulated->time, run.collision->time) << where << ": " << r.algorithm;
+            EXPECT_EQ(r.simulated->a, run.collision->a) << where;
+            EXPECT_EQ(r.simulated->b, run.collision->b) << where;
+          }
+          if (!hits && K >= 12) {
+            EXPECT_EQ(r.algorithm, "single-coupling-separated") << where;
+            ++cut;
+          }
+        }
+  EXPECT_EQ(cut, 12);
+}
+
 // Progress: the one-coupling step reports its column bands through
 // find_collision's callback; the sweep reports each band before it runs.
 TEST(SingleCouplingSweep, ReportsBandsAsProgress) {
-  const Instance inst = diagonal_sweep_of_size(4000);
+  const Instance inst = arc_sweep_of_size(3200);  // J = 40
   std::vector<CollideProgress> seen;
   const CollideResult r = find_collision(inst, TimeModel::Continuous, CollideMethod::Auto, nullptr,
                                          [&](const CollideProgress& p) { seen.push_back(p); });
