@@ -17,7 +17,7 @@ namespace gridlock {
 namespace {
 
 void must(const std::optional<std::string>& e) {
-  if (e) throw std::logic_error("serpentine_instance: " + *e);
+  if (e) throw std::logic_error("adversarial family: " + *e);
 }
 
 // The cell of the k-th node (in walking order) of column i.
@@ -199,6 +199,7 @@ Instance diagonal_sweep_of_size(int64_t n, bool hits) {
 Instance band_sweep_instance(uint32_t K, uint32_t p, uint32_t w, bool hits) {
   if (K == 0 || w == 0 || p == 0 || p > 3)
     throw std::invalid_argument("band_sweep_instance: needs K >= 1, w >= 1 and p in 1..3");
+  if (hits && w > 4 * p) throw std::invalid_argument("band_sweep_instance: a hit needs w <= 4p");
   InstanceBuilder bl;
   std::vector<std::string> ops;
   const int64_t P = p, W = w, k = K, G = hits ? 4 * P : std::max<int64_t>(4 * P + 1, W) + 1, top = 3 * k + W + 1;

@@ -124,13 +124,15 @@ Instance diagonal_sweep_of_size(int64_t n, bool hits = false);
 // Every moving cell keeps x - p y below G - p over its area (the
 // staircase's up to 3p + 1, the blob's up to w - p), and the band lies at
 // or above it: NO. No two faces of an axis keep their order and no cut
-// along x or y separates anything, but with p = 1 a cut along x - y
-// separates the band from all that moves; with p >= 2 no cut along x, y,
-// x + y or x - y does (the one along x - p y would), so Auto sweeps cells.
-// With `hits`, the band starts at G = 4p instead, one unit closer: the
-// staircase's cells then reach into it (YES, named as the simulator does).
-// Deterministic, O(n). Throws std::invalid_argument for K == 0, w == 0 or
-// p outside 1..3.
+// along x or y separates anything, but a cut along x - p y does: for
+// p = 1 the diagonal x - y, for p >= 2 the direction across the
+// commonest motion (docs/collide.md, "Separated groups"); before those
+// cuts Auto swept cells here, quadratic.
+// With `hits` (needs w <= 4p), the band starts at G = 4p instead, one
+// unit closer: from K = 2 on the staircase's cells reach into it (YES,
+// named as the simulator does); with K = 1 nothing moves far enough (NO).
+// Deterministic, O(n). Throws std::invalid_argument for K == 0, w == 0,
+// p outside 1..3, or hits with w > 4p.
 Instance band_sweep_instance(uint32_t K, uint32_t p, uint32_t w = 3, bool hits = false);
 
 // The band sweep of about n nodes for slope p: K = max(2, n / (5 p + 5)). O(n).
@@ -149,13 +151,14 @@ Instance band_sweep_of_size(int64_t n, uint32_t p);
 // About 2 J^2 nodes, total motion Theta(J^4) = Theta(n^2), and the cells
 // move in Theta(J) directions. With g = max(3, J / 3) (arc_sweep_of_size)
 // nothing collides (checked by Auto for every J <= 90 and J = 91, 94, ..
-// 109, by the simulator in the tests); with g = 3 and
-// J >= 18 the staircase meets the band (YES). No cut along x, y, a
-// diagonal or across the commonest motion separates the staircase from
-// the band, time slabs exceed their budget, and the motion classes are
-// as many as the cells: from J = 38 (about 2 900 nodes) Auto sweeps
-// cells, Theta(n^2 log n) (the single coupling's worst case today:
-// docs/collide.md, "Honest deviations").
+// 109, by the simulator in the tests); with g = 3 the staircase meets
+// the band (YES) for J = 14, 16 and every J >= 18. From J = 38 (about
+// 2 900 nodes) no cut along x, y, a diagonal or across the commonest
+// motion separates the staircase from the band, the time slabs exceed
+// their budget and the motion classes are as many as the cells: Auto
+// sweeps cells, Theta(n^2 log n) (the single coupling's worst case
+// today: docs/collide.md, "Honest deviations"). Smaller ones may be cut
+// (J = 4 .. 7) or cut over time slabs (J = 8, 24, 25, ...).
 // Deterministic, O(n). Throws std::invalid_argument for J == 0 or g == 0,
 // std::logic_error if the band meets the staircase at t = 0.
 Instance arc_sweep_instance(uint32_t J, uint32_t g);

@@ -525,7 +525,8 @@ struct CutDirection {
 };
 constexpr std::array<CutDirection, 4> kFixedCutDirections = {{{1, 0}, {0, 1}, {1, 1}, {1, -1}}};
 // A direction from the motion is used only with |dx|, |dy| <= this (so
-// extents stay below 2^48 with faces below 2^41).
+// extents stay below 2^60 with the time slabs' faces below 2^53: the
+// positions 2^e a + m b with a, b <= 2^40, e <= 12).
 constexpr int64_t kMaxCutSlope = 64;
 
 std::array<Lin, 2> extent(const Faces& f, CutDirection d) {
