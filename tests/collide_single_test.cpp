@@ -9,7 +9,6 @@
 
 #include <numeric>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -20,7 +19,6 @@
 #include "collide/collide.hpp"
 #include "collide/single_coupling.hpp"
 #include "common/random.hpp"
-#include "lattice/grid_format.hpp"
 #include "lattice/random_instance.hpp"
 #include "lattice/rational.hpp"
 #include "lattice/schedule.hpp"
@@ -825,40 +823,8 @@ TEST(SingleCouplingSweep, DiagonalSweepWithThePostNamesItsFirstCollision) {
   EXPECT_GE(slabbed, 6);
 }
 
-// The instance mirrored in y (y -> -y, +y <-> -y): the same answer, and
-// a cut along x - y becomes one along x + y.
-Instance mirrored_in_y(const Instance& inst) {
-  std::ostringstream out;
-  write_instance(out, inst);
-  std::istringstream in(out.str());
-  std::string text, line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::vector<std::string> w;
-    for (std::string x; words >> x;) w.push_back(x);
-    const auto flip = [&](size_t i) { w[i] = std::to_string(-std::stoll(w[i])); };
-    if (!w.empty() && w[0] == "n") flip(2);
-    if (!w.empty() && w[0] == "e") flip(2), flip(4);
-    if (!w.empty() && w[0] == "o") {
-      flip(4);
-      if (w[5] == "+y") {
-        w[5] = "-y";
-      } else if (w[5] == "-y") {
-        w[5] = "+y";
-      }
-    }
-    if (w.empty() || w[0] == "c") {
-      text += line + "\n";
-      continue;
-    }
-    for (size_t i = 0; i < w.size(); ++i) text += (i ? " " : "") + w[i];
-    text += "\n";
-  }
-  return test::parse_instance(text);
-}
-
 // The band sweeps (collide/adversarial.hpp) of slopes 1 to 3, with and
-// without the hit, as built and mirrored in y: Auto, the cell sweep and
+// without the hit, as built and mirrored in y (test::rebuilt): Auto, the cell sweep and
 // the simulator agree; every YES names the simulator's first collision.
 // From 12 periods on, each NO is cut across the motion (slope 1: along
 // x - y, mirrored x + y; slope p: x - p y, mirrored x + p y) and decided
@@ -870,7 +836,7 @@ TEST(SingleCouplingSweep, BandSweepsAgreeWithTheSimulator) {
       for (bool hits : {false, true})
         for (bool mirror : {false, true}) {
           const Instance built = band_sweep_instance(K, p, 3, hits);
-          const Instance inst = mirror ? mirrored_in_y(built) : built;
+          const Instance inst = mirror ? test::rebuilt(built, false, false, true) : built;
           const std::string where = "p " + std::to_string(p) + ", K " + std::to_string(K) + (hits ? ", hit" : "") +
                                     (mirror ? ", mirrored" : "");
           Simulator sim(inst);

@@ -52,16 +52,20 @@ inline std::string expansion_row_grid(int n, int group) {
 
 // The same shape and operations; with `transpose`, x and y swapped (cells
 // and directions: a horizontal-only instance becomes a vertical-only one);
-// with `one_coupling`, every operation in one coupling "Q", else the
-// instance's couplings.
-inline Instance rebuilt(const Instance& inst, bool transpose, bool one_coupling) {
+// with `mirror_y`, then y negated (+y and -y swapped: a cut along x - y
+// becomes one along x + y); with `one_coupling`, every operation in one
+// coupling "Q", else the instance's couplings.
+inline Instance rebuilt(const Instance& inst, bool transpose, bool one_coupling, bool mirror_y = false) {
   auto cell = [&](NodeId w) {
-    const Vec2 c = inst.cells()[w];
-    return transpose ? Vec2{c.y, c.x} : c;
+    Vec2 c = inst.cells()[w];
+    if (transpose) c = Vec2{c.y, c.x};
+    if (mirror_y) c.y = -c.y;
+    return c;
   };
   auto dir = [&](Dir d) {
-    if (!transpose) return d;
-    return d == Dir::PosX ? Dir::PosY : d == Dir::PosY ? Dir::PosX : d == Dir::NegX ? Dir::NegY : Dir::NegX;
+    if (transpose) d = d == Dir::PosX ? Dir::PosY : d == Dir::PosY ? Dir::PosX : d == Dir::NegX ? Dir::NegY : Dir::NegX;
+    if (mirror_y && (d == Dir::PosY || d == Dir::NegY)) d = d == Dir::PosY ? Dir::NegY : Dir::PosY;
+    return d;
   };
   InstanceBuilder b;
   for (NodeId w = 0; w < inst.num_nodes(); ++w) EXPECT_FALSE(b.add_node(cell(w)));
