@@ -20,6 +20,19 @@ void must(const std::optional<std::string>& e) {
   if (e) throw std::logic_error("adversarial family: " + *e);
 }
 
+// The w x w blob above `tip` (cells tip + (a, 1 + c)), the diagonal and
+// band sweeps' load: rows joined along x, each cell to the one below it,
+// the first row's left cell to the tip.
+void add_blob(InstanceBuilder& bl, Vec2 tip, int64_t w) {
+  for (int64_t c = 0; c < w; ++c)
+    for (int64_t a = 0; a < w; ++a) {
+      const Vec2 cell{tip.x + a, tip.y + 1 + c};
+      must(bl.add_node(cell));
+      if (a > 0) must(bl.add_edge(Vec2{cell.x - 1, cell.y}, cell));
+      if (c > 0 || a == 0) must(bl.add_edge(Vec2{cell.x, cell.y - 1}, cell));
+    }
+}
+
 // The cell of the k-th node (in walking order) of column i.
 Vec2 serpentine_cell(int64_t i, int64_t k, int64_t H) { return {i, i % 2 == 0 ? k : H - 1 - k}; }
 
@@ -153,14 +166,7 @@ Instance diagonal_sweep_instance(uint32_t K, uint32_t b, bool hits) {
       at = next;
     }
   const int64_t k = K, w = b, X = 3 * k + w + 1;
-  // The blob above the tip: rows joined along x, columns joined to the row below.
-  for (int64_t c = 0; c < w; ++c)
-    for (int64_t a = 0; a < w; ++a) {
-      const Vec2 cell{2 * k + a, 2 * k + 1 + c};
-      must(bl.add_node(cell));
-      if (a > 0) must(bl.add_edge(Vec2{cell.x - 1, cell.y}, cell));
-      if (c > 0 || a == 0) must(bl.add_edge(Vec2{cell.x, cell.y - 1}, cell));
-    }
+  add_blob(bl, Vec2{2 * k, 2 * k}, w);
   // The floor and the static triangle, each row joined along x and to the row below.
   for (int64_t y = -1; y + w + 2 <= X; ++y) {
     const int64_t x0 = y < 0 ? 0 : y + w + 2;
@@ -218,14 +224,7 @@ Instance band_sweep_instance(uint32_t K, uint32_t p, uint32_t w, bool hits) {
       }
       at = next;
     }
-  // The blob above the tip.
-  for (int64_t c = 0; c < W; ++c)
-    for (int64_t a = 0; a < W; ++a) {
-      const Vec2 cell{at.x + a, at.y + 1 + c};
-      must(bl.add_node(cell));
-      if (a > 0) must(bl.add_edge(Vec2{cell.x - 1, cell.y}, cell));
-      if (c > 0 || a == 0) must(bl.add_edge(Vec2{cell.x, cell.y - 1}, cell));
-    }
+  add_blob(bl, at, W);
   // The floor and the band: row y holds x = p y + G .. p y + G + p, its
   // left end joined to the row below (which reaches p cells further left).
   for (int64_t x = 0; x <= G + P; ++x) {
