@@ -441,6 +441,11 @@ std::vector<std::vector<uint32_t>> cut_along(const std::vector<FaceLines>& face,
   return pieces;
 }
 
+// Why a piece is refused when first_cut finds nothing (cut_directions
+// names the directions).
+constexpr const char* kNoCut =
+    "keeps neither order and no cut along x, y, x + y, x - y or across its motion separates it";
+
 // The pieces of the direction (cut_directions, in order) whose cut
 // leaves the smallest largest piece, the first such on ties, or none when
 // no direction has a cut.
@@ -478,8 +483,7 @@ std::optional<std::string> separated_pairs(const Instance& inst, const Regions& 
     };
     if (depth >= 64) return group() + " is cut more than 64 levels deep";
     std::vector<std::vector<uint32_t>> pieces = first_cut(face, members);
-    if (pieces.empty())
-      return group() + " keeps neither order and no cut along x, y, x + y, x - y or across its motion separates it";
+    if (pieces.empty()) return group() + " " + kNoCut;
     for (auto& p : pieces) todo.emplace_back(std::move(p), depth + 1);
   }
   return std::nullopt;
@@ -550,8 +554,7 @@ std::optional<std::string> slab_pairs(const std::vector<FaceLines>& face, const 
     }
     if (p.e >= 12)
       return "a piece of " + std::to_string(members.size()) + " regions over the slab [" + std::to_string(p.m) +
-             "/4096, " + std::to_string(p.m + 1) +
-             "/4096] keeps neither order and no cut along x, y, x + y, x - y or across its motion separates it";
+             "/4096, " + std::to_string(p.m + 1) + "/4096] " + kNoCut;
     todo.push_back({members, 2 * p.m + 1, p.e + 1, p.depth});
     todo.push_back({std::move(members), 2 * p.m, p.e + 1, p.depth});
   }
