@@ -554,7 +554,6 @@ void register_large_discrete_answers() {
         ->Unit(benchmark::kMillisecond);
 }
 
-// One coupling on one axis: the spine comb's large sizes.
 // The band sweeps, cut across the motion, and the arc sweep, which no cut
 // separates (the cell sweep, quadratic).
 void register_large_cut_families() {
@@ -571,6 +570,7 @@ void register_large_cut_families() {
         ->Unit(benchmark::kMillisecond);
 }
 
+// One coupling on one axis: the spine comb's large sizes.
 void register_large_one_axis() {
   // One axis keeping its order: one sweep along it (the mixed comb's
   // 16 384 and 65 536 are with the large serpentines).
